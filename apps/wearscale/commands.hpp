@@ -1,0 +1,16 @@
+#pragma once
+// The subcommands of `wearscale`. Each adds itself to the parser and returns
+// the function that runs it (returning an exit status).
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace wearscale::app {
+
+using Command = std::function<int()>;
+
+Command add_run(CLI::App& app);
+Command add_backends(CLI::App& app);
+Command add_version(CLI::App& app);
+
+}  // namespace wearscale::app

@@ -1,0 +1,68 @@
+// wearscale: friction and adhesive wear across scales.
+//
+// Exit status: 0 success, 2 bad input (message names file, key, value and the
+// allowed range), 1 numerical failure (message names solver, step, quantity).
+#include <omp.h>
+
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <string>
+
+#include "commands.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/fft.hpp"
+#include "wearscale/core/log.hpp"
+
+int main(int argc, char** argv) {
+  using namespace wearscale;
+  CLI::App app{"wearscale: friction and adhesive wear across scales (MD → DEM/junctions → BEM pin-on-disc)",
+               "wearscale"};
+  app.require_subcommand(1);
+  app.failure_message(CLI::FailureMessage::help);
+  bool quiet = false, verbose = false;
+  int threads = 0;
+  app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr; no progress bar");
+  app.add_flag("-v,--verbose", verbose, "Debug messages on stderr");
+  app.add_option("-j,--threads", threads, "OpenMP and FFTW threads (default: all cores)")->check(CLI::Range(1, 1024));
+
+  std::map<CLI::App*, app::Command> commands;
+  auto add = [&](app::Command (*adder)(CLI::App&)) {
+    auto command = adder(app);
+    commands[app.get_subcommands({}).back()] = std::move(command);  // the subcommand just added
+  };
+  add(app::add_run);
+  add(app::add_backends);
+  add(app::add_version);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return exit_bad_input;
+  }
+
+  log::set_level(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
+  if (threads > 0) {
+    omp_set_num_threads(threads);
+    FFTPlanCache::global().set_threads(threads);
+  }
+  try {
+    for (auto* sub : app.get_subcommands())
+      if (commands.count(sub) != 0) return commands.at(sub)();
+    return exit_bad_input;
+  } catch (const InputError& e) {
+    log::error("{}", e.what());
+    return exit_bad_input;
+  } catch (const NumericalError& e) {
+    log::error("{}", e.what());
+    return exit_numerical_failure;
+  } catch (const std::exception& e) {
+    log::error("internal error: {}", e.what());
+    return 3;
+  }
+}

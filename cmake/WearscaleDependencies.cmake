@@ -1,0 +1,101 @@
+# Every dependency comes from a Debian 12 package. A missing one stops the
+# configuration with the name of the package that provides it.
+find_package(PkgConfig QUIET)
+
+function(wearscale_missing what package)
+  message(FATAL_ERROR
+    "wearscale needs ${what}, which was not found.\n"
+    "Install it with:  apt-get install -y ${package}\n"
+    "(or run .ci/install-deps, which installs everything wearscale needs)")
+endfunction()
+
+macro(wearscale_require_pkgconfig)
+  if(NOT PkgConfig_FOUND)
+    wearscale_missing("pkg-config" "pkg-config")
+  endif()
+endmacro()
+
+# --- Eigen3 (header-only linear algebra) -------------------------------------
+find_package(Eigen3 3.3 QUIET NO_MODULE)
+if(NOT TARGET Eigen3::Eigen)
+  wearscale_missing("Eigen3" "libeigen3-dev")
+endif()
+
+# --- FFTW3, double precision, with its OpenMP-threaded library ----------------
+wearscale_require_pkgconfig()
+pkg_check_modules(FFTW3 QUIET IMPORTED_TARGET fftw3)
+find_library(FFTW3_OMP_LIBRARY NAMES fftw3_omp)
+if(NOT FFTW3_FOUND OR NOT FFTW3_OMP_LIBRARY)
+  wearscale_missing("FFTW3 (double, with fftw3_omp)" "libfftw3-dev")
+endif()
+add_library(wearscale_fftw INTERFACE)
+target_link_libraries(wearscale_fftw INTERFACE ${FFTW3_OMP_LIBRARY} PkgConfig::FFTW3)
+
+# --- SUNDIALS (adaptive time integration: CVODE/ARKODE) -----------------------
+find_package(SUNDIALS QUIET)
+if(NOT SUNDIALS_FOUND)
+  wearscale_missing("SUNDIALS" "libsundials-dev")
+endif()
+
+# --- GSL (roots, quadrature, fits, interpolation) ----------------------------
+find_package(GSL QUIET)
+if(NOT GSL_FOUND)
+  wearscale_missing("GSL" "libgsl-dev")
+endif()
+
+# --- HDF5 (C API, serial) -----------------------------------------------------
+set(HDF5_PREFER_PARALLEL OFF)
+find_package(HDF5 QUIET COMPONENTS C)
+if(NOT HDF5_FOUND)
+  wearscale_missing("HDF5 (serial, C API)" "libhdf5-dev")
+endif()
+add_library(wearscale_hdf5 INTERFACE)
+target_include_directories(wearscale_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS} ${HDF5_INCLUDE_DIRS})
+target_link_libraries(wearscale_hdf5 INTERFACE ${HDF5_C_LIBRARIES})
+target_compile_definitions(wearscale_hdf5 INTERFACE ${HDF5_C_DEFINITIONS} ${HDF5_DEFINITIONS})
+
+# --- Boost (headers: math) ----------------------------------------------------
+find_package(Boost 1.74 QUIET)
+if(NOT Boost_FOUND)
+  wearscale_missing("Boost" "libboost-dev")
+endif()
+
+# --- toml++ (case files) ------------------------------------------------------
+find_package(tomlplusplus QUIET)
+if(NOT TARGET tomlplusplus::tomlplusplus)
+  wearscale_missing("toml++" "libtomlplusplus-dev")
+endif()
+
+# --- fmt, nlohmann-json, CLI11 ------------------------------------------------
+find_package(fmt QUIET)
+if(NOT TARGET fmt::fmt)
+  wearscale_missing("fmt" "libfmt-dev")
+endif()
+find_package(nlohmann_json 3 QUIET)
+if(NOT TARGET nlohmann_json::nlohmann_json)
+  wearscale_missing("nlohmann-json" "nlohmann-json3-dev")
+endif()
+find_package(CLI11 QUIET)
+if(NOT TARGET CLI11::CLI11)
+  wearscale_missing("CLI11 (command-line parsing)" "libcli11-dev")
+endif()
+
+# --- OpenMP -------------------------------------------------------------------
+find_package(OpenMP QUIET COMPONENTS CXX)
+if(NOT OpenMP_CXX_FOUND)
+  wearscale_missing("OpenMP" "libgomp1 (comes with g++)")
+endif()
+
+# --- Test and benchmark frameworks -------------------------------------------
+if(WEARSCALE_BUILD_TESTS)
+  find_package(GTest QUIET)
+  if(NOT TARGET GTest::gtest_main)
+    wearscale_missing("GoogleTest" "libgtest-dev libgmock-dev")
+  endif()
+endif()
+if(WEARSCALE_BUILD_BENCH)
+  find_package(benchmark QUIET)
+  if(NOT TARGET benchmark::benchmark)
+    wearscale_missing("Google Benchmark" "libbenchmark-dev")
+  endif()
+endif()

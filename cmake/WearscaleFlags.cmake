@@ -1,0 +1,31 @@
+# Compiler flags, chosen deliberately:
+#  -O3                 : vectorised loops over grids and particles.
+#  -march=x86-64-v2    : SSE4.2/POPCNT baseline every x86 machine of the last
+#                        decade has; portable binaries (CI, users, clusters).
+#                        WEARSCALE_NATIVE=ON trades portability for AVX2/AVX-512.
+#  no -ffast-math      : we test NaN detection and rely on IEEE semantics in
+#                        convergence criteria; FFTW does its own SIMD anyway.
+#  -fno-math-errno     : lets sqrt/floor inline; errno is never read here.
+set(WEARSCALE_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+    -Wold-style-cast -Wcast-align -Woverloaded-virtual -Wnull-dereference
+    -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough)
+
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
+  if(WEARSCALE_NATIVE)
+    set(WEARSCALE_ARCH_FLAGS -march=native)
+  else()
+    set(WEARSCALE_ARCH_FLAGS -march=x86-64-v2 -mtune=generic)
+  endif()
+endif()
+
+set(CMAKE_CXX_FLAGS_RELEASE "-O3 -DNDEBUG")
+set(CMAKE_CXX_FLAGS_RELWITHDEBINFO "-O2 -g -DNDEBUG")
+
+add_library(wearscale_flags INTERFACE)
+target_compile_options(wearscale_flags INTERFACE
+  $<$<COMPILE_LANGUAGE:CXX>:${WEARSCALE_WARNINGS} ${WEARSCALE_ARCH_FLAGS} -fno-math-errno>)
+
+if(WEARSCALE_SANITIZE)
+  target_compile_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
+  target_link_options(wearscale_flags INTERFACE -fsanitize=address,undefined)
+endif()

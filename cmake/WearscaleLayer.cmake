@@ -1,0 +1,21 @@
+# wearscale_layer(NAME <name> DIR <folder> [DEPENDS <layer>...] [LIBS <target>...])
+#
+# Adds the library of one architectural layer as `wearscale_<name>` with the
+# alias `wearscale::<name>`. Its public headers live in <folder>/include and
+# are visible only to the layer itself and to layers that declare it in
+# DEPENDS: a solver that includes a coupling header fails to compile.
+function(wearscale_layer)
+  cmake_parse_arguments(L "" "NAME;DIR" "DEPENDS;LIBS" ${ARGN})
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${L_DIR}/src/*.cpp)
+  add_library(wearscale_${L_NAME} STATIC ${sources})
+  add_library(wearscale::${L_NAME} ALIAS wearscale_${L_NAME})
+  target_include_directories(wearscale_${L_NAME} PUBLIC ${L_DIR}/include PRIVATE ${L_DIR}/src)
+  set(deps)
+  foreach(d IN LISTS L_DEPENDS)
+    list(APPEND deps wearscale::${d})
+  endforeach()
+  target_link_libraries(wearscale_${L_NAME} PUBLIC ${deps} ${L_LIBS} PRIVATE wearscale_flags)
+  set_target_properties(wearscale_${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_property(GLOBAL APPEND PROPERTY WEARSCALE_LAYERS ${L_NAME})
+  set_property(GLOBAL PROPERTY WEARSCALE_LAYER_${L_NAME}_DEPENDS ${L_DEPENDS})
+endfunction()

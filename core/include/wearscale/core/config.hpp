@@ -1,0 +1,93 @@
+#pragma once
+// Case files: TOML with typed, range-checked getters.
+//
+// Every value a program reads goes through a getter that states its type,
+// allowed range and physical dimension; a bad value raises InputError naming
+// the file (and line), the key, the value and what is allowed. Keys that no
+// component read are errors too (reject_unknown_keys), so a typo never falls
+// back silently to a default.
+#include <filesystem>
+#include <initializer_list>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/range.hpp"
+#include "wearscale/core/units.hpp"
+
+namespace wearscale {
+
+class Config {
+ public:
+  /// Reads and parses a TOML file; InputError if it is missing or malformed.
+  static Config load(const std::filesystem::path& file);
+  /// Parses TOML text; `source` names it in error messages.
+  static Config from_string(std::string_view text, std::string source = "<string>");
+
+  /// Applies a command-line override "KEY=VALUE" (`--set`). VALUE is read as
+  /// TOML (number, bool, "string", [array], {inline = table}); a bare word is
+  /// taken as a string. Intermediate tables are created as needed.
+  void override_value(std::string_view assignment);
+
+  /// A view of a sub-table; its keys are relative to `key`. An absent table
+  /// gives an empty view (every optional getter then returns its fallback).
+  Config section(std::string_view key) const;
+  bool has(std::string_view key) const;
+  /// Names of the entries of a table (e.g. the materials a case defines).
+  std::vector<std::string> keys(std::string_view table = {}) const;
+
+  // --- Typed getters; `key` is dotted and relative to this view ------------
+  /// A number: TOML float or integer, or a string with a unit ("8 mm/s") whose
+  /// dimension must be `dim`. Returned in SI.
+  double number(std::string_view key, const Range& range = {},
+                units::Dimension dim = units::dimensionless) const;
+  double number_or(std::string_view key, double fallback, const Range& range = {},
+                   units::Dimension dim = units::dimensionless) const;
+  long integer(std::string_view key, const Range& range = {}) const;
+  long integer_or(std::string_view key, long fallback, const Range& range = {}) const;
+  bool boolean(std::string_view key) const;
+  bool boolean_or(std::string_view key, bool fallback) const;
+  std::string string(std::string_view key) const;
+  std::string string_or(std::string_view key, std::string fallback) const;
+  /// A string that must be one of `allowed`.
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const;
+  std::string choice_or(std::string_view key, std::string fallback,
+                        std::initializer_list<std::string_view> allowed) const;
+  std::vector<double> numbers(std::string_view key, const Range& range = {},
+                              units::Dimension dim = units::dimensionless) const;
+
+  /// Marks a key (and everything under it) as read without reading it.
+  void mark_used(std::string_view key) const;
+  /// InputError for the first key nobody read, with the keys that were read
+  /// in the same table and the closest one ("did you mean …?").
+  void reject_unknown_keys() const;
+
+  /// The InputError for a value found invalid after it was read, e.g. by a
+  /// consistency check between two keys; names file, line, key and value.
+  [[nodiscard]] InputError error(std::string_view key, std::string_view problem,
+                                 std::string_view allowed = {}) const;
+
+  const std::string& source() const;
+  /// Absolute dotted key of a key of this view.
+  std::string full_key(std::string_view key) const;
+  /// The resolved case (overrides applied) as JSON and as TOML text.
+  nlohmann::json to_json() const;
+  std::string to_toml() const;
+
+  Config(const Config&);
+  Config& operator=(const Config&);
+  ~Config();
+
+ private:
+  struct State;
+  Config(std::shared_ptr<State> state, std::string prefix);
+  std::shared_ptr<State> state_;
+  std::string prefix_;
+};
+
+}  // namespace wearscale

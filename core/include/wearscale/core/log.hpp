@@ -1,0 +1,26 @@
+#pragma once
+// Messages to the user on stderr (stdout is reserved for results and --json).
+#include <string_view>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace wearscale::log {
+
+enum class Level { Quiet = 0, Normal = 1, Verbose = 2 };
+
+void set_level(Level level);
+Level level();
+void write(Level at_least, std::string_view prefix, std::string_view message);
+
+template <class... A>
+void info(fmt::format_string<A...> f, A&&... a) { write(Level::Normal, "", fmt::format(f, std::forward<A>(a)...)); }
+template <class... A>
+void debug(fmt::format_string<A...> f, A&&... a) { write(Level::Verbose, "debug: ", fmt::format(f, std::forward<A>(a)...)); }
+/// Warnings show even in quiet mode.
+template <class... A>
+void warn(fmt::format_string<A...> f, A&&... a) { write(Level::Quiet, "warning: ", fmt::format(f, std::forward<A>(a)...)); }
+template <class... A>
+void error(fmt::format_string<A...> f, A&&... a) { write(Level::Quiet, "error: ", fmt::format(f, std::forward<A>(a)...)); }
+
+}  // namespace wearscale::log

@@ -1,0 +1,44 @@
+#pragma once
+// Progress of a long computation: a one-line bar with rate and ETA on an
+// interactive terminal; silent when stderr is not a TTY, when CI is set, or
+// in quiet mode, so logs and CI output stay clean.
+#include <chrono>
+#include <string>
+
+namespace wearscale {
+
+class Progress {
+ public:
+  /// `total` units of work (steps, iterations, cases), named `unit`.
+  Progress(std::string label, double total, std::string unit = "steps");
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  /// A reporter that never prints (for tests and nested work).
+  static Progress silent(double total = 1.0);
+
+  /// Reports `done` units finished (absolute, not an increment). Redraws at most ~5 times a second.
+  void update(double done);
+  /// Clears the line; called by the destructor if needed.
+  void finish();
+
+  bool enabled() const { return enabled_; }
+  double rate() const;          ///< units per second so far
+  double eta_seconds() const;   ///< estimated seconds left (NaN before any progress)
+  /// The line that would be drawn now, e.g. "pin-on-disc  42% 12.5 steps/s ETA 1m05s".
+  std::string line() const;
+
+  /// Whether a new reporter would draw: stderr is a TTY, CI is unset and the log level is not quiet.
+  static bool terminal_is_interactive();
+
+ private:
+  Progress(std::string label, double total, std::string unit, bool enabled);
+  using clock = std::chrono::steady_clock;
+  std::string label_, unit_;
+  double total_, done_ = 0.0;
+  bool enabled_, drawn_ = false;
+  clock::time_point start_, last_draw_;
+};
+
+}  // namespace wearscale

@@ -1,0 +1,56 @@
+#include "wearscale/core/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace wearscale {
+
+namespace {
+[[noreturn]] void io_error(const std::string& what, const std::filesystem::path& p) {
+  throw std::runtime_error(fmt::format("{} {}: {}", what, p.string(), std::strerror(errno)));
+}
+
+void fsync_path(const std::filesystem::path& p, int flags) {
+  const int fd = ::open(p.c_str(), flags);
+  if (fd < 0) return;  // a folder we cannot open (odd file systems): rename is still atomic
+  ::fsync(fd);
+  ::close(fd);
+}
+}  // namespace
+
+std::filesystem::path partial_path(const std::filesystem::path& final_path) {
+  const auto name = fmt::format(".{}.partial-{}", final_path.filename().string(), ::getpid());
+  return final_path.parent_path() / name;
+}
+
+void commit_file(const std::filesystem::path& partial, const std::filesystem::path& final_path) {
+  fsync_path(partial, O_RDONLY);
+  if (::rename(partial.c_str(), final_path.c_str()) != 0) io_error("cannot rename to", final_path);
+  const auto dir = final_path.parent_path().empty() ? std::filesystem::path(".") : final_path.parent_path();
+  fsync_path(dir, O_RDONLY | O_DIRECTORY);
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
+  const auto tmp = partial_path(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) io_error("cannot write", tmp);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(tmp);
+      io_error("cannot write", tmp);
+    }
+  }
+  commit_file(tmp, path);
+}
+
+}  // namespace wearscale

@@ -1,0 +1,33 @@
+#pragma once
+// Runs a case file: builds its scales from [scale.*], checks the case, orders
+// and runs the pipeline, writes run.h5 (+ sidecars) into the output folder.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace wearscale::coupling {
+
+struct RunOptions {
+  std::filesystem::path case_file;
+  std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set
+  std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
+};
+
+struct RunSummary {
+  std::string case_name;
+  std::filesystem::path output_dir;
+  std::vector<std::string> scales;  ///< ids in run order
+  nlohmann::json results;           ///< headline figures {name: {value, unit, description}}
+  nlohmann::json parameters;        ///< the resolved case
+  std::vector<std::filesystem::path> files;
+  nlohmann::json to_json() const;
+};
+
+/// Throws InputError for a bad case (before any output is written) and
+/// NumericalError when a solver fails.
+RunSummary run_case(const RunOptions& options);
+
+}  // namespace wearscale::coupling

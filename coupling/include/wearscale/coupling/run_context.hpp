@@ -1,0 +1,37 @@
+#pragma once
+// What a scale sees of the run it is part of: the output folder, the run's
+// HDF5 file, and the table of headline results.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "wearscale/core/hdf5_file.hpp"
+
+namespace wearscale::coupling {
+
+class RunContext {
+ public:
+  RunContext(std::filesystem::path output_dir, H5Writer& h5) : dir_(std::move(output_dir)), h5_(h5) {}
+
+  const std::filesystem::path& output_dir() const { return dir_; }
+  /// The run's HDF5 file (run.h5): scales write their series and fields here.
+  H5Writer& h5() { return h5_; }
+
+  /// A headline figure: shown in the summary, printed by --json, stored in run.h5 /results.
+  void report(const std::string& name, double value, const std::string& unit, const std::string& description);
+  /// A file the run wrote besides run.h5 (CSV, XDMF, PNG), listed in the summary.
+  void add_file(const std::filesystem::path& file) { files_.push_back(file); }
+
+  const nlohmann::json& results() const { return results_; }
+  const std::vector<std::filesystem::path>& files() const { return files_; }
+
+ private:
+  std::filesystem::path dir_;
+  H5Writer& h5_;
+  nlohmann::json results_ = nlohmann::json::object();
+  std::vector<std::filesystem::path> files_;
+};
+
+}  // namespace wearscale::coupling

@@ -1,0 +1,40 @@
+#pragma once
+// A scale of the multiscale model, implemented by a named backend. It declares
+// what it consumes and provides; the pipeline orders scales by those
+// declarations and runs them.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "wearscale/core/config.hpp"
+#include "wearscale/core/registry.hpp"
+#include "wearscale/coupling/exchange.hpp"
+#include "wearscale/coupling/run_context.hpp"
+
+namespace wearscale::coupling {
+
+class Scale {
+ public:
+  virtual ~Scale() = default;
+  virtual std::vector<Key> consumes() const = 0;
+  virtual std::vector<Key> provides() const = 0;
+  /// Reads its inputs from `exchange`, computes, puts every key of provides().
+  virtual void run(Exchange& exchange, RunContext& context) = 0;
+};
+
+/// What a backend factory receives. A backend reads all its keys in its
+/// factory (so unknown keys are caught before anything runs).
+struct ScaleSetup {
+  std::string kind;      ///< "molecular", "nano", "macro"
+  std::string backend;   ///< name within the kind
+  Config section;        ///< the [scale.<kind>] table
+  Config root;           ///< the whole case ([materials], ...)
+  Provenance provenance() const { return {kind, backend, section.to_json()}; }
+};
+
+using ScaleRegistry = Registry<Scale, const ScaleSetup&>;
+
+/// Every built-in backend, registered once (coupling/src/backends.cpp).
+const ScaleRegistry& scale_registry();
+
+}  // namespace wearscale::coupling

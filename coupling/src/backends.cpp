@@ -1,0 +1,16 @@
+// The one list of built-in backends. A new backend is one file in
+// coupling/src/backends/ with a register_* function, plus one line here.
+#include "backends/backends.hpp"
+
+namespace wearscale::coupling {
+
+const ScaleRegistry& scale_registry() {
+  static const ScaleRegistry registry = [] {
+    ScaleRegistry r;
+    register_macro_hertz(r);
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace wearscale::coupling

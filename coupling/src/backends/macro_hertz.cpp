@@ -1,0 +1,64 @@
+// macro/hertz: the unworn pin of the pin-on-disc test as a Hertz contact
+// (§8.1: contact diameter 78.2 µm at F = 1 N, R = 3 mm, SiO2 on SiO2).
+// The closed form is the reference the BEM pin-on-disc model starts from.
+#include <vector>
+
+#include "backends/backends.hpp"
+#include "wearscale/bem/hertz.hpp"
+#include "wearscale/core/csv.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+
+class MacroHertz final : public Scale {
+ public:
+  explicit MacroHertz(const ScaleSetup& setup) : provenance_(setup.provenance()) {
+    const Config& c = setup.section;
+    contact_.radius = c.number("pin_radius", Range::positive(), units::length);
+    contact_.load = c.number("normal_load", Range::positive(), units::force);
+    // Both bodies share one material here, as in the thesis' contact solve (§9.3.2).
+    const double e = c.number("elastic_modulus", Range::positive(), units::pressure);
+    const double nu = c.number("poisson_ratio", Range::closed_open(-1.0, 0.5));
+    contact_.e_star = bem::effective_modulus(e, nu, e, nu);
+    points_ = static_cast<std::size_t>(c.integer_or("profile_points", 201, Range::at_least(3)));
+  }
+
+  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> provides() const override { return {{Quantity::MacroResult, "pin/disc"}}; }
+
+  void run(Exchange& exchange, RunContext& ctx) override {
+    const double a = contact_.contact_radius();
+    ctx.report("contact_radius", a, "m", "Hertz contact radius a = (3FR/4E*)^(1/3)");
+    ctx.report("peak_pressure", contact_.peak_pressure(), "Pa", "Hertz peak pressure p0 = 3F/(2πa²)");
+    ctx.report("mean_pressure", contact_.mean_pressure(), "Pa", "mean contact pressure F/(πa²)");
+    ctx.report("approach", contact_.approach(), "m", "approach of distant points δ = a²/R");
+    ctx.report("effective_modulus", contact_.e_star, "Pa", "E* of the pair (1.12)");
+
+    std::vector<double> r(points_), p(points_);
+    for (std::size_t k = 0; k < points_; ++k) {
+      r[k] = 1.5 * a * static_cast<double>(k) / static_cast<double>(points_ - 1);
+      p[k] = contact_.pressure(r[k]);
+    }
+    ctx.h5().write_table("/macro/hertz/profile", {"r", "pressure"}, {r, p}, {"m", "Pa"});
+    const auto csv = ctx.output_dir() / "pressure_profile.csv";
+    write_csv(csv, {"r_m", "pressure_Pa"}, {r, p}, {"Hertz pressure profile of the unworn pin (macro/hertz)"});
+    ctx.add_file(csv);
+    exchange.put(provides().front(), ctx.results(), provenance_);
+  }
+
+ private:
+  bem::HertzContact contact_{};
+  std::size_t points_ = 201;
+  Provenance provenance_;
+};
+
+}  // namespace
+
+void register_macro_hertz(ScaleRegistry& registry) {
+  registry.add({"macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)", {},
+                {"MacroResult(pin/disc)"}},
+               [](const ScaleSetup& s) { return std::make_unique<MacroHertz>(s); });
+}
+
+}  // namespace wearscale::coupling

@@ -1,0 +1,10 @@
+#include "wearscale/coupling/run_context.hpp"
+
+namespace wearscale::coupling {
+
+void RunContext::report(const std::string& name, double value, const std::string& unit,
+                        const std::string& description) {
+  results_[name] = {{"value", value}, {"unit", unit}, {"description", description}};
+}
+
+}  // namespace wearscale::coupling
