@@ -207,6 +207,18 @@ void Config::mark_used(std::string_view key) const { state_->used.insert(full_ke
 
 InputError Config::error(std::string_view key, std::string_view problem, std::string_view allowed) const {
   const std::string full = full_key(key);
+  if (!has(key)) {
+    // A missing key is often a misspelt one: point at a close sibling.
+    const std::string parent = parent_of(full), leaf = leaf_of(full);
+    const toml::table* t = parent.empty() ? &state_->root : state_->root.at_path(parent).as_table();
+    if (t != nullptr)
+      for (const auto& [k, v] : *t)
+        if (edit_distance(k.str(), leaf) <= 2) {
+          const std::string found = parent.empty() ? std::string(k.str()) : parent + "." + std::string(k.str());
+          return InputError::at_key(state_->source, full, "", std::string(problem),
+                                    fmt::format("{} (the case has '{}': misspelt?)", allowed, found));
+        }
+  }
   std::string where = state_->source;
   std::string value;
   if (state_->overridden.count(full) != 0) {

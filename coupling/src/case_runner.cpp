@@ -64,8 +64,8 @@ RunSummary run_case(const RunOptions& options) {
   RunSummary summary;
   summary.case_name = cfg.string("case.name");
   cfg.string_or("case.description", "");
-  summary.output_dir = options.output_dir ? *options.output_dir
-                                          : std::filesystem::path(cfg.string_or("output.dir", "out/" + summary.case_name));
+  const std::string case_dir = cfg.string_or("output.dir", "out/" + summary.case_name);
+  summary.output_dir = options.output_dir ? *options.output_dir : std::filesystem::path(case_dir);
   // Every check on the case happens here, before anything is written.
   Pipeline pipeline = build_pipeline(cfg);
   cfg.reject_unknown_keys();

@@ -1,0 +1,146 @@
+// The wearscale program as users meet it: subcommands with --help, exit
+// status 0/2, messages that name the problem, and no half-written output.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_cli_" + std::to_string(::getpid()));
+const std::string hertz_case = std::string(WEARSCALE_SOURCE_DIR) + "/cases/hertz_pin.toml";
+
+const char* kGoodCase = R"(
+[case]
+name = "cli-test"
+[scale.macro]
+backend = "hertz"
+pin_radius = 3e-3
+normal_load = 1.0
+elastic_modulus = 73e9
+poisson_ratio = 0.17
+)";
+
+fs::path write_case(const std::string& name, const std::string& text) {
+  fs::create_directories(work);
+  const auto p = work / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  if (pos == std::string::npos) throw std::logic_error("test case text lacks " + from);
+  return s.replace(pos, from.size(), to);
+}
+}  // namespace
+
+TEST(Cli, BackendsListsTheRegisteredBackends) {
+  const auto r = run_cli("backends", work);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("macro/hertz"));
+  EXPECT_THAT(r.out, HasSubstr("provides: MacroResult(pin/disc)"));
+  const auto j = nlohmann::json::parse(run_cli("backends --json", work).out);
+  ASSERT_TRUE(j.is_array());
+  EXPECT_EQ(j[0]["kind"], "macro");
+}
+
+TEST(Cli, EverySubcommandHasHelp) {
+  for (const std::string sub : {"run", "backends", "version"}) {
+    const auto r = run_cli(sub + " --help", work);
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_THAT(r.out, HasSubstr("Usage:")) << sub;
+  }
+  EXPECT_THAT(run_cli("run --help", work).out, HasSubstr("--set"));
+  EXPECT_EQ(run_cli("--help", work).status, 0);
+}
+
+TEST(Cli, VersionNamesTheLibraries) {
+  const auto r = run_cli("version --json", work);
+  EXPECT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["libraries"].contains("FFTW"));
+  EXPECT_TRUE(j["libraries"].contains("HDF5"));
+}
+
+TEST(Cli, CommandLineMistakesAreBadInput) {
+  EXPECT_EQ(run_cli("", work).status, 2);
+  EXPECT_EQ(run_cli("frobnicate", work).status, 2);
+  EXPECT_EQ(run_cli("run", work).status, 2);
+  EXPECT_EQ(run_cli("run a.toml --bogus", work).status, 2);
+}
+
+TEST(Cli, RunWritesResultsAndPrintsJson) {
+  const auto out = work / "out-json";
+  const auto r = run_cli("run '" + hertz_case + "' --out '" + out.string() + "' --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["case"], "hertz-pin");
+  EXPECT_NEAR(j["results"]["contact_radius"]["value"].get<double>(), 39.1e-6, 0.05e-6);
+  EXPECT_EQ(j["parameters"]["scale"]["macro"]["backend"], "hertz");
+  EXPECT_TRUE(fs::exists(out / "run.h5"));
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_TRUE(fs::exists(out / "pressure_profile.csv"));
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+}
+
+TEST(Cli, SetOverridesACaseKey) {
+  const auto r = run_cli("run '" + hertz_case + "' --out o2 --json --set scale.macro.normal_load=8", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto a = nlohmann::json::parse(r.out)["results"]["contact_radius"]["value"].get<double>();
+  EXPECT_NEAR(a, 2.0 * 39.1e-6, 0.1e-6);  // a ∝ F^(1/3)
+}
+
+struct BadInput {
+  std::string name, case_text, extra_args, expected;
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsWithStatus2NamingTheProblemAndWritesNothing) {
+  const auto& p = GetParam();
+  const auto out = work / ("bad-" + p.name);
+  std::string file = "'" + write_case(p.name + ".toml", p.case_text).string() + "'";
+  if (p.case_text.empty()) file = "'" + (work / "does-not-exist.toml").string() + "'";
+  const auto r = run_cli("run " + file + " --out '" + out.string() + "' " + p.extra_args, work);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(p.expected));
+  EXPECT_FALSE(fs::exists(out)) << "bad input must not create output";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"syntax", replace(kGoodCase, "normal_load = 1.0", "normal_load = = 1.0"), "", "TOML syntax error"},
+        BadInput{"unknown_key", replace(kGoodCase, "pin_radius", "pin_radiuss"), "", "scale.macro.pin_radiuss"},
+        BadInput{"wrong_type", replace(kGoodCase, "normal_load = 1.0", "normal_load = true"), "",
+                 "scale.macro.normal_load"},
+        BadInput{"out_of_range", replace(kGoodCase, "poisson_ratio = 0.17", "poisson_ratio = 0.6"), "",
+                 "[-1, 0.5)"},
+        BadInput{"wrong_unit", replace(kGoodCase, "normal_load = 1.0", "normal_load = \"1 mm\""), "",
+                 "has unit of m, expected N"},
+        BadInput{"missing_file", "", "", "no such case file"},
+        BadInput{"unknown_backend", replace(kGoodCase, "\"hertz\"", "\"bem\""), "", "unknown backend"},
+        BadInput{"unknown_kind", std::string(kGoodCase) + "[scale.meso]\nbackend = \"x\"\n", "", "unknown scale kind"},
+        BadInput{"missing_key", replace(kGoodCase, "pin_radius = 3e-3", ""), "", "scale.macro.pin_radius"},
+        BadInput{"bad_set", kGoodCase, "--set scale.macro.normal_load=-1", "scale.macro.normal_load"},
+        BadInput{"malformed_set", kGoodCase, "--set nothing", "expected KEY=VALUE"}),
+    [](const auto& p) { return p.param.name; });
+
+TEST(Cli, ABadRunLeavesEarlierOutputIntact) {
+  const auto out = work / "keep";
+  ASSERT_EQ(run_cli("run '" + hertz_case + "' --out '" + out.string() + "'", work).status, 0);
+  const auto before = slurp(out / "run.h5");
+  const auto r = run_cli("run '" + hertz_case + "' --out '" + out.string() + "' --set scale.macro.pin_radius=0", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(slurp(out / "run.h5"), before);
+}

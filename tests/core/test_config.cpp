@@ -1,0 +1,178 @@
+// Case files: typed getters with ranges and units; every kind of bad input
+// is an InputError that names the file, the key, the value and what is allowed.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "wearscale/core/config.hpp"
+
+using namespace wearscale;
+using ::testing::HasSubstr;
+
+namespace {
+const char* kCase = R"(
+[case]
+name = "demo"
+
+[scale.macro]
+backend = "hertz"
+grid = 128
+size = 2e-3
+velocity = "8 mm/s"
+load = 1
+layer = { material = "SiO2", thickness = "1 um" }
+loads = [0.5, 1, "2 N"]
+flag = true
+)";
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+}  // namespace
+
+TEST(Config, TypedGettersReadValuesInSI) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  const auto m = c.section("scale.macro");
+  EXPECT_EQ(m.integer("grid", Range::at_least(2)), 128);
+  EXPECT_DOUBLE_EQ(m.number("size", Range::positive(), units::length), 2e-3);
+  EXPECT_DOUBLE_EQ(m.number("velocity", Range::positive(), units::velocity), 8e-3);
+  EXPECT_DOUBLE_EQ(m.number("load", Range::positive(), units::force), 1.0);  // integer accepted as a number
+  EXPECT_DOUBLE_EQ(m.number("layer.thickness", Range::non_negative(), units::length), 1e-6);
+  EXPECT_EQ(m.string("layer.material"), "SiO2");
+  EXPECT_TRUE(m.boolean("flag"));
+  EXPECT_EQ(m.numbers("loads", Range::positive(), units::force), (std::vector<double>{0.5, 1.0, 2.0}));
+  EXPECT_EQ(c.keys("scale"), std::vector<std::string>{"macro"});
+}
+
+TEST(Config, OptionalGettersFallBackOnlyWhenTheKeyIsAbsent) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_EQ(c.integer_or("scale.macro.steps", 10, Range::at_least(1)), 10);
+  EXPECT_EQ(c.integer_or("scale.macro.grid", 10, Range::at_least(1)), 128);
+  EXPECT_THAT(message_of([&] { c.integer_or("scale.macro.grid", 10, Range::at_most(64)); }), HasSubstr("out of range"));
+}
+
+TEST(Config, OutOfRangeNamesFileLineKeyValueAndRange) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  const auto msg = message_of([&] { c.integer("scale.macro.grid", Range::closed(2, 64)); });
+  EXPECT_THAT(msg, HasSubstr("demo.toml:7"));
+  EXPECT_THAT(msg, HasSubstr("scale.macro.grid"));
+  EXPECT_THAT(msg, HasSubstr("128"));
+  EXPECT_THAT(msg, HasSubstr("[2, 64]"));
+}
+
+TEST(Config, WrongTypeIsReportedWithTheTypeFound) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_THAT(message_of([&] { c.integer("scale.macro.size"); }), HasSubstr("expected an integer, got a float"));
+  EXPECT_THAT(message_of([&] { c.number("scale.macro.backend"); }), HasSubstr("cannot read a quantity"));
+  EXPECT_THAT(message_of([&] { c.string("scale.macro.grid"); }), HasSubstr("expected a string, got an integer"));
+  EXPECT_THAT(message_of([&] { c.boolean("scale.macro.grid"); }), HasSubstr("scale.macro.grid"));
+}
+
+TEST(Config, UnitOfTheWrongDimensionIsRejected) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  const auto msg = message_of([&] { c.number("scale.macro.velocity", Range::positive(), units::pressure); });
+  EXPECT_THAT(msg, HasSubstr("has unit of m/s, expected Pa"));
+}
+
+TEST(Config, MissingRequiredKeyIsNamed) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_THAT(message_of([&] { c.number("scale.macro.radius", Range::positive(), units::length); }),
+              HasSubstr("key 'scale.macro.radius': missing required number"));
+}
+
+TEST(Config, ChoiceListsTheAllowedValues) {
+  const auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_EQ(c.choice("scale.macro.backend", {"hertz", "bem"}), "hertz");
+  EXPECT_THAT(message_of([&] { c.choice("scale.macro.backend", {"bem", "dem"}); }), HasSubstr("\"bem\", \"dem\""));
+}
+
+TEST(Config, NaNIsNeverInRangeAndInfinityOnlyWhenAllowed) {
+  const auto c = Config::from_string("a = nan\nb = inf\nc = \"inf\"\n", "x.toml");
+  EXPECT_THROW(c.number("a"), InputError);
+  EXPECT_THROW(c.number("b", Range::non_negative()), InputError);
+  EXPECT_TRUE(std::isinf(c.number("b", Range::non_negative().or_infinite())));
+  EXPECT_TRUE(std::isinf(c.number("c", Range::non_negative().or_infinite(), units::dimensionless)));
+}
+
+TEST(Config, UnknownKeysAreErrorsWithASuggestion) {
+  auto c = Config::from_string(kCase + std::string("gird = 3\n"), "demo.toml");
+  const auto m = c.section("scale.macro");
+  c.string("case.name");
+  m.string("backend");
+  m.integer("grid");
+  m.mark_used("size");
+  m.mark_used("velocity");
+  m.mark_used("load");
+  m.mark_used("layer");
+  m.mark_used("loads");
+  m.mark_used("flag");
+  const auto msg = message_of([&] { c.reject_unknown_keys(); });
+  EXPECT_THAT(msg, HasSubstr("scale.macro.gird"));
+  EXPECT_THAT(msg, HasSubstr("did you mean 'grid'?"));
+}
+
+TEST(Config, AllKeysReadMeansNoError) {
+  const auto c = Config::from_string("[a]\nx = 1\ny = { z = 2 }\n", "ok.toml");
+  c.number("a.x");
+  c.number("a.y.z");
+  EXPECT_NO_THROW(c.reject_unknown_keys());
+}
+
+TEST(Config, SyntaxErrorsGiveFileAndLine) {
+  const auto msg = message_of([] { Config::from_string("[case]\nname = \"x\"\ngrid = = 3\n", "bad.toml"); });
+  EXPECT_THAT(msg, HasSubstr("bad.toml:3"));
+  EXPECT_THAT(msg, HasSubstr("TOML syntax error"));
+}
+
+TEST(Config, MissingFileIsBadInput) {
+  EXPECT_THAT(message_of([] { Config::load("/nonexistent/case.toml"); }), HasSubstr("/nonexistent/case.toml: no such case file"));
+}
+
+TEST(Config, LoadReadsAFile) {
+  const auto path = std::filesystem::temp_directory_path() / "wearscale_config_test.toml";
+  std::ofstream(path) << kCase;
+  const auto c = Config::load(path);
+  EXPECT_EQ(c.string("case.name"), "demo");
+  EXPECT_EQ(c.source(), path.string());
+  std::filesystem::remove(path);
+}
+
+TEST(Config, OverridesReplaceCreateAndAreTyped) {
+  auto c = Config::from_string(kCase, "demo.toml");
+  c.override_value("scale.macro.grid=64");
+  c.override_value("scale.macro.velocity = 1 cm/s");  // bare words become a string
+  c.override_value("scale.nano.backend=analytic");
+  c.override_value("materials.layer.thickness=inf");
+  EXPECT_EQ(c.integer("scale.macro.grid"), 64);
+  EXPECT_DOUBLE_EQ(c.number("scale.macro.velocity", Range::positive(), units::velocity), 0.01);
+  EXPECT_EQ(c.string("scale.nano.backend"), "analytic");
+  EXPECT_TRUE(std::isinf(c.number("materials.layer.thickness", Range::non_negative().or_infinite())));
+  EXPECT_THAT(message_of([&] { c.integer("scale.macro.grid", Range::at_least(128)); }), HasSubstr("--set"));
+}
+
+TEST(Config, MalformedOverridesAreBadInput) {
+  auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_THAT(message_of([&] { c.override_value("scale.macro.grid"); }), HasSubstr("expected KEY=VALUE"));
+  EXPECT_THAT(message_of([&] { c.override_value("scale.macro.grid.sub=1"); }), HasSubstr("not a table"));
+  EXPECT_THAT(message_of([&] { c.override_value("scale..grid=1"); }), HasSubstr("empty component"));
+}
+
+TEST(Config, ResolvedCaseRoundTripsToJsonAndToml) {
+  auto c = Config::from_string(kCase, "demo.toml");
+  c.override_value("scale.macro.grid=32");
+  const auto j = c.to_json();
+  EXPECT_EQ(j["scale"]["macro"]["grid"], 32);
+  EXPECT_EQ(c.section("scale.macro").to_json()["backend"], "hertz");
+  const auto again = Config::from_string(c.to_toml(), "again");
+  EXPECT_EQ(again.integer("scale.macro.grid"), 32);
+}

@@ -1,0 +1,31 @@
+#pragma once
+// Runs the wearscale program as a user would and captures what it prints.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+struct CliResult {
+  int status;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::filesystem::path& p) {
+  std::stringstream ss;
+  ss << std::ifstream(p).rdbuf();
+  return ss.str();
+}
+
+/// `args` is passed through the shell; run from `cwd`. CI is set so no
+/// progress bar is drawn.
+inline CliResult run_cli(const std::string& args, const std::filesystem::path& cwd) {
+  std::filesystem::create_directories(cwd);
+  const auto out = cwd / "cli.stdout", err = cwd / "cli.stderr";
+  const std::string cmd = "cd '" + cwd.string() + "' && CI=true '" + std::string(WEARSCALE_CLI) + "' " + args + " >'" +
+                          out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
