@@ -1,0 +1,75 @@
+#pragma once
+// Frictionless normal contact of a rigid surface on a periodic elastic flat
+// (§2.3.2): minimise ½∫p u − ∫p h under the Hertz–Signorini–Moreau conditions
+// p ≥ 0, g ≥ 0, p g = 0 (2.43) with the constrained conjugate gradient of
+// Polonsky & Keer (1999).
+//
+// Heights h are positive towards the elastic body; u > 0 moves its surface
+// away (into the solid). The gap is g = u − h + d, d the rigid-body level.
+//
+// Convergence: the relative orthogonality error
+//     ε = Σ_x p(x) |g(x)|  /  ( Σ_x p(x) · h_rms ),
+// with g shifted so that its mean over the contact is zero and h_rms the RMS
+// of h about its mean (1 for a flat surface), must fall below `tolerance`
+// while no point outside the contact penetrates (g < 0 where p = 0).
+#include <vector>
+
+#include "wearscale/core/fft.hpp"
+
+namespace wearscale::bem {
+
+struct ContactOptions {
+  double tolerance = 1e-12;   ///< on ε above
+  int max_iterations = 10000;
+};
+
+struct ContactResult {
+  int iterations = 0;
+  double error = 0.0;             ///< ε at the solution
+  double mean_pressure = 0.0;     ///< ⟨p⟩ [Pa]
+  double contact_fraction = 0.0;  ///< A/A0: share of points with p > 0
+  double interference = 0.0;      ///< δ = max h − d: summit depth below the mean deformed surface [m]
+  double elastic_energy = 0.0;    ///< ½∫p u dA per cell [J]
+};
+
+class NormalContact {
+ public:
+  /// `surface` heights on a periodic grid; `e_star` the contact modulus (1.12).
+  NormalContact(const RealField& surface, double e_star);
+
+  /// Replaces the rigid surface, keeping the last pressure as a warm start.
+  void set_surface(const RealField& surface);
+  /// Forgets the warm start.
+  void reset();
+
+  /// Solves for the imposed mean pressure p0 ≥ 0 (InputError if negative;
+  /// NumericalError on NaN, breakdown or no convergence).
+  ContactResult solve_mean_pressure(double p0, const ContactOptions& options = {});
+  /// Solves for the imposed interference δ (see ContactResult): an outer
+  /// bracketing root search (GSL Brent) on the mean pressure, warm-started.
+  ContactResult solve_interference(double delta, const ContactOptions& options = {});
+
+  const RealField& pressure() const { return p_; }
+  /// Surface displacement u (zero mean), valid after a solve.
+  const RealField& displacement() const { return u_; }
+  /// Gap g = u − h + d, zero in the contact and ≥ 0 (to the tolerance) outside; valid after a solve.
+  const RealField& gap() const { return gap_; }
+  const RealField& surface() const { return h_; }
+  const Grid2D& grid() const { return h_.grid(); }
+  double e_star() const { return e_star_; }
+  /// The last iterations' errors ε (for reports of slow convergence).
+  const std::vector<double>& history() const { return history_; }
+
+ private:
+  void convolve(const RealField& in, RealField& out, double scale);
+  ContactResult finish(int iterations, double error, double g_mean);
+
+  RealField h_, p_, u_, t_, r_, gap_;
+  ComplexField spectrum_;
+  std::vector<double> kernel_;  // 2/(E* q)/N on the half spectrum; 0 at q = 0
+  std::shared_ptr<const FFTPlan> plan_;
+  double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
+  std::vector<double> history_;
+};
+
+}  // namespace wearscale::bem

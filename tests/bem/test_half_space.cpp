@@ -1,0 +1,183 @@
+// The periodic elastic half-space (§2.3.1): the Boussinesq–Cerruti tensor,
+// reciprocity, closed-form displacements and elastic energies of ch. 4.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "wearscale/bem/half_space.hpp"
+#include "wearscale/core/errors.hpp"
+
+using namespace wearscale;
+using namespace wearscale::bem;
+using std::numbers::pi;
+
+namespace {
+// Uniform traction `value` on a disc of diameter d centred at (cx, cy).
+void disc(RealField& f, double d, double cx, double cy, double value) {
+  const auto& g = f.grid();
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < g.ny; ++j) {
+      const double x = g.x(i) - cx, y = g.y(j) - cy;
+      if (x * x + y * y <= 0.25 * d * d) f(i, j) += value;
+    }
+}
+
+double pixel_area(const RealField& f) {
+  double a = 0.0;
+  for (double v : f) a += v != 0.0 ? 1.0 : 0.0;
+  return a * f.grid().cell_area();
+}
+
+// Square-lattice sum Σ'1/|n| with a neutralising background (Bonsall &
+// Maradudin 1977): the energy of periodic images of a loaded patch.
+constexpr double kSquareLatticeMadelung = -3.9002649;
+
+// Energy per cell of the periodic images of a patch carrying total tangential
+// force Q, in the point-force limit: ½ Σ' Q²(1 − ν sin²θ)/(2πG|n|L), whose
+// angular factor averages to (1 − ν/2) over each lattice shell.
+double image_energy(double force, double g, double nu, double l) {
+  return force * force * (1.0 - 0.5 * nu) * kSquareLatticeMadelung / (4.0 * pi * g * l);
+}
+}  // namespace
+
+TEST(HalfSpace, GreenTensorIsHermitianAndMatchesBoussinesq) {
+  const double g = 30e9, nu = 0.27, qx = 3.0, qy = -4.0;  // |q| = 5
+  const auto f = HalfSpace::green_tensor(qx, qy, g, nu);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) EXPECT_EQ(f[a][b], std::conj(f[b][a])) << a << b;
+  const double e_prime = 2.0 * g * (1.0 + nu) / (1.0 - nu * nu);
+  EXPECT_NEAR(f[2][2].real(), 2.0 / (e_prime * 5.0), 1e-25);            // (2.35c): 2/(E' q)
+  EXPECT_NEAR(f[0][0].real(), (1.0 - nu * 9.0 / 25.0) / (g * 5.0), 1e-25);  // (4.3)
+  EXPECT_EQ(HalfSpace::green_tensor(0.0, 0.0, g, nu)[2][2], 0.0);       // zero mode
+}
+
+TEST(HalfSpace, IncompressibleBodiesDecoupleNormalAndTangential) {
+  const auto f = HalfSpace::green_tensor(1.0, 2.0, 1.0, 0.5);
+  EXPECT_EQ(std::abs(f[0][2]), 0.0);
+  EXPECT_EQ(std::abs(f[2][1]), 0.0);
+}
+
+TEST(HalfSpace, BettiReciprocityHoldsForArbitraryTractions) {
+  const Grid2D grid(32, 24, 1.0, 0.8);
+  HalfSpace body(grid, 1.0, 0.3);
+  VectorField p1(grid), p2(grid), u1(grid), u2(grid);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n;
+  for (auto* f : {&p1.x, &p1.y, &p1.z, &p2.x, &p2.y, &p2.z})
+    for (auto& v : *f) v = n(rng);
+  body.displacement(p1, u1);
+  body.displacement(p2, u2);
+  double w12 = 0.0, w21 = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    w12 += p1.x[k] * u2.x[k] + p1.y[k] * u2.y[k] + p1.z[k] * u2.z[k];
+    w21 += p2.x[k] * u1.x[k] + p2.y[k] * u1.y[k] + p2.z[k] * u1.z[k];
+  }
+  EXPECT_NEAR(w12, w21, 1e-12 * std::abs(w12));
+  EXPECT_GT(HalfSpace::elastic_energy(p1, u1), 0.0);  // the operator is positive
+}
+
+TEST(HalfSpace, ANormalLoadPullsSurfacePointsTowardsIt) {
+  // Boussinesq (2.35a): u_x = −(1−2ν)P x/(4πG r²) outside the loaded disc.
+  const Grid2D grid = Grid2D::square(256, 1.0);
+  HalfSpace body(grid, 1.0, 0.2);
+  VectorField p(grid), u(grid);
+  disc(p.z, 0.05, 0.5, 0.5, 1.0);
+  body.displacement(p, u);
+  const std::size_t c = 128, off = 16;  // 0.0625 from the centre
+  EXPECT_LT(u.x(c + off, c), 0.0);
+  EXPECT_GT(u.x(c - off, c), 0.0);
+  const double force = pixel_area(p.z);
+  // x/r² is harmonic, so outside the disc its load acts as a point load; the
+  // periodic images shift the value by about 1 % at this distance.
+  const double expected = -(1.0 - 0.4) * force / (4.0 * pi * body.shear_modulus() * 0.0625);
+  EXPECT_NEAR(u.x(c + off, c), expected, 0.02 * std::abs(expected));
+}
+
+TEST(HalfSpace, UniformPressureOnACircleMatchesJohnson) {
+  // u_z(0) − u_z(a) = (2 p a / E')(1 − 2/π) for uniform p on radius a (Johnson §3.2).
+  const Grid2D grid = Grid2D::square(1024, 1.0);
+  HalfSpace body(grid, 2.0, 0.3);
+  RealField p(grid), u(grid);
+  const double a = 40.0 / 1024.0;
+  disc(p, 2.0 * a, 0.5, 0.5, 1.0);
+  body.normal_displacement(p, u);
+  const double expected = 2.0 * a / body.contact_modulus() * (1.0 - 2.0 / pi);
+  EXPECT_NEAR(u(512, 512) - u(512 + 40, 512), expected, 0.01 * expected);
+}
+
+TEST(HalfSpace, TheFullOperatorAgreesWithTheNormalOne) {
+  const Grid2D grid(64, 48, 2.0, 1.5);
+  HalfSpace body(grid, 3.0, 0.1);
+  VectorField p(grid), u(grid);
+  RealField uz(grid);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> d(0.0, 1.0);
+  for (auto& v : p.z) v = d(rng);
+  body.displacement(p, u);
+  body.normal_displacement(p.z, uz);
+  for (std::size_t k = 0; k < grid.size(); ++k) ASSERT_NEAR(u.z[k], uz[k], 1e-12);
+}
+
+TEST(HalfSpace, ShearedCircleStoresTheEnergyOf433) {
+  // E_el,1 = (2−ν) d³ q² / (12 G)  (4.33), plus the energy of the periodic images.
+  const std::size_t n = 2048;
+  const Grid2D grid = Grid2D::square(n, 1.0);
+  const double nu = 0.3, d = 64.0 / n, q = 1.0;
+  HalfSpace body(grid, 1.0, nu);
+  VectorField p(grid), u(grid);
+  disc(p.x, d, 0.5, 0.5, q);
+  body.displacement(p, u);
+  const double g = body.shear_modulus();
+  const double d_eff = std::sqrt(4.0 * pixel_area(p.x) / pi);  // the pixelated disc's diameter
+  const double expected = (2.0 - nu) * std::pow(d_eff, 3) * q * q / (12.0 * g) +
+                          image_energy(q * pixel_area(p.x), g, nu, 1.0);
+  EXPECT_NEAR(HalfSpace::elastic_energy(p, u), expected, 0.01 * expected);
+}
+
+TEST(HalfSpace, TwoShearedCirclesFollow444) {
+  // E_el,2 ≈ (2−ν)d³q²/(6G) + πd⁴q²(1 − ν sin²θ)/(32 G l)   (4.44), within a few % for l ≥ d.
+  const std::size_t n = 2048;
+  const Grid2D grid = Grid2D::square(n, 1.0);
+  const double nu = 0.3, d = 48.0 / n, q = 1.0;
+  HalfSpace body(grid, 1.0, nu);
+  const double g = body.shear_modulus();
+  for (double theta : {0.0, pi / 2}) {
+    double previous = INFINITY;
+    for (double l_over_d : {1.0, 1.5, 2.0, 4.0}) {
+      const double l = l_over_d * d;
+      VectorField p(grid), u(grid);
+      disc(p.x, d, 0.5 - 0.5 * l * std::cos(theta), 0.5 - 0.5 * l * std::sin(theta), q);
+      disc(p.x, d, 0.5 + 0.5 * l * std::cos(theta), 0.5 + 0.5 * l * std::sin(theta), q);
+      body.displacement(p, u);
+      const double area = 0.5 * pixel_area(p.x), d_eff = std::sqrt(4.0 * area / pi);
+      const double e1 = (2.0 - nu) * std::pow(d_eff, 3) * q * q / (12.0 * g);
+      const double inter = pi * std::pow(d_eff, 4) * q * q * (1.0 - nu * std::pow(std::sin(theta), 2)) / (32.0 * g * l);
+      const double expected = 2.0 * e1 + inter + image_energy(2.0 * q * area, g, nu, 1.0);
+      const double got = HalfSpace::elastic_energy(p, u);
+      // (4.44) is a far-field expansion: measured +3.2 % at l = d (θ = π/2), +1.1 % (θ = 0),
+      // under 1 % from l = 1.5d and vanishing with distance, as Fig. 4.4 shows.
+      const double tolerance = l_over_d < 1.5 ? 0.04 : 0.01;
+      EXPECT_NEAR(got, expected, tolerance * expected) << "θ = " << theta << ", l/d = " << l_over_d;
+      EXPECT_GT(got, 2.0 * e1);  // bounded by 2E_el,1 and 4E_el,1
+      EXPECT_LT(got, 4.0 * e1);
+      EXPECT_LT(got, previous);  // interaction decays with distance
+      previous = got;
+    }
+  }
+}
+
+TEST(HalfSpace, RefusesUnphysicalMaterials) {
+  const Grid2D grid = Grid2D::square(8, 1.0);
+  EXPECT_THROW(HalfSpace(grid, -1.0, 0.3), InputError);
+  EXPECT_THROW(HalfSpace(grid, 1.0, 0.6), InputError);
+  EXPECT_THROW(HalfSpace(grid, 1.0, -1.0), InputError);
+  try {
+    HalfSpace(grid, 1.0, 0.7);
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("0.7"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("ν ≤ 0.5"));
+  }
+}
