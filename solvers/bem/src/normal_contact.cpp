@@ -20,7 +20,7 @@ constexpr std::size_t kHistory = 12;
 }  // namespace
 
 NormalContact::NormalContact(const RealField& surface, double e_star)
-    : h_(surface), p_(surface.grid()), u_(surface.grid()), t_(surface.grid()), r_(surface.grid()),
+    : h_(surface), p_(surface.grid()), u_(surface.grid()), t_(surface.grid()),
       gap_(surface.grid()), spectrum_(ComplexField::spectrum_of(surface.grid())), e_star_(e_star) {
   const Grid2D& g = surface.grid();
   if (!(e_star > 0.0) || !std::isfinite(e_star))
@@ -67,6 +67,27 @@ void NormalContact::convolve(const RealField& in, RealField& out, double scale) 
   plan_->backward_unnormalized(spectrum_, out);
 }
 
+double NormalContact::quadratic_form(const RealField& t) {
+  plan_->forward(t, spectrum_);
+  const Grid2D& g = grid();
+  const std::size_t cols = g.spectral_ny(), rows = g.nx;
+  const std::size_t last = g.ny % 2 == 0 ? cols - 1 : cols;  // the Nyquist column is its own mirror
+  const auto* s = spectrum_.data();
+  const double* k = kernel_.data();
+  double sum = 0.0;
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+  for (std::size_t i = 0; i < rows; ++i) {
+    double row = 0.0;
+    for (std::size_t j = 0; j < cols; ++j) {
+      const std::size_t m = i * cols + j;
+      const double w = (j == 0 || j == last) ? 1.0 : 2.0;  // modes stored once for ±q_y
+      row += w * k[m] * std::norm(s[m]);
+    }
+    sum += row;
+  }
+  return sum;  // Σ_x t (K t) = (1/N) Σ_q K(q) |t̂(q)|², the 1/N being in the kernel
+}
+
 ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions& opt) {
   if (!(p0 >= 0.0) || !std::isfinite(p0))
     throw InputError(fmt::format("normal contact: mean pressure {} is not allowed; allowed: ≥ 0", p0));
@@ -77,7 +98,6 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
   double* u = u_.data();
   double* t = t_.data();
   const double* h = h_.data();
-  const double* r = r_.data();
 
   if (p0 == 0.0) {
     p_.fill(0.0);
@@ -95,43 +115,45 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     p_.fill(p0);
   std::fill(t, t + n, 0.0);
 
-  bool conjugate = false;  // δ of Polonsky–Keer: 0 restarts steepest descent
+  bool conjugate = false;  // δ of Polonsky–Keer: false restarts steepest descent
   double g_norm_old = 1.0, shift = 0.0;
   for (int it = 0; it < opt.max_iterations; ++it) {
     convolve(p_, u_, alpha);  // u = K (α p)
 
-    // Pass 1: mean gap on the contact S = {p > 0}, and Σ_S (g − ḡ)² by shifted sums.
-    double n_s = 0.0, sum = 0.0, sum2 = 0.0;
-#pragma omp parallel for reduction(+ : n_s, sum, sum2) schedule(static)
-    for (std::size_t k = 0; k < n; ++k)
-      if (p[k] > 0.0) {
-        const double d = u[k] - h[k] - shift;
-        n_s += 1.0;
-        sum += d;
-        sum2 += d * d;
-      }
+    // Pass 1 over the contact S = {p > 0}: mean gap ḡ, Σ_S (g − ḡ)² (by sums
+    // shifted by the last ḡ, which keeps them free of cancellation), and the
+    // mean of the previous direction on the new S.
+    double n_s = 0.0, sum = 0.0, sum2 = 0.0, t_old_sum = 0.0;
+#pragma omp parallel for simd reduction(+ : n_s, sum, sum2, t_old_sum) schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double in = p[k] > 0.0 ? 1.0 : 0.0;
+      const double d = (u[k] - h[k] - shift) * in;
+      n_s += in;
+      sum += d;
+      sum2 += d * d;
+      t_old_sum += t[k] * in;
+    }
     if (n_s == 0.0) throw NumericalError(kSolver, it, "contact area", "the contact vanished (no point with p > 0)");
     const double g_mean = shift + sum / n_s;
     const double g_norm = std::max(0.0, sum2 - sum * sum / n_s);
     shift = g_mean;
 
-    // Pass 2: error, search direction t and its products.
+    // Pass 2: error; conjugate direction t = g + β (t_old − ⟨t_old⟩_S) on S, 0
+    // elsewhere. Projecting the direction to zero mean on S keeps the load
+    // constant along it, so the step needs only t·Kt (no mean of K t on S).
     const double beta = conjugate ? g_norm / g_norm_old : 0.0;
-    double err_num = 0.0, p_sum = 0.0, gt = 0.0, t_sum = 0.0, penetrating = 0.0;
-#pragma omp parallel for reduction(+ : err_num, p_sum, gt, t_sum, penetrating) schedule(static)
+    const double t_old_mean = t_old_sum / n_s;
+    double err_num = 0.0, p_sum = 0.0, gt = 0.0, penetrating = 0.0;
+#pragma omp parallel for simd reduction(+ : err_num, p_sum, gt, penetrating) schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       const double g = u[k] - h[k] - g_mean;
-      if (p[k] > 0.0) {
-        err_num += p[k] * std::abs(g);
-        p_sum += p[k];
-        const double tk = g + beta * t[k];
-        t[k] = tk;
-        gt += g * tk;
-        t_sum += tk;
-      } else {
-        t[k] = 0.0;
-        penetrating += g < 0.0 ? 1.0 : 0.0;
-      }
+      const bool in = p[k] > 0.0;
+      const double tk = in ? g + beta * (t[k] - t_old_mean) : 0.0;
+      t[k] = tk;
+      err_num += in ? p[k] * std::abs(g) : 0.0;
+      p_sum += p[k];
+      gt += g * tk;
+      penetrating += (!in && g < 0.0) ? 1.0 : 0.0;
     }
     const double error = err_num / (p_sum * h_rms_);
     if (!std::isfinite(error)) throw NumericalError(kSolver, it, "orthogonality error", "not finite (NaN in u or p)");
@@ -143,33 +165,22 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     }
     g_norm_old = g_norm;
 
-    convolve(t_, r_, 1.0);  // r = K t
+    // Step length τ = Σ g t / Σ t (K t), the denominator by Parseval from the
+    // spectrum of t: one forward FFT instead of a full convolution.
+    const double tkt = quadratic_form(t_);
+    const double tau = gt / tkt;
+    if (!std::isfinite(tau) || !(tkt > 0.0))
+      throw NumericalError(kSolver, it, "step length", fmt::format("τ = {} (t·Kt = {})", tau, tkt));
 
-    // Pass 3: step length τ = Σ_S g t / Σ_S (r − r̄) t.
-    double r_sum = 0.0, rt = 0.0;
-#pragma omp parallel for reduction(+ : r_sum, rt) schedule(static)
-    for (std::size_t k = 0; k < n; ++k)
-      if (p[k] > 0.0) {
-        r_sum += r[k];
-        rt += r[k] * t[k];
-      }
-    const double denom = rt - (r_sum / n_s) * t_sum;
-    const double tau = gt / denom;
-    if (!std::isfinite(tau) || !(denom > 0.0))
-      throw NumericalError(kSolver, it, "step length", fmt::format("τ = {} (Σ r t = {})", tau, denom));
-
-    // Pass 4: descend, project on p ≥ 0, re-admit penetrating points, sum for the mean.
+    // Pass 3: descend, project on p ≥ 0, re-admit penetrating points, sum for the mean.
     double overlap = 0.0, new_sum = 0.0;
-#pragma omp parallel for reduction(+ : overlap, new_sum) schedule(static)
+#pragma omp parallel for simd reduction(+ : overlap, new_sum) schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
-      double pk = p[k] > 0.0 ? std::max(alpha * p[k] - tau * t[k], 0.0) : 0.0;
-      if (pk == 0.0) {
-        const double g = u[k] - h[k] - g_mean;
-        if (g < 0.0) {
-          pk = -tau * g;
-          overlap += 1.0;
-        }
-      }
+      const double descended = p[k] > 0.0 ? std::max(alpha * p[k] - tau * t[k], 0.0) : 0.0;
+      const double g = u[k] - h[k] - g_mean;
+      const bool readmit = descended == 0.0 && g < 0.0;
+      const double pk = readmit ? -tau * g : descended;
+      overlap += readmit ? 1.0 : 0.0;
       p[k] = pk;
       new_sum += pk;
     }

@@ -62,9 +62,10 @@ class NormalContact {
 
  private:
   void convolve(const RealField& in, RealField& out, double scale);
+  double quadratic_form(const RealField& t);  // Σ_x t (K t)
   ContactResult finish(int iterations, double error, double g_mean);
 
-  RealField h_, p_, u_, t_, r_, gap_;
+  RealField h_, p_, u_, t_, gap_;
   ComplexField spectrum_;
   std::vector<double> kernel_;  // 2/(E* q)/N on the half spectrum; 0 at q = 0
   std::shared_ptr<const FFTPlan> plan_;
