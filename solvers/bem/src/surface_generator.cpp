@@ -1,0 +1,146 @@
+#include "wearscale/bem/surface_generator.hpp"
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "wearscale/bem/spectral_modes.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/fft.hpp"
+
+namespace wearscale::bem {
+
+namespace {
+
+constexpr const char* source = "rough surface";
+
+std::string num(double v) { return fmt::format("{:g}", v); }
+
+/// Uniform in [0, 1) from the top 53 bits: the same on every standard library
+/// (std::uniform_real_distribution is not specified bit for bit).
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+bool at_least(double k, double bound) { return k >= bound * (1.0 - wavenumber_slack); }
+bool at_most(double k, double bound) { return k <= bound * (1.0 + wavenumber_slack); }
+
+}  // namespace
+
+void validate(const RoughSurfaceSpec& s) {
+  const Grid2D& g = s.grid;
+  if (g.nx < 4 || g.ny < 4)
+    throw InputError::at_key(source, "grid", fmt::format("{} × {}", g.nx, g.ny), "too few points",
+                             "at least 4 × 4 points");
+  if (!(std::isfinite(g.lx) && g.lx > 0.0))
+    throw InputError::at_key(source, "lx", num(g.lx), "the side of the surface must be a positive length", "> 0 m");
+  if (!(std::isfinite(g.ly) && g.ly > 0.0))
+    throw InputError::at_key(source, "ly", num(g.ly), "the side of the surface must be a positive length", "> 0 m");
+  if (!(s.hurst > 0.0 && s.hurst <= 1.0))
+    throw InputError::at_key(source, "hurst", num(s.hurst), "Hurst exponent out of range", "(0, 1]");
+  if (!(std::isfinite(s.k_l) && s.k_l > 0.0))
+    throw InputError::at_key(source, "k_l", num(s.k_l), "the longest wavelength's wavenumber must be positive",
+                             "0 < k_l ≤ k_r ≤ k_s");
+  if (!(std::isfinite(s.k_r) && s.k_r >= s.k_l))
+    throw InputError::at_key(source, "k_r", num(s.k_r), fmt::format("roll-off wavenumber below k_l = {:g}", s.k_l),
+                             "0 < k_l ≤ k_r ≤ k_s");
+  if (!(std::isfinite(s.k_s) && s.k_s >= s.k_r))
+    throw InputError::at_key(source, "k_s", num(s.k_s),
+                             fmt::format("shortest-wavelength wavenumber below k_r = {:g} (k_l = {:g})", s.k_r, s.k_l),
+                             "0 < k_l ≤ k_r ≤ k_s");
+  const double nyquist = nyquist_wavenumber(g);
+  if (!at_most(s.k_s, nyquist))
+    throw InputError::at_key(source, "k_s", num(s.k_s),
+                             fmt::format("above the Nyquist wavenumber of the {} × {} grid", g.nx, g.ny),
+                             fmt::format("k_s ≤ {:g} (min(nx, ny)/2 on a square domain)", nyquist));
+}
+
+double target_psd(const RoughSurfaceSpec& s, double k) {
+  if (!at_least(k, s.k_l) || !at_most(k, s.k_s)) return 0.0;     // outside [q_l, q_s]: Fig. 1.3
+  if (!at_least(k, s.k_r)) return 1.0;                            // plateau q_l ≤ q < q_r
+  return std::pow(k / s.k_r, -2.0 * (s.hurst + 1.0));              // C ∝ q^β, β = −2(H+1)  (1.10)
+}
+
+RealField generate_surface(const RoughSurfaceSpec& s) {
+  validate(s);
+  const Grid2D& g = s.grid;
+  const double n = static_cast<double>(g.size());
+  const double a = g.area() / (n * n);  // A = LxLy/(nx²ny²)   (1.9)
+  const std::size_t cols = g.spectral_ny();
+  ComplexField spectrum = ComplexField::spectrum_of(g);
+  std::mt19937_64 rng(s.seed);
+  // One phase per r2c mode, in storage order, whether used or not: the seed
+  // alone fixes the surface.
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < cols; ++j) {
+      const double phase = 2.0 * std::numbers::pi * uniform01(rng);
+      const double amplitude = std::sqrt(target_psd(s, radial_wavenumber(g, i, j)) / a);  // |ĥ| = √(C/A)  (1.9)
+      spectrum(i, j) = std::polar(amplitude, phase);
+    }
+  // Columns that are their own mirror image (j = 0, and j = ny/2 for even ny)
+  // hold both ĥ(kx, ky) and ĥ(−kx, ky) = conj ĥ(kx, −ky): make them conjugate,
+  // and the self-conjugate modes real (a random sign keeps |ĥ|).
+  for (std::size_t j = 0; j < cols; ++j) {
+    if (mode_multiplicity(g, j) != 1.0) continue;
+    for (std::size_t i = 0; i < g.nx; ++i) {
+      const std::size_t mirror = (g.nx - i) % g.nx;
+      if (mirror == i) {
+        const auto z = spectrum(i, j);
+        spectrum(i, j) = std::abs(z) * (z.real() >= 0.0 ? 1.0 : -1.0);
+      } else if (mirror < i) {
+        spectrum(i, j) = std::conj(spectrum(mirror, j));
+      }
+    }
+  }
+  RealField h(g);
+  FFTPlanCache::global().plan(g)->backward(spectrum, h);  // (1.8)
+  return h;
+}
+
+RealField generate_surface(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target) {
+  RealField h = generate_surface(spec);
+  rescale(h, measure, target);
+  return h;
+}
+
+RealField sphere(const Grid2D& grid, double radius, double cx, double cy) {
+  if (!(std::isfinite(radius) && radius > 0.0))
+    throw InputError::at_key("sphere", "radius", num(radius), "the radius must be a positive length", "> 0 m");
+  if (!std::isfinite(cx) || !std::isfinite(cy))
+    throw InputError::at_key("sphere", "centre", fmt::format("({:g}, {:g})", cx, cy), "not finite", "finite lengths");
+  RealField h(grid);
+  // Nearest periodic image: the offset folded into [−L/2, L/2).
+  auto fold = [](double d, double l) { return d - l * std::floor(d / l + 0.5); };
+  const double r2_max = radius * radius;
+#pragma omp parallel for
+  for (std::size_t i = 0; i < grid.nx; ++i) {
+    const double dx = fold(grid.x(i) - cx, grid.lx);
+    for (std::size_t j = 0; j < grid.ny; ++j) {
+      const double dy = fold(grid.y(j) - cy, grid.ly);
+      const double r2 = dx * dx + dy * dy;
+      h(i, j) = (r2 < r2_max ? std::sqrt(r2_max - r2) : 0.0) - radius;  // cap √(R² − r²) − R, clipped to −R
+    }
+  }
+  return h;
+}
+
+RealField plane(const Grid2D& grid, double value) { return RealField(grid, Layout::Physical, value); }
+
+RealField tilted_plane(const Grid2D& grid, double slope_x, double slope_y) {
+  RealField h(grid);
+  for (std::size_t i = 0; i < grid.nx; ++i)
+    for (std::size_t j = 0; j < grid.ny; ++j) h(i, j) = slope_x * grid.x(i) + slope_y * grid.y(j);
+  return h;
+}
+
+RealField add(const RealField& a, const RealField& b) {
+  if (!(a.grid() == b.grid()) || a.layout() != b.layout())
+    throw InputError(fmt::format("cannot add surfaces on different grids: {} and {}", a.grid().to_string(),
+                                 b.grid().to_string()));
+  RealField sum(a);
+  for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += b[k];
+  return sum;
+}
+
+}  // namespace wearscale::bem
