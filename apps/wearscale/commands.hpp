@@ -12,5 +12,7 @@ using Command = std::function<int()>;
 Command add_run(CLI::App& app);
 Command add_backends(CLI::App& app);
 Command add_version(CLI::App& app);
+Command add_surface(CLI::App& app);
+Command add_contact(CLI::App& app);
 
 }  // namespace wearscale::app

@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   add(app::add_run);
   add(app::add_backends);
   add(app::add_version);
+  add(app::add_surface);
+  add(app::add_contact);
 
   try {
     app.parse(argc, argv);

@@ -31,7 +31,8 @@ TEST_P(CaseRegression, ReproducesItsGoldFigures) {
   const auto gold_path = fs::path(WEARSCALE_SOURCE_DIR) / "tests" / "cases" / (file.stem().string() + ".gold.json");
   ASSERT_TRUE(fs::exists(gold_path)) << "every case needs a gold file: " << gold_path;
   const auto gold = nlohmann::json::parse(slurp(gold_path));
-  std::string args = "run '" + file.string() + "' --json --out out";
+  // The command that runs the case: `run` for scale pipelines, `contact` for contact studies.
+  std::string args = gold.value("command", std::string("run")) + " '" + file.string() + "' --json --out out";
   for (const auto& o : gold.value("overrides", nlohmann::json::array())) args += " --set '" + o.get<std::string>() + "'";
   const auto work = fs::temp_directory_path() / ("wearscale_case_" + file.stem().string() + "_" + std::to_string(::getpid()));
   const auto r = run_cli(args, work);

@@ -20,6 +20,7 @@ struct Range {
   static Range closed(double a, double b) { return {a, b, false, false}; }
   static Range open(double a, double b) { return {a, b, true, true}; }
   static Range closed_open(double a, double b) { return {a, b, false, true}; }
+  static Range open_closed(double a, double b) { return {a, b, true, false}; }
   Range or_infinite() const { Range r = *this; r.infinity_ok = true; return r; }
 
   bool contains(double v) const;

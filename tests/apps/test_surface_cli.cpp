@@ -1,0 +1,121 @@
+// `wearscale surface` as users run it: generate → analyze recovers the Hurst
+// exponent (VERIFICATION.md "Rough surfaces", ±0.05), --json and the PSD table,
+// help on every subcommand, exit status 2 naming the parameter on bad input.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_surface_cli_" + std::to_string(::getpid()));
+constexpr double side = 1e-4;  // L = 100 µm
+
+std::string generate_args(double hurst, const std::string& out) {
+  return fmt::format("surface generate --n 256 --size 1e-4 --hurst {} --kl 4 --ks 64 --seed 5 --hprime-rms 0.2 "
+                     "--out {} --json", hurst, out);
+}
+}  // namespace
+
+TEST(SurfaceCli, EverySubcommandHasHelp) {
+  for (const std::string sub : {"surface", "surface generate", "surface analyze"}) {
+    const auto r = run_cli(sub + " --help", work);
+    EXPECT_EQ(r.status, 0) << sub << r.err;
+    EXPECT_THAT(r.out, HasSubstr("Usage:")) << sub;
+  }
+  EXPECT_THAT(run_cli("surface generate --help", work).out, HasSubstr("--hprime-rms"));
+  EXPECT_THAT(run_cli("surface analyze --help", work).out, HasSubstr("--no-window"));
+}
+
+TEST(SurfaceCli, GenerateThenAnalyzeRecoversTheHurstExponent) {
+  for (const double hurst : {0.3, 0.8}) {
+    const std::string name = fmt::format("rough_{}.h5", hurst);
+    const auto gen = run_cli(generate_args(hurst, name), work);
+    ASSERT_EQ(gen.status, 0) << gen.err;
+    const auto g = nlohmann::json::parse(gen.out);
+    EXPECT_NEAR(g["h_prime_rms"].get<double>(), 0.2, 1e-12);  // rescaled exactly
+    EXPECT_TRUE(fs::exists(work / name));
+    EXPECT_TRUE(fs::exists(work / fmt::format("rough_{}.xdmf", hurst)));
+
+    // Fit band q = 2π·4/L … 2π·64/L: the whole generated band (bins wholly inside [k_l, k_s]).
+    const double q_l = 2.0 * std::numbers::pi * 4.0 / side, q_s = 2.0 * std::numbers::pi * 64.0 / side;
+    const auto ana = run_cli(fmt::format("surface analyze {} --no-window --qmin {} --qmax {} --psd-out psd.csv --json",
+                                         name, q_l, q_s),
+                             work);
+    ASSERT_EQ(ana.status, 0) << ana.err;
+    const auto a = nlohmann::json::parse(ana.out);
+    EXPECT_NEAR(a["hurst"].get<double>(), hurst, 0.05);
+    EXPECT_EQ(a["fit"]["points"].get<int>(), 60);
+    EXPECT_NEAR(a["h_prime_rms"].get<double>(), 0.2, 1e-12);
+    EXPECT_NEAR(a["Sa"].get<double>(), g["Sa"].get<double>(), 1e-12 * g["Sa"].get<double>());
+    EXPECT_THAT(slurp(work / "psd.csv"), HasSubstr("q,C,count\n"));
+
+    // Without a band the one recorded by `generate` (k_r … k_s) is used.
+    const auto by_default = nlohmann::json::parse(run_cli(fmt::format("surface analyze {} --no-window --json", name), work).out);
+    EXPECT_NEAR(by_default["hurst"].get<double>(), hurst, 0.05);
+  }
+}
+
+TEST(SurfaceCli, AnalyzeReadsATextGridWithItsSize) {
+  // h = Σ_{k=1..7} k⁻² cos(2πk x/L) µm along x on 32 × 16 points: h_RMS² = Σ k⁻⁴/2 exactly.
+  std::string text = "# a measured profile\n";
+  double mean_square = 0.0;
+  for (int k = 1; k <= 7; ++k) mean_square += std::pow(k, -4.0) / 2.0;
+  for (int i = 0; i < 32; ++i) {
+    double h = 0.0;
+    for (int k = 1; k <= 7; ++k) h += std::pow(k, -2.0) * std::cos(2.0 * std::numbers::pi * k * i / 32.0);
+    for (int j = 0; j < 16; ++j) text += fmt::format("{}{:.17g}", j ? "," : "", 1e-6 * h);
+    text += '\n';
+  }
+  fs::create_directories(work);
+  std::ofstream(work / "grid.csv") << text;
+  const auto r = run_cli("surface analyze grid.csv --size 32e-6 --no-window --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["h_rms"].get<double>(), 1e-6 * std::sqrt(mean_square), 1e-18);
+  EXPECT_DOUBLE_EQ(j["grid"]["lx"].get<double>(), 32e-6);
+  EXPECT_DOUBLE_EQ(j["grid"]["ly"].get<double>(), 16e-6);  // square pixels
+}
+
+TEST(SurfaceCli, BadInputIsExitStatus2NamingTheParameter) {
+  auto bad = [](const std::string& args) { return run_cli(args, work); };
+  auto r = bad("surface generate --n 64 --size 1e-4 --hurst 1.5 --kl 2 --ks 16 --h-rms 1e-6 --out x.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("'hurst' = 1.5"));
+  r = bad("surface generate --n 64 --size 1e-4 --hurst 0.5 --kl 2 --ks 40 --h-rms 1e-6 --out x.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("'k_s' = 40"));
+  EXPECT_THAT(r.err, HasSubstr("--ks"));
+  r = bad("surface generate --n 64 --size 1e-4 --hurst 0.5 --kl 20 --ks 16 --h-rms 1e-6 --out x.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("k_l"));
+  r = bad("surface generate --n 64 --size 1e-4 --hurst 0.5 --kl 2 --ks 16 --out x.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("--hprime-rms, --h-rms, --sa"));
+  r = bad("surface generate --n 64 --size 3kg --hurst 0.5 --kl 2 --ks 16 --sa 1e-6 --out x.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("--size = '3kg'"));
+  EXPECT_FALSE(fs::exists(work / "x.h5"));
+
+  r = bad("surface analyze missing.h5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("missing.h5"));
+  fs::create_directories(work);
+  std::ofstream(work / "ragged.txt") << "1 2 3\n4 5 6\n7 8\n";
+  r = bad("surface analyze ragged.txt --size 1e-3");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("ragged.txt: line 3"));
+  EXPECT_EQ(bad("surface").status, 2);
+  EXPECT_EQ(bad("surface generate --n 2 --size 1 --hurst 0.5 --kl 1 --ks 1 --sa 1 --out y.h5").status, 2);
+}
