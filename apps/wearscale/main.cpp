@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   CLI::App app{"wearscale: friction and adhesive wear across scales (MD → DEM/junctions → BEM pin-on-disc)",
                "wearscale"};
   app.require_subcommand(1);
+  app.fallthrough();  // -q, -v, -j are accepted after the subcommand too
   app.failure_message(CLI::FailureMessage::help);
   bool quiet = false, verbose = false;
   int threads = 0;

@@ -8,6 +8,9 @@ const ScaleRegistry& scale_registry() {
   static const ScaleRegistry registry = [] {
     ScaleRegistry r;
     register_macro_hertz(r);
+    register_molecular_table(r);
+    register_molecular_ideal(r);
+    register_nano_analytic(r);
     return r;
   }();
   return registry;

@@ -5,5 +5,8 @@
 namespace wearscale::coupling {
 
 void register_macro_hertz(ScaleRegistry& registry);
+void register_molecular_table(ScaleRegistry& registry);
+void register_molecular_ideal(ScaleRegistry& registry);
+void register_nano_analytic(ScaleRegistry& registry);
 
 }  // namespace wearscale::coupling

@@ -1,0 +1,32 @@
+#include "backends/case_materials.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace wearscale::coupling {
+
+materials::MaterialLibrary material_library(const Config& root) {
+  materials::MaterialLibrary library;
+  library.define_from(root);
+  return library;
+}
+
+std::vector<std::string> case_materials(const Config& root, const materials::MaterialLibrary& library) {
+  std::vector<std::string> names;
+  for (const char* key : {"materials.pin", "materials.disc", "materials.layer.material"}) {
+    if (!root.has(key)) continue;
+    const std::string name = root.string(key);
+    if (!library.contains(name))
+      throw root.error(key, "unknown material", fmt::format("{} or a [materials.define.<name>] table",
+                                                             fmt::join(library.names(), ", ")));
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  if (names.empty())
+    throw root.error("materials.pin", "the case names no material ([materials] pin, disc, layer)",
+                     "a material name, e.g. pin = \"SiO2\"");
+  return names;
+}
+
+}  // namespace wearscale::coupling

@@ -1,0 +1,48 @@
+// molecular/ideal: pressure-independent strengths equal to the ideal shear
+// strength σ_m,T of each material record (Table 2.1): σ_max = σ_dyn = σ_m,T.
+#include <map>
+
+#include "backends/backends.hpp"
+#include "backends/case_materials.hpp"
+#include "wearscale/materials/strength_law.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+
+class MolecularIdeal final : public Scale {
+ public:
+  explicit MolecularIdeal(const ScaleSetup& setup) : provenance_(setup.provenance()) {
+    const auto library = material_library(setup.root);
+    for (const auto& m : case_materials(setup.root, library)) {
+      const auto& record = library.get(m);
+      laws_.emplace(m, materials::StrengthLaw::constant(m, record.shear_strength, 1e12,
+                                                        "ideal shear strength of " + record.source));
+    }
+  }
+
+  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> provides() const override {
+    std::vector<Key> out;
+    for (const auto& [m, law] : laws_) out.push_back({Quantity::ShearStrength, m});
+    return out;
+  }
+
+  void run(Exchange& exchange, RunContext&) override {
+    for (const auto& [m, law] : laws_) exchange.put(Key{Quantity::ShearStrength, m}, law, provenance_);
+  }
+
+ private:
+  Provenance provenance_;
+  std::map<std::string, materials::StrengthLaw> laws_;
+};
+
+}  // namespace
+
+void register_molecular_ideal(ScaleRegistry& registry) {
+  registry.add({"molecular", "ideal", "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)", {},
+                {"ShearStrength(<each material of [materials]>)"}},
+               [](const ScaleSetup& s) { return std::make_unique<MolecularIdeal>(s); });
+}
+
+}  // namespace wearscale::coupling

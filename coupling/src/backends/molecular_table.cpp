@@ -1,0 +1,80 @@
+// molecular/table: shear strengths σ_max(p), σ_dyn(p) from tables — the
+// shipped ones (thesis Fig. 9.18 laws, or wearscale's own LAMMPS runs) or a
+// user's file per material (§9.3.1).
+#include <map>
+
+#include "backends/backends.hpp"
+#include "backends/case_materials.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/materials/strength_law.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+
+class MolecularTable final : public Scale {
+ public:
+  explicit MolecularTable(const ScaleSetup& setup) : provenance_(setup.provenance()) {
+    const Config& c = setup.section;
+    const auto library = material_library(setup.root);
+    materials_ = case_materials(setup.root, library);
+    const std::string set = c.choice_or("data", "thesis", {"thesis", "lammps"});
+    const auto outside = c.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
+                             ? materials::OutsideTable::Clamp
+                             : materials::OutsideTable::Error;
+    for (const auto& m : materials_) {
+      // A file given in [scale.molecular.tables] wins over the shipped set.
+      const std::string key = "tables." + m;
+      materials::StrengthTable table;
+      if (c.has(key)) {
+        try {
+          table = materials::read_strength_table(c.string(key));
+        } catch (const InputError& e) {
+          throw c.error(key, e.what());  // name the case key that points at the bad table
+        }
+      } else {
+        table = materials::shipped_table(set, m);
+      }
+      laws_.emplace(m, materials::StrengthLaw(std::move(table), outside));
+    }
+    c.mark_used("tables");  // entries for materials the case does not use are allowed
+  }
+
+  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> provides() const override {
+    std::vector<Key> out;
+    for (const auto& m : materials_) out.push_back({Quantity::ShearStrength, m});
+    return out;
+  }
+
+  void run(Exchange& exchange, RunContext& ctx) override {
+    for (const auto& [m, law] : laws_) {
+      const auto& t = law.table();
+      ctx.h5().write_table("/molecular/" + m, {"pressure", "sigma_max", "sigma_dyn"},
+                           {t.pressure, t.sigma_max, t.sigma_dyn}, {"Pa", "Pa", "Pa"});
+      ctx.h5().set_attribute("/molecular/" + m, "source", t.info("source"));
+      ctx.h5().set_attribute("/molecular/" + m, "file", t.origin);
+      Provenance p = provenance_;
+      p.parameters["table"] = t.origin;
+      exchange.put(Key{Quantity::ShearStrength, m}, law, p);
+    }
+  }
+
+ private:
+  Provenance provenance_;
+  std::vector<std::string> materials_;
+  std::map<std::string, materials::StrengthLaw> laws_;
+};
+
+}  // namespace
+
+void register_molecular_table(ScaleRegistry& registry) {
+  registry.add({"molecular", "table",
+                "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables",
+                {},
+                {"ShearStrength(<each material of [materials]>)"}},
+               [](const ScaleSetup& s) { return std::make_unique<MolecularTable>(s); });
+}
+
+}  // namespace wearscale::coupling

@@ -1,0 +1,102 @@
+#include "wearscale/materials/junction_model.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/errors.hpp"
+
+namespace wearscale::materials {
+
+namespace {
+constexpr const char* kModel = "materials/junction-model";
+
+double excess(double p, void* law) { return static_cast<const StrengthLaw*>(law)->sigma_max(p) - p; }
+
+void check_pressure(double p_n, double p_crit) {
+  if (!(p_n >= 0.0) || !std::isfinite(p_n))
+    throw InputError(fmt::format("junction model: normal pressure {} Pa is not allowed; allowed: ≥ 0", p_n));
+  if (!(p_crit > 0.0)) throw InputError(fmt::format("junction model: p_crit = {} Pa; allowed: > 0", p_crit));
+}
+}  // namespace
+
+double critical_pressure(const StrengthLaw& law) {
+  const auto& p = law.table().pressure;
+  const auto& s = law.table().sigma_max;
+  if (s.front() <= p.front()) return p.front();  // crushed from the start of the table
+  for (std::size_t r = 1; r < p.size(); ++r) {
+    const double f_hi = s[r] - p[r];
+    if (f_hi > 0.0) continue;
+    if (p[r] == p[r - 1]) return p[r];  // σ_max drops below p across a jump
+    // σ_max − p changes sign on [p[r−1], p[r]]: bracketed root (7.5).
+    gsl_function f{&excess, const_cast<StrengthLaw*>(&law)};
+    gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    gsl_error_handler_t* old = gsl_set_error_handler_off();
+    gsl_root_fsolver_set(solver, &f, p[r - 1], p[r]);
+    int status = GSL_CONTINUE;
+    int it = 0;
+    for (; status == GSL_CONTINUE && it < 200; ++it) {
+      gsl_root_fsolver_iterate(solver);
+      status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 0.0, 1e-13);
+    }
+    const double root = gsl_root_fsolver_root(solver);
+    gsl_root_fsolver_free(solver);
+    gsl_set_error_handler(old);
+    if (status != GSL_SUCCESS) throw NumericalError(kModel, it, "critical pressure", "Brent search did not converge");
+    return root;
+  }
+  throw NumericalError(kModel, 0, "critical pressure",
+                       fmt::format("σ_max(p) > p up to the end of the table {} ({:g} GPa): extend it to higher pressures",
+                                   law.table().origin, law.max_pressure() / 1e9));
+}
+
+double minimum_contact_ratio(double p_n, double p_crit) {
+  check_pressure(p_n, p_crit);
+  return p_n / p_crit;  // (7.6)
+}
+
+double tangential_resistance(const StrengthLaw& law, double p_n, double ratio, bool peak) {
+  if (!(ratio > 0.0 && ratio <= 1.0))
+    throw InputError(fmt::format("junction model: contact ratio A/A0 = {}; allowed: (0, 1]", ratio));
+  const double p_loc = p_n / ratio;  // (7.4)
+  return ratio * (peak ? law.sigma_max(p_loc) : law.sigma_dyn(p_loc));  // (7.9)
+}
+
+double minimum_tangential_resistance(const StrengthLaw& law, double p_n, double p_crit, bool peak) {
+  check_pressure(p_n, p_crit);
+  return p_n / p_crit * (peak ? law.sigma_max(p_crit) : law.sigma_dyn(p_crit));  // (7.10)
+}
+
+double friction_coefficient(const StrengthLaw& law, double p_crit) {
+  check_pressure(0.0, p_crit);
+  return law.sigma_dyn(p_crit) / p_crit;  // (9.13)
+}
+
+double wear_rate(double p_n, double p_crit) {
+  check_pressure(p_n, p_crit);
+  return p_n / p_crit;  // (9.21)
+}
+
+double steady_slope_rms(double p_crit, double e_star) {
+  if (!(e_star > 0.0)) throw InputError(fmt::format("junction model: E* = {} Pa; allowed: > 0", e_star));
+  return std::sqrt(2.0 * std::numbers::pi) * p_crit / e_star;  // (9.17)
+}
+
+InterfaceLaw interface_law(const std::string& a, const StrengthLaw& law_a, const std::string& b,
+                           const StrengthLaw& law_b) {
+  const double pa = critical_pressure(law_a), pb = critical_pressure(law_b);
+  const double mu_a = friction_coefficient(law_a, pa), mu_b = friction_coefficient(law_b, pb);
+  InterfaceLaw law;
+  law.pair = a + "/" + b;
+  const bool a_governs = mu_a <= mu_b;
+  law.governing = a_governs ? a : b;
+  law.p_crit = a_governs ? pa : pb;
+  law.mu0 = a_governs ? mu_a : mu_b;
+  return law;
+}
+
+}  // namespace wearscale::materials

@@ -1,0 +1,197 @@
+#include "wearscale/materials/strength_table.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+
+namespace wearscale::materials {
+
+namespace {
+
+constexpr double kGPa = 1e9;
+const char* const kColumns[3] = {"pressure_GPa", "sigma_max_GPa", "sigma_dyn_GPa"};
+
+std::string trim(std::string s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
+  return out;
+}
+
+// The invariants of a table; `where(r)` names row r ("file:line" when read).
+void check(const StrengthTable& t, const std::function<std::string(std::size_t)>& where) {
+  const std::string name = t.origin.empty() ? std::string("strength table") : t.origin;
+  const std::size_t n = t.pressure.size();
+  if (t.sigma_max.size() != n || t.sigma_dyn.size() != n)
+    throw InputError(fmt::format("{}: columns of different lengths", name));
+  for (std::size_t r = 0; r < n; ++r) {
+    const double p = t.pressure[r], a = t.sigma_max[r], d = t.sigma_dyn[r];
+    if (!std::isfinite(p) || !std::isfinite(a) || !std::isfinite(d))
+      throw InputError(fmt::format("{}: NaN or infinite value", where(r)));
+    if (p < 0.0) throw InputError(fmt::format("{}: pressure {:g} GPa is negative; allowed: ≥ 0", where(r), p / kGPa));
+    if (a < 0.0 || d < 0.0)
+      throw InputError(fmt::format("{}: negative strength ({:g}, {:g} GPa); allowed: ≥ 0", where(r), a / kGPa, d / kGPa));
+    if (r > 0 && p < t.pressure[r - 1])
+      throw InputError(fmt::format("{}: pressure {:g} GPa after {:g} GPa; pressures must not decrease", where(r),
+                                   p / kGPa, t.pressure[r - 1] / kGPa));
+    if (r > 1 && p == t.pressure[r - 1] && p == t.pressure[r - 2])
+      throw InputError(fmt::format("{}: pressure {:g} GPa appears three times; a jump is two rows at one pressure "
+                                   "(left and right values)",
+                                   where(r), p / kGPa));
+  }
+  if (n < 2) throw InputError(fmt::format("{}: needs at least two pressures, has {}", name, n));
+  if (t.pressure[0] == t.pressure[1] || t.pressure[n - 1] == t.pressure[n - 2])
+    throw InputError(fmt::format("{}: a jump (a pressure listed twice) needs rows on both sides of it", name));
+  if (t.pressure.front() == t.pressure.back()) throw InputError(fmt::format("{}: all pressures are equal", name));
+}
+
+bool is_hdf5(const std::filesystem::path& p) {
+  const auto ext = p.extension().string();
+  return ext == ".h5" || ext == ".hdf5";
+}
+
+StrengthTable read_csv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot open strength table", file.string()));
+  StrengthTable t;
+  t.origin = file.string();
+  std::string line;
+  int line_no = 0;
+  int col[3] = {-1, -1, -1};
+  std::size_t columns = 0;
+  bool header_seen = false;
+  std::vector<int> row_lines;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string s = trim(line);
+    if (s.empty()) continue;
+    if (s[0] == '#') {
+      const std::string body = trim(s.substr(1));
+      const auto colon = body.find(':');
+      if (colon != std::string::npos && colon > 0)
+        t.provenance.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
+      continue;
+    }
+    const auto cells = split_csv(s);
+    if (!header_seen) {
+      header_seen = true;
+      columns = cells.size();
+      for (std::size_t c = 0; c < cells.size(); ++c)
+        for (int k = 0; k < 3; ++k)
+          if (cells[c] == kColumns[k]) col[k] = static_cast<int>(c);
+      for (int k = 0; k < 3; ++k)
+        if (col[k] < 0)
+          throw InputError(fmt::format("{}:{}: missing column '{}'; the header must name pressure_GPa, "
+                                       "sigma_max_GPa, sigma_dyn_GPa",
+                                       file.string(), line_no, kColumns[k]));
+      continue;
+    }
+    if (cells.size() != columns)
+      throw InputError(fmt::format("{}:{}: {} values, the header has {} columns", file.string(), line_no, cells.size(),
+                                   columns));
+    double v[3];
+    for (int k = 0; k < 3; ++k) {
+      const std::string& cell = cells[static_cast<std::size_t>(col[k])];
+      std::size_t used = 0;
+      try {
+        v[k] = std::stod(cell, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != cell.size())
+        throw InputError(fmt::format("{}:{}: column {} = '{}' is not a number", file.string(), line_no, kColumns[k], cell));
+    }
+    t.pressure.push_back(v[0] * kGPa);
+    t.sigma_max.push_back(v[1] * kGPa);
+    t.sigma_dyn.push_back(v[2] * kGPa);
+    row_lines.push_back(line_no);
+  }
+  if (!header_seen) throw InputError(fmt::format("{}: empty strength table (no header line)", file.string()));
+  t.material = t.info("material");
+  check(t, [&](std::size_t r) { return fmt::format("{}:{}", file.string(), row_lines[r]); });
+  return t;
+}
+
+StrengthTable read_h5(const std::filesystem::path& file) {
+  H5Reader r(file);
+  StrengthTable t;
+  t.origin = file.string();
+  for (const char* name : {"pressure", "sigma_max", "sigma_dyn"})
+    if (!r.exists(std::string("/strength/") + name))
+      throw InputError(fmt::format("{}: missing dataset /strength/{}", file.string(), name));
+  t.pressure = r.read_series("/strength/pressure");
+  t.sigma_max = r.read_series("/strength/sigma_max");
+  t.sigma_dyn = r.read_series("/strength/sigma_dyn");
+  const std::string keys = r.string_attribute("/strength", "provenance_keys");
+  std::stringstream ss(keys);
+  std::string key;
+  while (std::getline(ss, key, ','))
+    if (!key.empty()) t.provenance.emplace_back(key, r.string_attribute("/strength", key));
+  t.material = t.info("material");
+  validate(t);
+  return t;
+}
+
+}  // namespace
+
+std::string StrengthTable::info(const std::string& key) const {
+  for (const auto& [k, v] : provenance)
+    if (k == key) return v;
+  return {};
+}
+
+void validate(const StrengthTable& t) {
+  const std::string name = t.origin.empty() ? std::string("strength table") : t.origin;
+  check(t, [&](std::size_t r) { return fmt::format("{}: row {}", name, r + 1); });
+}
+
+StrengthTable read_strength_table(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw InputError(fmt::format("{}: no such strength table", file.string()));
+  return is_hdf5(file) ? read_h5(file) : read_csv(file);
+}
+
+void write_strength_table(const std::filesystem::path& file, const StrengthTable& table) {
+  validate(table);
+  std::vector<std::pair<std::string, std::string>> provenance;
+  if (table.info("material").empty() && !table.material.empty()) provenance.emplace_back("material", table.material);
+  provenance.insert(provenance.end(), table.provenance.begin(), table.provenance.end());
+
+  if (is_hdf5(file)) {
+    H5Writer w(file);
+    w.write_series("/strength/pressure", table.pressure, "Pa");
+    w.write_series("/strength/sigma_max", table.sigma_max, "Pa");
+    w.write_series("/strength/sigma_dyn", table.sigma_dyn, "Pa");
+    std::string keys;
+    for (const auto& [k, v] : provenance) {
+      w.set_attribute("/strength", k, v);
+      keys += (keys.empty() ? "" : ",") + k;
+    }
+    w.set_attribute("/strength", "provenance_keys", keys);
+    w.commit();
+    return;
+  }
+  std::string text;
+  for (const auto& [k, v] : provenance) text += fmt::format("# {}: {}\n", k, v);
+  text += fmt::format("{},{},{}\n", kColumns[0], kColumns[1], kColumns[2]);
+  for (std::size_t r = 0; r < table.pressure.size(); ++r)
+    text += fmt::format("{:.10g},{:.10g},{:.10g}\n", table.pressure[r] / kGPa, table.sigma_max[r] / kGPa,
+                        table.sigma_dyn[r] / kGPa);
+  write_file_atomically(file, text);
+}
+
+}  // namespace wearscale::materials

@@ -1,0 +1,91 @@
+// Strength tables: the shipped ones load, malformed ones are refused with
+// the file and line, and what is written reads back.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/materials/shipped_data.hpp"
+
+using namespace wearscale;
+using namespace wearscale::materials;
+using ::testing::HasSubstr;
+
+namespace {
+const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("wearscale_tables_" + std::to_string(::getpid()));
+
+std::filesystem::path write(const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+std::string error_of(const std::filesystem::path& p) {
+  try {
+    read_strength_table(p);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+const std::string kHeader = "# material: X\npressure_GPa,sigma_max_GPa,sigma_dyn_GPa\n";
+}  // namespace
+
+TEST(StrengthTable, ShippedThesisTablesLoadWithTheirSource) {
+  const auto si = shipped_table("thesis", "Si");
+  EXPECT_EQ(si.material, "Si");
+  EXPECT_THAT(si.info("source"), HasSubstr("Fig. 9.18"));
+  EXPECT_EQ(si.pressure.back(), 30e9);
+  const auto sio2 = shipped_table("thesis", "SiO2");
+  EXPECT_EQ(sio2.pressure.back(), 50e9);
+  EXPECT_NEAR(sio2.sigma_dyn.front(), 6.3e9, 1e-3);
+}
+
+TEST(StrengthTable, NonMonotonePressureIsRefusedWithTheLine) {
+  const auto p = write("nonmonotone.csv", kHeader + "0,1,1\n10,1,1\n5,1,1\n");
+  EXPECT_THAT(error_of(p), HasSubstr("nonmonotone.csv:5"));
+  EXPECT_THAT(error_of(p), HasSubstr("must not decrease"));
+}
+
+TEST(StrengthTable, MissingColumnIsRefused) {
+  const auto p = write("nocol.csv", "pressure_GPa,sigma_max_GPa\n0,1\n1,1\n");
+  EXPECT_THAT(error_of(p), HasSubstr("missing column 'sigma_dyn_GPa'"));
+}
+
+TEST(StrengthTable, NaNIsRefusedWithTheLine) {
+  EXPECT_THAT(error_of(write("nan.csv", kHeader + "0,1,1\n10,nan,1\n")), HasSubstr("nan.csv:4"));
+  EXPECT_THAT(error_of(write("text.csv", kHeader + "0,1,1\n10,strong,1\n")), HasSubstr("'strong' is not a number"));
+}
+
+TEST(StrengthTable, NegativeStrengthIsRefusedWithTheLine) {
+  const auto msg = error_of(write("neg.csv", kHeader + "0,1,1\n10,1,-2\n"));
+  EXPECT_THAT(msg, HasSubstr("neg.csv:4"));
+  EXPECT_THAT(msg, HasSubstr("negative strength"));
+}
+
+TEST(StrengthTable, RaggedRowsAndDegenerateTablesAreRefused) {
+  EXPECT_THAT(error_of(write("ragged.csv", kHeader + "0,1,1\n10,1\n")), HasSubstr("ragged.csv:4"));
+  EXPECT_THAT(error_of(write("one.csv", kHeader + "0,1,1\n")), HasSubstr("at least two pressures"));
+  EXPECT_THAT(error_of(write("triple.csv", kHeader + "0,1,1\n5,1,1\n5,2,2\n5,3,3\n9,1,1\n")),
+              HasSubstr("three times"));
+  EXPECT_THAT(error_of(write("edge.csv", kHeader + "0,1,1\n5,1,1\n5,2,2\n")), HasSubstr("both sides"));
+  EXPECT_THAT(error_of(dir / "absent.csv"), HasSubstr("no such strength table"));
+}
+
+TEST(StrengthTable, WrittenTablesReadBackInCsvAndHdf5) {
+  const auto si = shipped_table("thesis", "Si");
+  for (const char* name : {"copy.csv", "copy.h5"}) {
+    write_strength_table(dir / name, si);
+    const auto back = read_strength_table(dir / name);
+    EXPECT_EQ(back.pressure, si.pressure) << name;
+    EXPECT_EQ(back.sigma_max, si.sigma_max) << name;
+    EXPECT_EQ(back.sigma_dyn, si.sigma_dyn) << name;
+    EXPECT_EQ(back.material, "Si") << name;
+    EXPECT_EQ(back.info("source"), si.info("source")) << name;
+  }
+  std::filesystem::remove_all(dir);
+}
