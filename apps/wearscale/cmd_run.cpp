@@ -1,4 +1,5 @@
 // wearscale run CASE.toml [--set KEY=VALUE]... [--out DIR] [--json]
+#include <algorithm>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -8,6 +9,32 @@
 #include "wearscale/coupling/case_runner.hpp"
 
 namespace wearscale::app {
+
+namespace {
+// One row per swept value: the headline figures of the pin-on-disc runs when
+// present, else every figure.
+void print_sweep_table(const coupling::RunSummary& summary) {
+  const std::vector<std::string> preferred = {"mu_mean", "mu_final", "pin_wear", "disc_wear", "substrate_reached_at"};
+  std::vector<std::string> columns;
+  const auto& first = summary.runs.front().results;
+  for (const auto& c : preferred)
+    for (const auto& r : summary.runs)
+      if (r.results.contains(c) && std::find(columns.begin(), columns.end(), c) == columns.end()) columns.push_back(c);
+  if (columns.empty())
+    for (const auto& [name, v] : first.items()) columns.push_back(name);
+  std::cout << fmt::format("{:<28}", summary.sweep_key);
+  for (const auto& c : columns) std::cout << fmt::format(" {:>20}", c);
+  std::cout << '\n';
+  for (std::size_t k = 0; k < summary.runs.size(); ++k) {
+    std::cout << fmt::format("{:<28}", summary.sweep_values[k]);
+    for (const auto& c : columns) {
+      const auto& res = summary.runs[k].results;
+      std::cout << (res.contains(c) ? fmt::format(" {:>20.6g}", res[c]["value"].get<double>()) : fmt::format(" {:>20}", "-"));
+    }
+    std::cout << '\n';
+  }
+}
+}  // namespace
 
 Command add_run(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Run a case file: its scales in order, its sweep, its outputs");
@@ -28,9 +55,13 @@ Command add_run(CLI::App& app) {
       std::cout << summary.to_json().dump(2) << '\n';
       return 0;
     }
-    for (const auto& [name, r] : summary.results.items())
-      std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
-                               r["unit"].get<std::string>(), r["description"].get<std::string>());
+    if (summary.sweep_key.empty()) {
+      for (const auto& [name, r] : summary.results.items())
+        std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
+                                 r["unit"].get<std::string>(), r["description"].get<std::string>());
+    } else {
+      print_sweep_table(summary);
+    }
     for (const auto& f : summary.files) log::info("wrote {}", f.string());
     return 0;
   };

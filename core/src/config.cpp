@@ -107,6 +107,8 @@ nlohmann::json to_json_node(const toml::node& n) {
 Config::Config(std::shared_ptr<State> state, std::string prefix) : state_(std::move(state)), prefix_(std::move(prefix)) {}
 Config::Config(const Config&) = default;
 Config& Config::operator=(const Config&) = default;
+Config::Config(Config&&) noexcept = default;
+Config& Config::operator=(Config&&) noexcept = default;
 Config::~Config() = default;
 
 Config Config::load(const std::filesystem::path& file) {
@@ -343,6 +345,27 @@ std::vector<double> Config::numbers(std::string_view key, const Range& range, un
     // Reuse the scalar path (types, units, range) on each element.
     Config element(state_, "");
     out.push_back(element.number(fmt::format("{}[{}]", base, i), range, dim));
+  }
+  return out;
+}
+
+std::vector<std::string> Config::values_as_text(std::string_view key) const {
+  mark_used(key);
+  const toml::node* n = find(state_->root, full_key(key));
+  if (n == nullptr) throw error(key, "missing required array", "an array of numbers or strings");
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->empty())
+    throw error(key, "expected a non-empty array", "an array of numbers or strings");
+  std::vector<std::string> out;
+  for (const auto& v : *a) {
+    if (auto s = v.as_string())
+      out.push_back(s->get());
+    else if (auto f = v.as_floating_point())
+      out.push_back(fmt::format("{}", f->get()));
+    else if (auto i = v.as_integer())
+      out.push_back(fmt::format("{}", i->get()));
+    else
+      throw error(key, fmt::format("element {} is {}", repr(v), type_name(v)), "numbers or strings");
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -12,6 +13,13 @@
 namespace wearscale {
 
 namespace {
+
+// Debian's serial HDF5 is not thread-safe: every call into it from these
+// wrappers holds this lock, so sweeps can run cases on several threads.
+std::recursive_mutex& hdf5_mutex() {
+  static std::recursive_mutex m;
+  return m;
+}
 
 // HDF5 prints its own error stack by default; wearscale reports errors itself.
 void silence_hdf5() {
@@ -107,6 +115,7 @@ bool path_exists(hid_t file, const std::string& path) {
 // ---------------------------------------------------------------- writer ---
 
 H5Writer::H5Writer(std::filesystem::path final_path) : final_(std::move(final_path)) {
+  std::lock_guard lock(hdf5_mutex());
   silence_hdf5();
   if (!final_.parent_path().empty()) std::filesystem::create_directories(final_.parent_path());
   partial_ = partial_path(final_);
@@ -115,6 +124,7 @@ H5Writer::H5Writer(std::filesystem::path final_path) : final_(std::move(final_pa
 }
 
 H5Writer::~H5Writer() {
+  std::lock_guard lock(hdf5_mutex());
   if (committed_) return;
   close();
   std::error_code ec;
@@ -122,11 +132,13 @@ H5Writer::~H5Writer() {
 }
 
 void H5Writer::close() {
+  std::lock_guard lock(hdf5_mutex());
   if (file_ >= 0) H5Fclose(file_);
   file_ = -1;
 }
 
 void H5Writer::ensure_group(const std::string& group_path) {
+  std::lock_guard lock(hdf5_mutex());
   if (file_ < 0) throw std::logic_error("H5Writer: file already committed");
   std::string walked;
   std::size_t start = 1;
@@ -145,12 +157,14 @@ void H5Writer::ensure_group(const std::string& group_path) {
 }
 
 long long H5Writer::group(const std::string& path) {
+  std::lock_guard lock(hdf5_mutex());
   const auto parent = split(path).first;
   ensure_group(parent);
   return H5Oopen(file_, parent.c_str(), H5P_DEFAULT);
 }
 
 void H5Writer::write_series(const std::string& path, std::span<const double> values, std::string_view unit) {
+  std::lock_guard lock(hdf5_mutex());
   Handle g(group(path), H5Oclose);
   write_dataset(g, split(path).second, {static_cast<hsize_t>(values.size())}, values.data(), unit);
 }
@@ -170,6 +184,7 @@ void H5Writer::write_table(const std::string& group_path, const std::vector<std:
 }
 
 void H5Writer::write_field(const std::string& path, const RealField& field, std::string_view unit) {
+  std::lock_guard lock(hdf5_mutex());
   if (field.layout() != Layout::Physical) throw std::invalid_argument("H5Writer::write_field: spectral field");
   Handle g(group(path), H5Oclose);
   const auto name = split(path).second;
@@ -180,11 +195,13 @@ void H5Writer::write_field(const std::string& path, const RealField& field, std:
 }
 
 void H5Writer::write_scalar(const std::string& path, double value, std::string_view unit) {
+  std::lock_guard lock(hdf5_mutex());
   Handle g(group(path), H5Oclose);
   write_dataset(g, split(path).second, {1}, &value, unit);
 }
 
 void H5Writer::set_attribute(const std::string& object, const std::string& name, std::string_view value) {
+  std::lock_guard lock(hdf5_mutex());
   if (!H5Writer::exists(object)) ensure_group(object);
   Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.valid()) throw std::runtime_error("HDF5: no object " + object);
@@ -192,15 +209,20 @@ void H5Writer::set_attribute(const std::string& object, const std::string& name,
 }
 
 void H5Writer::set_attribute(const std::string& object, const std::string& name, double value) {
+  std::lock_guard lock(hdf5_mutex());
   if (!H5Writer::exists(object)) ensure_group(object);
   Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.valid()) throw std::runtime_error("HDF5: no object " + object);
   put_number_attribute(obj, name, value);
 }
 
-bool H5Writer::exists(const std::string& object) const { return path_exists(file_, object); }
+bool H5Writer::exists(const std::string& object) const {
+  std::lock_guard lock(hdf5_mutex());
+  return path_exists(file_, object);
+}
 
 void H5Writer::commit() {
+  std::lock_guard lock(hdf5_mutex());
   if (committed_) return;
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + partial_.string());
   close();
@@ -211,6 +233,7 @@ void H5Writer::commit() {
 // ---------------------------------------------------------------- reader ---
 
 H5Reader::H5Reader(const std::filesystem::path& path) : path_(path) {
+  std::lock_guard lock(hdf5_mutex());
   silence_hdf5();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: no such file", path.string()));
@@ -220,12 +243,17 @@ H5Reader::H5Reader(const std::filesystem::path& path) : path_(path) {
 }
 
 H5Reader::~H5Reader() {
+  std::lock_guard lock(hdf5_mutex());
   if (file_ >= 0) H5Fclose(file_);
 }
 
-bool H5Reader::exists(const std::string& path) const { return path_exists(file_, path); }
+bool H5Reader::exists(const std::string& path) const {
+  std::lock_guard lock(hdf5_mutex());
+  return path_exists(file_, path);
+}
 
 std::vector<std::size_t> H5Reader::shape(const std::string& dataset) const {
+  std::lock_guard lock(hdf5_mutex());
   if (!exists(dataset)) throw InputError(fmt::format("{}: no dataset '{}'", path_.string(), dataset));
   Handle ds(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds.valid()) throw InputError(fmt::format("{}: '{}' is not a dataset", path_.string(), dataset));
@@ -237,6 +265,7 @@ std::vector<std::size_t> H5Reader::shape(const std::string& dataset) const {
 }
 
 std::vector<double> H5Reader::read_series(const std::string& dataset) const {
+  std::lock_guard lock(hdf5_mutex());
   const auto dims = shape(dataset);
   std::size_t n = 1;
   for (auto d : dims) n *= d;
@@ -248,12 +277,14 @@ std::vector<double> H5Reader::read_series(const std::string& dataset) const {
 }
 
 double H5Reader::read_scalar(const std::string& dataset) const {
+  std::lock_guard lock(hdf5_mutex());
   auto v = read_series(dataset);
   if (v.size() != 1) throw InputError(fmt::format("{}: '{}' is not a scalar", path_.string(), dataset));
   return v[0];
 }
 
 RealField H5Reader::read_field(const std::string& dataset) const {
+  std::lock_guard lock(hdf5_mutex());
   const auto dims = shape(dataset);
   if (dims.size() != 2 || dims[0] < 1 || dims[1] < 1)
     throw InputError(fmt::format("{}: '{}' is not a 2D field (rank {})", path_.string(), dataset, dims.size()));
@@ -272,6 +303,7 @@ RealField H5Reader::read_field(const std::string& dataset) const {
 }
 
 std::string H5Reader::string_attribute(const std::string& object, const std::string& name) const {
+  std::lock_guard lock(hdf5_mutex());
   Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.valid() || H5Aexists(obj, name.c_str()) <= 0)
     throw InputError(fmt::format("{}: no attribute '{}' on '{}'", path_.string(), name, object));
@@ -287,6 +319,7 @@ std::string H5Reader::string_attribute(const std::string& object, const std::str
 }
 
 double H5Reader::number_attribute(const std::string& object, const std::string& name) const {
+  std::lock_guard lock(hdf5_mutex());
   Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
   if (!obj.valid() || H5Aexists(obj, name.c_str()) <= 0)
     throw InputError(fmt::format("{}: no attribute '{}' on '{}'", path_.string(), name, object));

@@ -11,6 +11,7 @@ const ScaleRegistry& scale_registry() {
     register_molecular_table(r);
     register_molecular_ideal(r);
     register_nano_analytic(r);
+    register_macro_pin_on_disc(r);
     return r;
   }();
   return registry;

@@ -1,25 +1,45 @@
 #include "wearscale/coupling/case_runner.hpp"
 
+#include <omp.h>
+
+#include <atomic>
 #include <chrono>
 #include <ctime>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/config.hpp"
+#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/progress.hpp"
+#include "wearscale/core/units.hpp"
 #include "wearscale/coupling/pipeline.hpp"
+#include "wearscale/coupling/plots.hpp"
 
 namespace wearscale::coupling {
 
 nlohmann::json RunSummary::to_json() const {
   std::vector<std::string> names;
   for (const auto& f : files) names.push_back(f.string());
-  return {{"case", case_name}, {"output_dir", output_dir.string()}, {"scales", scales},
-          {"results", results}, {"files", names}, {"parameters", parameters}};
+  nlohmann::json j = {{"case", case_name}, {"output_dir", output_dir.string()}, {"scales", scales},
+                      {"files", names}, {"parameters", parameters}};
+  if (sweep_key.empty()) {
+    j["results"] = results;
+  } else {
+    nlohmann::json runs_json = nlohmann::json::array();
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      runs_json.push_back({{"value", sweep_values[k]}, {"output_dir", runs[k].output_dir.string()},
+                           {"results", runs[k].results}});
+    j["sweep"] = {{"key", sweep_key}, {"values", sweep_values}, {"runs", runs_json}};
+  }
+  return j;
 }
 
 namespace {
@@ -31,6 +51,13 @@ std::string utc_now() {
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
+}
+
+Config load(const RunOptions& options, const std::vector<std::string>& extra) {
+  Config cfg = Config::load(options.case_file);
+  for (const auto& o : options.overrides) cfg.override_value(o);
+  for (const auto& o : extra) cfg.override_value(o);
+  return cfg;
 }
 
 Pipeline build_pipeline(const Config& cfg) {
@@ -55,41 +82,55 @@ Pipeline build_pipeline(const Config& cfg) {
   return pipeline;
 }
 
-}  // namespace
-
-RunSummary run_case(const RunOptions& options) {
-  Config cfg = Config::load(options.case_file);
-  for (const auto& o : options.overrides) cfg.override_value(o);
-
+// A case checked and ready to run: every key read, every scale built.
+struct PreparedRun {
+  Config cfg;
+  Pipeline pipeline;
   RunSummary summary;
-  summary.case_name = cfg.string("case.name");
-  cfg.string_or("case.description", "");
-  const std::string case_dir = cfg.string_or("output.dir", "out/" + summary.case_name);
-  summary.output_dir = options.output_dir ? *options.output_dir : std::filesystem::path(case_dir);
-  // Every check on the case happens here, before anything is written.
-  Pipeline pipeline = build_pipeline(cfg);
-  cfg.reject_unknown_keys();
-  summary.scales = pipeline.ids();
-  summary.parameters = cfg.to_json();
+};
 
+PreparedRun prepare(const RunOptions& options, const std::vector<std::string>& extra,
+                    const std::optional<std::filesystem::path>& out) {
+  PreparedRun run{load(options, extra), {}, {}};
+  Config& cfg = run.cfg;
+  run.summary.case_name = cfg.string("case.name");
+  cfg.string_or("case.description", "");
+  const std::string case_dir = cfg.string_or("output.dir", "out/" + run.summary.case_name);
+  run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
+  cfg.mark_used("sweep");  // read by run_case
+  run.pipeline = build_pipeline(cfg);
+  cfg.reject_unknown_keys();
+  run.summary.scales = run.pipeline.ids();
+  run.summary.parameters = cfg.to_json();
+  return run;
+}
+
+void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
+  RunSummary& summary = run.summary;
   std::error_code ec;
   std::filesystem::create_directories(summary.output_dir, ec);
   if (ec)
     throw InputError(fmt::format("output folder {}: cannot create it: {}", summary.output_dir.string(), ec.message()));
-
-  log::info("case '{}': {} → {}", summary.case_name, fmt::join(summary.scales, " → "), summary.output_dir.string());
   H5Writer h5(summary.output_dir / "run.h5");
   h5.set_attribute("/", "case_file", options.case_file.string());
-  h5.set_attribute("/", "case_toml", cfg.to_toml());
+  h5.set_attribute("/", "case_toml", run.cfg.to_toml());
   h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
   h5.set_attribute("/", "created", utc_now());
 
-  RunContext context(summary.output_dir, h5);
+  RunContext context(summary.output_dir, h5, show_progress);
   Exchange exchange;
-  pipeline.run(exchange, context);
+  run.pipeline.run(exchange, context);
 
   nlohmann::json provenance = nlohmann::json::object();
-  for (const auto& key : exchange.keys()) provenance[key.to_string()] = exchange.provenance(key).to_json();
+  for (const auto& key : exchange.keys()) {
+    const auto p = exchange.provenance(key).to_json();
+    provenance[key.to_string()] = p;
+    // One group per quantity, named by it, so the producer of each is visible in the file.
+    const std::string group = "/exchange/" + to_string(key.what) + "/" + key.subject.substr(0, key.subject.find('/')) +
+                              (key.subject.find('/') == std::string::npos ? "" : "-" + key.subject.substr(key.subject.find('/') + 1));
+    h5.set_attribute(group, "producer", p["scale"].get<std::string>() + "/" + p["backend"].get<std::string>());
+    h5.set_attribute(group, "provenance", p.dump());
+  }
   h5.set_attribute("/", "provenance", provenance.dump(1));
   for (const auto& [name, r] : context.results().items()) {
     h5.write_scalar("/results/" + name, r["value"].get<double>(), r["unit"].get<std::string>());
@@ -99,9 +140,120 @@ RunSummary run_case(const RunOptions& options) {
   summary.files = context.files();
   h5.commit();
   summary.files.insert(summary.files.begin(), h5.final_path());
+  const auto friction = summary.output_dir / "friction.csv";
+  if (std::filesystem::exists(friction))
+    if (auto png = plot_friction_curves({{summary.case_name, friction}}, summary.output_dir / "friction.png",
+                                        summary.case_name))
+      summary.files.push_back(*png);
   write_file_atomically(summary.output_dir / "summary.json", summary.to_json().dump(2) + "\n");
   summary.files.push_back(summary.output_dir / "summary.json");
-  return summary;
+}
+
+std::string label_of(const std::string& key, const std::string& value) {
+  std::string leaf = key.substr(key.rfind('.') + 1) + "=" + value;
+  for (auto& c : leaf)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '=' || c == '.' || c == '-' || c == '+' || c == '_'))
+      c = '_';
+  return leaf;
+}
+
+RunSummary run_sweep(const RunOptions& options, Config& probe) {
+  const std::string key = probe.string("sweep.key");
+  const auto values = probe.values_as_text("sweep.values");
+  const std::string table_name = probe.string_or("sweep.table", "sweep.csv");
+  const bool parallel = probe.boolean_or("sweep.parallel", true);
+  RunSummary sweep;
+  sweep.case_name = probe.string("case.name");
+  sweep.output_dir = options.output_dir ? *options.output_dir
+                                        : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
+  sweep.sweep_key = key;
+  sweep.sweep_values = values;
+
+  // Every run is checked before any starts.
+  std::vector<PreparedRun> runs;
+  for (const auto& v : values) {
+    if (!probe.has(key))
+      throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
+    runs.push_back(prepare(options, {key + "=" + v}, sweep.output_dir / label_of(key, v)));
+  }
+  sweep.scales = runs.front().summary.scales;
+  sweep.parameters = runs.front().summary.parameters;
+  sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
+
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned workers = parallel ? std::min<unsigned>(cores, static_cast<unsigned>(runs.size())) : 1u;
+  log::info("sweep over {}: {} runs on {} worker(s) → {}", key, runs.size(), workers, sweep.output_dir.string());
+  std::vector<std::exception_ptr> errors(runs.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  std::mutex progress_mutex;
+  Progress progress("sweep", static_cast<double>(runs.size()), "runs");
+  auto work = [&] {
+    if (workers > 1) omp_set_num_threads(1);  // the cores are shared out among runs
+    for (std::size_t k = next++; k < runs.size(); k = next++) {
+      try {
+        execute(runs[k], options, false);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+      std::lock_guard lock(progress_mutex);
+      progress.update(static_cast<double>(++done));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  progress.finish();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+
+  // The sweep table: the swept value, then every headline figure of the runs.
+  std::vector<std::string> names;
+  for (const auto& r : runs)
+    for (const auto& [name, v] : r.summary.results.items())
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  std::vector<std::vector<double>> columns(names.size() + 1);
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    columns[0].push_back(units::parse_quantity(values[k]).value);
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const auto& res = runs[k].summary.results;
+      columns[c + 1].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+    }
+  }
+  std::vector<std::string> header{key};
+  header.insert(header.end(), names.begin(), names.end());
+  std::vector<std::span<const double>> spans(columns.begin(), columns.end());
+  const auto table = sweep.output_dir / table_name;
+  write_csv(table, header, spans, {fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)});
+  sweep.files.push_back(table);
+
+  std::vector<FrictionCurve> curves;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    sweep.runs.push_back(runs[k].summary);
+    const auto csv = runs[k].summary.output_dir / "friction.csv";
+    if (std::filesystem::exists(csv)) curves.push_back({label_of(key, values[k]), csv});
+  }
+  if (!curves.empty())
+    if (auto png = plot_friction_curves(curves, sweep.output_dir / "friction_curves.png", sweep.case_name))
+      sweep.files.push_back(*png);
+  if (key == "materials.layer.thickness" && std::find(names.begin(), names.end(), "mu_mean") != names.end())
+    if (auto png = plot_friction_vs_thickness(table, sweep.output_dir / "friction_vs_thickness.png"))
+      sweep.files.push_back(*png);
+  write_file_atomically(sweep.output_dir / "summary.json", sweep.to_json().dump(2) + "\n");
+  sweep.files.push_back(sweep.output_dir / "summary.json");
+  return sweep;
+}
+
+}  // namespace
+
+RunSummary run_case(const RunOptions& options) {
+  Config probe = load(options, {});
+  if (probe.has("sweep")) return run_sweep(options, probe);
+  PreparedRun run = prepare(options, {}, options.output_dir);
+  log::info("case '{}': {} → {}", run.summary.case_name, fmt::join(run.summary.scales, " → "),
+            run.summary.output_dir.string());
+  execute(run, options, true);
+  return run.summary;
 }
 
 }  // namespace wearscale::coupling

@@ -8,5 +8,6 @@ void register_macro_hertz(ScaleRegistry& registry);
 void register_molecular_table(ScaleRegistry& registry);
 void register_molecular_ideal(ScaleRegistry& registry);
 void register_nano_analytic(ScaleRegistry& registry);
+void register_macro_pin_on_disc(ScaleRegistry& registry);
 
 }  // namespace wearscale::coupling

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -116,7 +117,8 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
   std::fill(t, t + n, 0.0);
 
   bool conjugate = false;  // δ of Polonsky–Keer: false restarts steepest descent
-  double g_norm_old = 1.0, shift = 0.0;
+  double g_norm_old = 0.0;
+  double& shift = gap_shift_;  // the last mean gap: carried across solves (warm start)
   for (int it = 0; it < opt.max_iterations; ++it) {
     convolve(p_, u_, alpha);  // u = K (α p)
 
@@ -135,13 +137,22 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     }
     if (n_s == 0.0) throw NumericalError(kSolver, it, "contact area", "the contact vanished (no point with p > 0)");
     const double g_mean = shift + sum / n_s;
-    const double g_norm = std::max(0.0, sum2 - sum * sum / n_s);
+    double g_norm = sum2 - sum * sum / n_s;
+    if (!(g_norm > 64.0 * std::numeric_limits<double>::epsilon() * sum2)) {
+      // The shift was far from the mean: the sums cancelled. Recompute exactly.
+      g_norm = 0.0;
+#pragma omp parallel for simd reduction(+ : g_norm) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        const double d = p[k] > 0.0 ? u[k] - h[k] - g_mean : 0.0;
+        g_norm += d * d;
+      }
+    }
     shift = g_mean;
 
     // Pass 2: error; conjugate direction t = g + β (t_old − ⟨t_old⟩_S) on S, 0
     // elsewhere. Projecting the direction to zero mean on S keeps the load
     // constant along it, so the step needs only t·Kt (no mean of K t on S).
-    const double beta = conjugate ? g_norm / g_norm_old : 0.0;
+    const double beta = conjugate && g_norm_old > 0.0 ? g_norm / g_norm_old : 0.0;
     const double t_old_mean = t_old_sum / n_s;
     double err_num = 0.0, p_sum = 0.0, gt = 0.0, penetrating = 0.0;
 #pragma omp parallel for simd reduction(+ : err_num, p_sum, gt, penetrating) schedule(static)

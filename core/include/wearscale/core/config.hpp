@@ -60,6 +60,9 @@ class Config {
                         std::initializer_list<std::string_view> allowed) const;
   std::vector<double> numbers(std::string_view key, const Range& range = {},
                               units::Dimension dim = units::dimensionless) const;
+  /// The elements of an array as override text: numbers in full precision,
+  /// strings as written ("inf", "1 um"). For sweeps over any key.
+  std::vector<std::string> values_as_text(std::string_view key) const;
 
   /// Marks a key (and everything under it) as read without reading it.
   void mark_used(std::string_view key) const;
@@ -81,6 +84,8 @@ class Config {
 
   Config(const Config&);
   Config& operator=(const Config&);
+  Config(Config&&) noexcept;
+  Config& operator=(Config&&) noexcept;
   ~Config();
 
  private:

@@ -1,6 +1,8 @@
 #pragma once
 // Runs a case file: builds its scales from [scale.*], checks the case, orders
 // and runs the pipeline, writes run.h5 (+ sidecars) into the output folder.
+// A [sweep] runs the case once per value of one key (in parallel when cores
+// allow) and gathers the headline figures in one table.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,11 +25,15 @@ struct RunSummary {
   nlohmann::json results;           ///< headline figures {name: {value, unit, description}}
   nlohmann::json parameters;        ///< the resolved case
   std::vector<std::filesystem::path> files;
+  // A sweep: the key, and one summary per value (results above stay empty).
+  std::string sweep_key;
+  std::vector<std::string> sweep_values;
+  std::vector<RunSummary> runs;
   nlohmann::json to_json() const;
 };
 
-/// Throws InputError for a bad case (before any output is written) and
-/// NumericalError when a solver fails.
+/// Throws InputError for a bad case (before any output is written; for a
+/// sweep, before any of its runs starts) and NumericalError when a solver fails.
 RunSummary run_case(const RunOptions& options);
 
 }  // namespace wearscale::coupling

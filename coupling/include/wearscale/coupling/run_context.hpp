@@ -13,7 +13,8 @@ namespace wearscale::coupling {
 
 class RunContext {
  public:
-  RunContext(std::filesystem::path output_dir, H5Writer& h5) : dir_(std::move(output_dir)), h5_(h5) {}
+  RunContext(std::filesystem::path output_dir, H5Writer& h5, bool show_progress = true)
+      : dir_(std::move(output_dir)), h5_(h5), show_progress_(show_progress) {}
 
   const std::filesystem::path& output_dir() const { return dir_; }
   /// The run's HDF5 file (run.h5): scales write their series and fields here.
@@ -25,6 +26,8 @@ class RunContext {
   void add_file(const std::filesystem::path& file) { files_.push_back(file); }
 
   const nlohmann::json& results() const { return results_; }
+  /// False when the run is one of several running side by side (a sweep).
+  bool show_progress() const { return show_progress_; }
   const std::vector<std::filesystem::path>& files() const { return files_; }
 
  private:
@@ -32,6 +35,7 @@ class RunContext {
   H5Writer& h5_;
   nlohmann::json results_ = nlohmann::json::object();
   std::vector<std::filesystem::path> files_;
+  bool show_progress_ = true;
 };
 
 }  // namespace wearscale::coupling

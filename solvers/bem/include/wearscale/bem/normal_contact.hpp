@@ -70,6 +70,7 @@ class NormalContact {
   std::vector<double> kernel_;  // 2/(E* q)/N on the half spectrum; 0 at q = 0
   std::shared_ptr<const FFTPlan> plan_;
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
+  double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
   std::vector<double> history_;
 };
 

@@ -1,0 +1,30 @@
+#pragma once
+// PNG plots of the headline curves with gnuplot, when it is installed
+// (Debian: gnuplot-nox); otherwise a notice and no plot.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wearscale::coupling {
+
+/// Whether `gnuplot` is on the PATH (checked once).
+bool plotting_available();
+
+/// One curve set per run: label and its friction.csv (distance, friction, pin and disc wear).
+struct FrictionCurve {
+  std::string label;
+  std::filesystem::path csv;
+};
+
+/// μ(s) and wear volumes V(s) of one or several runs, in one PNG (atomically written).
+std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
+                                                          const std::filesystem::path& png, const std::string& title);
+
+/// Time-averaged and final μ against the oxide thickness (µm) from a sweep
+/// table, with the experimental fit μ ≈ 0.337 + 0.070 h_layer[µm] (9.1) and
+/// bulk (inf) drawn at 6 µm as in Fig. 9.25.
+std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
+                                                                const std::filesystem::path& png);
+
+}  // namespace wearscale::coupling

@@ -1,0 +1,79 @@
+#include "wearscale/coupling/plots.hpp"
+
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/log.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+// Runs a gnuplot script that writes `png`; the PNG appears only if gnuplot succeeded.
+std::optional<std::filesystem::path> render(const std::string& script, const std::filesystem::path& png) {
+  if (!plotting_available()) return std::nullopt;
+  const auto partial = partial_path(png);
+  const auto script_file = partial_path(png.parent_path() / (png.stem().string() + ".gp"));
+  write_file_atomically(script_file,
+                        fmt::format("set terminal pngcairo size 1000,700 font 'sans,11'\nset output '{}'\n{}",
+                                    partial.string(), script));
+  const int status = std::system(fmt::format("gnuplot '{}' 2>/dev/null", script_file.string()).c_str());
+  std::filesystem::remove(script_file);
+  if (status != 0 || !std::filesystem::exists(partial)) {
+    std::error_code ec;
+    std::filesystem::remove(partial, ec);
+    log::warn("gnuplot could not draw {}", png.string());
+    return std::nullopt;
+  }
+  commit_file(partial, png);
+  return png;
+}
+}  // namespace
+
+bool plotting_available() {
+  static const bool available = [] {
+    const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+    if (!found) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
+    return found;
+  }();
+  return available;
+}
+
+std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
+                                                          const std::filesystem::path& png, const std::string& title) {
+  std::string mu, wear;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const auto& c = curves[k];
+    mu += fmt::format("{}'{}' using 1:2 with lines lw 1.5 title '{}'", k ? ", " : "", c.csv.string(), c.label);
+    wear += fmt::format("{}'{}' using 1:($3*1e18) with lines lw 1.5 dt 2 title 'pin {}', '' using 1:($4*1e18) with "
+                        "lines lw 1.5 title 'disc {}'",
+                        k ? ", " : "", c.csv.string(), c.label, c.label);
+  }
+  const std::string script = fmt::format(
+      "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
+      "set multiplot layout 2,1 title '{}'\n"
+      "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right\n"
+      "plot {}\n"
+      "set ylabel 'worn volume [µm³]'\nset xlabel 'sliding distance s [m]'\nset autoscale y\n"
+      "plot {}\nunset multiplot\n",
+      title, mu, wear);
+  return render(script, png);
+}
+
+std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
+                                                                const std::filesystem::path& png) {
+  // Column 1: thickness [m] (inf for bulk); the table names its μ columns.
+  const std::string script = fmt::format(
+      "set datafile separator ','\nset datafile commentschars '#'\n"
+      "h(x) = (x > 1) ? 6 : x*1e6   # bulk (inf) drawn at 6 µm, as in Fig. 9.25\n"
+      "set xlabel 'oxide layer thickness h_{{layer}} [µm] (bulk at 6)'\nset ylabel 'friction coefficient μ'\n"
+      "set xrange [-0.3:6.5]\nset yrange [0:1]\nset grid\nset key top left\n"
+      "plot '{0}' using (h($1)):(column('mu_mean')) with linespoints pt 7 lw 2 title 'model: time-averaged μ', \\\n"
+      "     '{0}' using (h($1)):(column('mu_final')) with linespoints pt 5 lw 2 title 'model: final μ', \\\n"
+      "     [0:6] 0.337 + 0.070*x with lines dt 2 lw 2 title 'experiments: μ ≈ 0.337 + 0.070 h (9.1)'\n",
+      table_csv.string());
+  return render(script, png);
+}
+
+}  // namespace wearscale::coupling
