@@ -37,13 +37,29 @@ TEST_P(CaseRegression, ReproducesItsGoldFigures) {
   const auto work = fs::temp_directory_path() / ("wearscale_case_" + file.stem().string() + "_" + std::to_string(::getpid()));
   const auto r = run_cli(args, work);
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto results = nlohmann::json::parse(r.out)["results"];
-  for (const auto& [name, expected] : gold["results"].items()) {
-    ASSERT_TRUE(results.contains(name)) << name;
-    const double got = results[name]["value"].get<double>();
-    const double want = expected["value"].get<double>();
-    const double tol = expected.value("rtol", 0.0) * std::abs(want) + expected.value("atol", 0.0);
-    EXPECT_NEAR(got, want, tol) << file.filename() << ": " << name;
+  const auto out = nlohmann::json::parse(r.out);
+  auto compare = [&](const nlohmann::json& results, const nlohmann::json& expected_results, const std::string& where) {
+    for (const auto& [name, expected] : expected_results.items()) {
+      ASSERT_TRUE(results.contains(name)) << where << ": " << name;
+      const double got = results[name]["value"].get<double>();
+      const double want = expected["value"].get<double>();
+      const double tol = expected.value("rtol", 0.0) * std::abs(want) + expected.value("atol", 0.0);
+      EXPECT_NEAR(got, want, tol) << where << ": " << name;
+    }
+  };
+  if (gold.contains("runs")) {  // a sweep: figures per swept value
+    ASSERT_TRUE(out.contains("sweep")) << "the case should be a sweep";
+    for (const auto& [value, expected] : gold["runs"].items()) {
+      bool found = false;
+      for (const auto& run : out["sweep"]["runs"])
+        if (run["value"] == value) {
+          compare(run["results"], expected, file.filename().string() + " at " + value);
+          found = true;
+        }
+      EXPECT_TRUE(found) << "no run for swept value " << value;
+    }
+  } else {
+    compare(out["results"], gold["results"], file.filename().string());
   }
   fs::remove_all(work);
 }
