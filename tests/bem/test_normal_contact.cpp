@@ -198,3 +198,15 @@ TEST(NormalContact, NonConvergenceIsANumericalErrorNamingTheSolver) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("last errors"));
   }
 }
+
+TEST(NormalContact, GrowsFromAOnePointContactWhenTheLoadRises) {
+  // A tiny load rests on the summit point alone; the warm-started solve at a
+  // larger load must bring the neighbours in (its first direction is zero).
+  const Grid2D g = Grid2D::square(32, 1.0);
+  NormalContact contact(paraboloid(g, 0.5), 1.0);
+  const auto small = contact.solve_mean_pressure(1e-9);
+  EXPECT_EQ(small.contact_fraction, 1.0 / g.size());
+  const auto large = contact.solve_mean_pressure(1e-3);
+  EXPECT_GT(large.contact_fraction, 5.0 / g.size());
+  EXPECT_LT(large.error, 1e-12);
+}

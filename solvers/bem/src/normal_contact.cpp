@@ -36,6 +36,13 @@ NormalContact::NormalContact(const RealField& surface, double e_star)
       const double q = std::sqrt(qx * qx + qy * qy);
       kernel_[i * g.spectral_ny() + j] = q > 0.0 ? s / q : 0.0;
     }
+  // Displacement of a cell under a unit pressure on itself: Σ_q K(q) over the full spectrum.
+  self_compliance_ = 0.0;
+  const std::size_t cols = g.spectral_ny(), last = g.ny % 2 == 0 ? cols - 1 : cols;
+  for (std::size_t m = 0; m < kernel_.size(); ++m) {
+    const std::size_t j = m % cols;
+    self_compliance_ += (j == 0 || j == last ? 1.0 : 2.0) * kernel_[m];
+  }
   set_surface(surface);
 }
 
@@ -179,8 +186,10 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     // Step length τ = Σ g t / Σ t (K t), the denominator by Parseval from the
     // spectrum of t: one forward FFT instead of a full convolution.
     const double tkt = quadratic_form(t_);
-    const double tau = gt / tkt;
-    if (!std::isfinite(tau) || !(tkt > 0.0))
+    // No descent direction (a contact of one point, or a flat gap on S) while
+    // points outside still penetrate: admit them with a cell's own stiffness.
+    const double tau = (tkt == 0.0 && gt == 0.0) ? 1.0 / self_compliance_ : gt / tkt;
+    if (!std::isfinite(tau) || !(tkt > 0.0 || gt == 0.0))
       throw NumericalError(kSolver, it, "step length", fmt::format("τ = {} (t·Kt = {})", tau, tkt));
 
     // Pass 3: descend, project on p ≥ 0, re-admit penetrating points, sum for the mean.

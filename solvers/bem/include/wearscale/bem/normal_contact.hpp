@@ -71,6 +71,7 @@ class NormalContact {
   std::shared_ptr<const FFTPlan> plan_;
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
+  double self_compliance_ = 1.0;  // u at a cell per unit pressure on that cell [m/Pa]
   std::vector<double> history_;
 };
 

@@ -1,0 +1,110 @@
+// The multiscale pipeline through `wearscale run`: every exchanged quantity
+// names its producer in run.h5, swapping a backend changes the provenance
+// and nothing else of the layout, and a broken case is refused with status 2.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_pipeline_cli_" + std::to_string(::getpid()));
+const std::string scale_link = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/scale_link.toml'";
+const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
+const std::string short_run = " --set scale.macro.distance=0.01 --set scale.macro.grid=64";
+}  // namespace
+
+TEST(PipelineCli, EveryExchangedQuantityNamesItsProducer) {
+  ASSERT_EQ(run_cli("run " + pin_on_disc + short_run + " --out pod", work).status, 0);
+  wearscale::H5Reader h5(work / "pod" / "run.h5");
+  EXPECT_EQ(h5.string_attribute("/exchange/ShearStrength/SiO2", "producer"), "molecular/table");
+  EXPECT_EQ(h5.string_attribute("/exchange/ShearStrength/Si", "producer"), "molecular/table");
+  EXPECT_EQ(h5.string_attribute("/exchange/InterfaceLaw/SiO2-Si", "producer"), "nano/analytic");
+  EXPECT_EQ(h5.string_attribute("/exchange/InterfaceLaw/SiO2-SiO2", "producer"), "nano/analytic");
+  EXPECT_EQ(h5.string_attribute("/exchange/MacroResult/pin-disc", "producer"), "macro/bem-pin-on-disc");
+  EXPECT_THAT(h5.string_attribute("/", "case_toml"), HasSubstr("bem-pin-on-disc"));
+  EXPECT_TRUE(h5.exists("/macro/series/friction"));
+  EXPECT_TRUE(h5.exists("/macro/final/pin"));
+}
+
+TEST(PipelineCli, SwappingTheMolecularBackendChangesOnlyTheProvenance) {
+  ASSERT_EQ(run_cli("run " + scale_link + " --out table", work).status, 0);
+  const auto ideal_case = work / "ideal.toml";
+  {
+    std::ifstream in(std::string(WEARSCALE_SOURCE_DIR) + "/cases/scale_link.toml");
+    std::ofstream out(ideal_case);
+    std::string line;
+    while (std::getline(in, line))
+      if (line.rfind("data =", 0) != 0) out << line << '\n';  // "data" belongs to the table backend
+  }
+  ASSERT_EQ(run_cli("run '" + ideal_case.string() + "' --set scale.molecular.backend=ideal --out ideal", work).status, 0);
+  wearscale::H5Reader a(work / "table" / "run.h5"), b(work / "ideal" / "run.h5");
+  EXPECT_EQ(a.string_attribute("/exchange/ShearStrength/Si", "producer"), "molecular/table");
+  EXPECT_EQ(b.string_attribute("/exchange/ShearStrength/Si", "producer"), "molecular/ideal");
+  for (const char* path : {"/exchange/InterfaceLaw/SiO2-Si", "/results/mu0_SiO2-Si", "/results/p_crit_SiO2-SiO2"}) {
+    EXPECT_TRUE(a.exists(path)) << path;
+    EXPECT_TRUE(b.exists(path)) << path;
+  }
+  EXPECT_NE(a.read_scalar("/results/mu0_SiO2-Si"), b.read_scalar("/results/mu0_SiO2-Si"));
+}
+
+TEST(PipelineCli, RunJsonGivesTheHeadlineFigures) {
+  const auto r = run_cli("run " + pin_on_disc + short_run + " --out pod-json --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* k : {"mu_mean", "mu_final", "pin_wear", "disc_wear", "contact_solves"})
+    EXPECT_TRUE(j["results"].contains(k)) << k;
+  EXPECT_NEAR(j["results"]["mu_mean"]["value"].get<double>(), 0.837, 0.005);  // still on the oxide at 1 cm
+}
+
+struct BadCase {
+  std::string name, args, expected;
+};
+void PrintTo(const BadCase& b, std::ostream* os) { *os << b.name; }
+class PipelineCliBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(PipelineCliBadInput, ExitsWithStatus2SayingWhatToChange) {
+  const auto& p = GetParam();
+  const auto out = work / ("bad-" + p.name);
+  const auto r = run_cli("run " + pin_on_disc + short_run + " --out '" + out.string() + "' " + p.args, work);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(p.expected));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, PipelineCliBadInput,
+    ::testing::Values(
+        BadCase{"negative_thickness", "--set materials.layer.thickness=-1e-6", "materials.layer.thickness"},
+        BadCase{"unknown_backend", "--set scale.nano.backend=quantum", "unknown backend; allowed: analytic"},
+        BadCase{"missing_table", "--set scale.molecular.tables.Si=/nonexistent/si.csv", "scale.molecular.tables.Si"},
+        BadCase{"no_provider", "--set scale.nano.backend=analytic --set scale.molecular.backend=table "
+                               "--set materials.define.Cu.young=1e11 --set materials.define.Cu.poisson=0.3 "
+                               "--set materials.define.Cu.density=8900 --set materials.define.Cu.surface_energy=1.7 "
+                               "--set materials.define.Cu.tensile_strength=1e9 --set materials.define.Cu.shear_strength=5e8 "
+                               "--set materials.disc=Cu",
+                "no shipped 'thesis' strength table for material 'Cu'"},
+        BadCase{"unknown_material", "--set materials.disc=Unobtainium", "materials.disc"},
+        BadCase{"bad_sweep_key", "--set sweep.key=scale.macro.nothing --set 'sweep.values=[1]'", "sweep.key"}),
+    [](const auto& p) { return p.param.name; });
+
+TEST(PipelineCli, AScaleWhoseInputNobodyProvidesIsRefused) {
+  // Without a molecular scale, the junction model has no strengths to work on.
+  const auto no_molecular = work / "no_molecular.toml";
+  {
+    std::ofstream out(no_molecular);
+    out << "[case]\nname = \"x\"\n[materials]\npin = \"SiO2\"\ndisc = \"Si\"\n[scale.nano]\nbackend = \"analytic\"\n";
+  }
+  const auto r = run_cli("run '" + no_molecular.string() + "' --out nm", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("nano/analytic needs ShearStrength(SiO2), but no scale of this case provides it"));
+}
