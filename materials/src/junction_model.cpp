@@ -1,21 +1,17 @@
 #include "wearscale/materials/junction_model.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/roots.hpp"
 
 namespace wearscale::materials {
 
 namespace {
 constexpr const char* kModel = "materials/junction-model";
-
-double excess(double p, void* law) { return static_cast<const StrengthLaw*>(law)->sigma_max(p) - p; }
 
 void check_pressure(double p_n, double p_crit) {
   if (!(p_n >= 0.0) || !std::isfinite(p_n))
@@ -33,20 +29,7 @@ double critical_pressure(const StrengthLaw& law) {
     if (f_hi > 0.0) continue;
     if (p[r] == p[r - 1]) return p[r];  // σ_max drops below p across a jump
     // σ_max − p changes sign on [p[r−1], p[r]]: bracketed root (7.5).
-    gsl_function f{&excess, const_cast<StrengthLaw*>(&law)};
-    gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    gsl_error_handler_t* old = gsl_set_error_handler_off();
-    gsl_root_fsolver_set(solver, &f, p[r - 1], p[r]);
-    int status = GSL_CONTINUE;
-    int it = 0;
-    for (; status == GSL_CONTINUE && it < 200; ++it) {
-      gsl_root_fsolver_iterate(solver);
-      status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 0.0, 1e-13);
-    }
-    const double root = gsl_root_fsolver_root(solver);
-    gsl_root_fsolver_free(solver);
-    gsl_set_error_handler(old);
-    if (status != GSL_SUCCESS) throw NumericalError(kModel, it, "critical pressure", "Brent search did not converge");
+    const double root = find_root([&](double x) { return law.sigma_max(x) - x; }, p[r - 1], p[r], 0.0, kModel);
     return root;
   }
   throw NumericalError(kModel, 0, "critical pressure",

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "input_error_of.hpp"
+
 #include <cmath>
 
 #include <fstream>
@@ -30,14 +32,6 @@ loads = [0.5, 1, "2 N"]
 flag = true
 )";
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
 }  // namespace
 
 TEST(Config, TypedGettersReadValuesInSI) {
@@ -58,12 +52,12 @@ TEST(Config, OptionalGettersFallBackOnlyWhenTheKeyIsAbsent) {
   const auto c = Config::from_string(kCase, "demo.toml");
   EXPECT_EQ(c.integer_or("scale.macro.steps", 10, Range::at_least(1)), 10);
   EXPECT_EQ(c.integer_or("scale.macro.grid", 10, Range::at_least(1)), 128);
-  EXPECT_THAT(message_of([&] { c.integer_or("scale.macro.grid", 10, Range::at_most(64)); }), HasSubstr("out of range"));
+  EXPECT_THAT(input_error_of([&] { c.integer_or("scale.macro.grid", 10, Range::at_most(64)); }), HasSubstr("out of range"));
 }
 
 TEST(Config, OutOfRangeNamesFileLineKeyValueAndRange) {
   const auto c = Config::from_string(kCase, "demo.toml");
-  const auto msg = message_of([&] { c.integer("scale.macro.grid", Range::closed(2, 64)); });
+  const auto msg = input_error_of([&] { c.integer("scale.macro.grid", Range::closed(2, 64)); });
   EXPECT_THAT(msg, HasSubstr("demo.toml:7"));
   EXPECT_THAT(msg, HasSubstr("scale.macro.grid"));
   EXPECT_THAT(msg, HasSubstr("128"));
@@ -72,28 +66,28 @@ TEST(Config, OutOfRangeNamesFileLineKeyValueAndRange) {
 
 TEST(Config, WrongTypeIsReportedWithTheTypeFound) {
   const auto c = Config::from_string(kCase, "demo.toml");
-  EXPECT_THAT(message_of([&] { c.integer("scale.macro.size"); }), HasSubstr("expected an integer, got a float"));
-  EXPECT_THAT(message_of([&] { c.number("scale.macro.backend"); }), HasSubstr("cannot read a quantity"));
-  EXPECT_THAT(message_of([&] { c.string("scale.macro.grid"); }), HasSubstr("expected a string, got an integer"));
-  EXPECT_THAT(message_of([&] { c.boolean("scale.macro.grid"); }), HasSubstr("scale.macro.grid"));
+  EXPECT_THAT(input_error_of([&] { c.integer("scale.macro.size"); }), HasSubstr("expected an integer, got a float"));
+  EXPECT_THAT(input_error_of([&] { c.number("scale.macro.backend"); }), HasSubstr("cannot read a quantity"));
+  EXPECT_THAT(input_error_of([&] { c.string("scale.macro.grid"); }), HasSubstr("expected a string, got an integer"));
+  EXPECT_THAT(input_error_of([&] { c.boolean("scale.macro.grid"); }), HasSubstr("scale.macro.grid"));
 }
 
 TEST(Config, UnitOfTheWrongDimensionIsRejected) {
   const auto c = Config::from_string(kCase, "demo.toml");
-  const auto msg = message_of([&] { c.number("scale.macro.velocity", Range::positive(), units::pressure); });
+  const auto msg = input_error_of([&] { c.number("scale.macro.velocity", Range::positive(), units::pressure); });
   EXPECT_THAT(msg, HasSubstr("has unit of m/s, expected Pa"));
 }
 
 TEST(Config, MissingRequiredKeyIsNamed) {
   const auto c = Config::from_string(kCase, "demo.toml");
-  EXPECT_THAT(message_of([&] { c.number("scale.macro.radius", Range::positive(), units::length); }),
+  EXPECT_THAT(input_error_of([&] { c.number("scale.macro.radius", Range::positive(), units::length); }),
               HasSubstr("key 'scale.macro.radius': missing required number"));
 }
 
 TEST(Config, ChoiceListsTheAllowedValues) {
   const auto c = Config::from_string(kCase, "demo.toml");
   EXPECT_EQ(c.choice("scale.macro.backend", {"hertz", "bem"}), "hertz");
-  EXPECT_THAT(message_of([&] { c.choice("scale.macro.backend", {"bem", "dem"}); }), HasSubstr("\"bem\", \"dem\""));
+  EXPECT_THAT(input_error_of([&] { c.choice("scale.macro.backend", {"bem", "dem"}); }), HasSubstr("\"bem\", \"dem\""));
 }
 
 TEST(Config, NaNIsNeverInRangeAndInfinityOnlyWhenAllowed) {
@@ -116,7 +110,7 @@ TEST(Config, UnknownKeysAreErrorsWithASuggestion) {
   m.mark_used("layer");
   m.mark_used("loads");
   m.mark_used("flag");
-  const auto msg = message_of([&] { c.reject_unknown_keys(); });
+  const auto msg = input_error_of([&] { c.reject_unknown_keys(); });
   EXPECT_THAT(msg, HasSubstr("scale.macro.gird"));
   EXPECT_THAT(msg, HasSubstr("did you mean 'grid'?"));
 }
@@ -129,13 +123,13 @@ TEST(Config, AllKeysReadMeansNoError) {
 }
 
 TEST(Config, SyntaxErrorsGiveFileAndLine) {
-  const auto msg = message_of([] { Config::from_string("[case]\nname = \"x\"\ngrid = = 3\n", "bad.toml"); });
+  const auto msg = input_error_of([] { Config::from_string("[case]\nname = \"x\"\ngrid = = 3\n", "bad.toml"); });
   EXPECT_THAT(msg, HasSubstr("bad.toml:3"));
   EXPECT_THAT(msg, HasSubstr("TOML syntax error"));
 }
 
 TEST(Config, MissingFileIsBadInput) {
-  EXPECT_THAT(message_of([] { Config::load("/nonexistent/case.toml"); }), HasSubstr("/nonexistent/case.toml: no such case file"));
+  EXPECT_THAT(input_error_of([] { Config::load("/nonexistent/case.toml"); }), HasSubstr("/nonexistent/case.toml: no such case file"));
 }
 
 TEST(Config, LoadReadsAFile) {
@@ -157,14 +151,14 @@ TEST(Config, OverridesReplaceCreateAndAreTyped) {
   EXPECT_DOUBLE_EQ(c.number("scale.macro.velocity", Range::positive(), units::velocity), 0.01);
   EXPECT_EQ(c.string("scale.nano.backend"), "analytic");
   EXPECT_TRUE(std::isinf(c.number("materials.layer.thickness", Range::non_negative().or_infinite())));
-  EXPECT_THAT(message_of([&] { c.integer("scale.macro.grid", Range::at_least(128)); }), HasSubstr("--set"));
+  EXPECT_THAT(input_error_of([&] { c.integer("scale.macro.grid", Range::at_least(128)); }), HasSubstr("--set"));
 }
 
 TEST(Config, MalformedOverridesAreBadInput) {
   auto c = Config::from_string(kCase, "demo.toml");
-  EXPECT_THAT(message_of([&] { c.override_value("scale.macro.grid"); }), HasSubstr("expected KEY=VALUE"));
-  EXPECT_THAT(message_of([&] { c.override_value("scale.macro.grid.sub=1"); }), HasSubstr("not a table"));
-  EXPECT_THAT(message_of([&] { c.override_value("scale..grid=1"); }), HasSubstr("empty component"));
+  EXPECT_THAT(input_error_of([&] { c.override_value("scale.macro.grid"); }), HasSubstr("expected KEY=VALUE"));
+  EXPECT_THAT(input_error_of([&] { c.override_value("scale.macro.grid.sub=1"); }), HasSubstr("not a table"));
+  EXPECT_THAT(input_error_of([&] { c.override_value("scale..grid=1"); }), HasSubstr("empty component"));
 }
 
 TEST(Config, ResolvedCaseRoundTripsToJsonAndToml) {

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "input_error_of.hpp"
+
 #include "wearscale/core/errors.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 
@@ -32,14 +34,6 @@ struct FakeScale : Scale {
   std::string id_;
 };
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
 
 struct PipelineTest : ::testing::Test {
   std::vector<std::string> ran;
@@ -70,7 +64,7 @@ TEST_F(PipelineTest, RunsProvidersBeforeConsumersWhateverTheDeclarationOrder) {
 TEST_F(PipelineTest, AMissingProviderNamesTheConsumerAndTheQuantity) {
   Pipeline p;
   p.add("macro/bem-pin-on-disc", scale({law}, {macro}, "macro"));
-  const auto msg = message_of([&] { p.order(); });
+  const auto msg = input_error_of([&] { p.order(); });
   EXPECT_THAT(msg, HasSubstr("macro/bem-pin-on-disc needs InterfaceLaw(SiO2/Si)"));
 }
 
@@ -78,14 +72,14 @@ TEST_F(PipelineTest, TwoProvidersOfOneQuantityAreRefused) {
   Pipeline p;
   p.add("nano/analytic", scale({}, {law}, "a"));
   p.add("nano/dem", scale({}, {law}, "b"));
-  EXPECT_THAT(message_of([&] { p.order(); }), HasSubstr("provided by two scales, nano/analytic and nano/dem"));
+  EXPECT_THAT(input_error_of([&] { p.order(); }), HasSubstr("provided by two scales, nano/analytic and nano/dem"));
 }
 
 TEST_F(PipelineTest, CyclesAreRefused) {
   Pipeline p;
   p.add("a/x", scale({law}, {strength_si}, "a"));
   p.add("b/x", scale({strength_si}, {law}, "b"));
-  EXPECT_THAT(message_of([&] { p.order(); }), HasSubstr("cycle"));
+  EXPECT_THAT(input_error_of([&] { p.order(); }), HasSubstr("cycle"));
 }
 
 TEST(Exchange, TypedAccessAndProvenance) {

@@ -1,8 +1,5 @@
 #include "wearscale/bem/normal_contact.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/roots.hpp"
 
 namespace wearscale::bem {
 
@@ -232,18 +230,6 @@ ContactResult NormalContact::finish(int iterations, double error, double g_mean)
   return r;
 }
 
-namespace {
-struct RootData {
-  NormalContact* contact;
-  const ContactOptions* options;
-  double target;
-};
-double interference_residual(double p0, void* params) {
-  auto* d = static_cast<RootData*>(params);
-  return d->contact->solve_mean_pressure(p0, *d->options).interference - d->target;
-}
-}  // namespace
-
 ContactResult NormalContact::solve_interference(double delta, const ContactOptions& opt) {
   if (!std::isfinite(delta)) throw InputError("normal contact: the interference must be finite");
   if (delta <= 0.0) return solve_mean_pressure(0.0, opt);
@@ -255,21 +241,8 @@ ContactResult NormalContact::solve_interference(double delta, const ContactOptio
     hi *= 4.0;
     if (k > 200) throw NumericalError(kSolver, k, "interference", "cannot bracket the imposed interference");
   }
-  RootData data{this, &opt, delta};
-  gsl_function f{&interference_residual, &data};
-  gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
-  gsl_root_fsolver_set(s, &f, lo, hi);
-  int status = GSL_CONTINUE;
-  int iter = 0;
-  for (; status == GSL_CONTINUE && iter < 200; ++iter) {
-    gsl_root_fsolver_iterate(s);
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-12);
-  }
-  const double p0 = gsl_root_fsolver_root(s);
-  gsl_root_fsolver_free(s);
-  gsl_set_error_handler(old);
-  if (status != GSL_SUCCESS) throw NumericalError(kSolver, iter, "interference", "Brent search did not converge");
+  const double p0 = find_root([&](double p) { return solve_mean_pressure(p, opt).interference - delta; }, lo, hi,
+                              1e-12 * hi, kSolver);
   return solve_mean_pressure(p0, opt);
 }
 
