@@ -80,6 +80,12 @@ if(NOT TARGET CLI11::CLI11)
   wearscale_missing("CLI11 (command-line parsing)" "libcli11-dev")
 endif()
 
+# --- OpenSSL (SHA-256 keys of cached LAMMPS results) ------------------------
+find_package(OpenSSL QUIET COMPONENTS Crypto)
+if(NOT TARGET OpenSSL::Crypto)
+  wearscale_missing("OpenSSL (libcrypto)" "libssl-dev")
+endif()
+
 # --- OpenMP -------------------------------------------------------------------
 find_package(OpenMP QUIET COMPONENTS CXX)
 if(NOT OpenMP_CXX_FOUND)

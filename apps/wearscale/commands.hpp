@@ -14,5 +14,6 @@ Command add_backends(CLI::App& app);
 Command add_version(CLI::App& app);
 Command add_surface(CLI::App& app);
 Command add_contact(CLI::App& app);
+Command add_strength_table(CLI::App& app);
 
 }  // namespace wearscale::app

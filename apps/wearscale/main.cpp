@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   add(app::add_version);
   add(app::add_surface);
   add(app::add_contact);
+  add(app::add_strength_table);
 
   try {
     app.parse(argc, argv);

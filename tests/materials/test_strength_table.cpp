@@ -45,6 +45,15 @@ TEST(StrengthTable, ShippedThesisTablesLoadWithTheirSource) {
   EXPECT_NEAR(sio2.sigma_dyn.front(), 6.3e9, 1e-3);
 }
 
+TEST(StrengthTable, ShippedLammpsTablesLoadWithTheirRunSettings) {
+  for (const char* m : {"Si", "SiO2"}) {
+    const auto t = shipped_table("lammps", m);
+    EXPECT_EQ(t.material, m);
+    EXPECT_FALSE(t.info("lammps_version").empty()) << m;
+    EXPECT_FALSE(t.info("potential").empty()) << m;
+  }
+}
+
 TEST(StrengthTable, NonMonotonePressureIsRefusedWithTheLine) {
   const auto p = write("nonmonotone.csv", kHeader + "0,1,1\n10,1,1\n5,1,1\n");
   EXPECT_THAT(error_of(p), HasSubstr("nonmonotone.csv:5"));

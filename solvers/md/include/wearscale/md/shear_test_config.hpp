@@ -1,0 +1,35 @@
+#pragma once
+// The MD shear test as case keys: a [md] table (or --set md.KEY=VALUE),
+// SI numbers or unit strings, on top of a preset.
+//
+//   [md]
+//   material = "Si"                 # or "SiO2"
+//   preset = "smoke"                # or "thesis"; the keys below override it
+//   pressures = ["0 GPa", "10 GPa"] # or Pa numbers: [0, 1e10]
+//   lateral_size = "2.2 nm"         # box x = y, rounded to whole lattice cells
+//   height = "2.2 nm"
+//   shear_velocity = "100 m/s"
+//   temperature = "300 K"
+//   timestep = "0.001 ps"
+//   strain_end = 0.6
+//   window = [0.4, 0.6]             # σ_dyn = mean shear stress over this strain range
+//   seed = 1
+//   potential = "SiO.1990.vashishta"  cutoff = "8 Å"
+//   lmp = "/usr/bin/lmp"            ranks = 2
+//   cache = true                    cache_dir = "~/.cache/wearscale/lammps"
+//   [md.quench]                     # SiO2: temperatures = [5000, …, 300], hold_time,
+//                                   # cooling_rate = "166 K/ps", final_cooling_rate, timestep
+#include "wearscale/core/config.hpp"
+#include "wearscale/md/shear_test.hpp"
+
+namespace wearscale::md {
+
+/// Reads every key of the `md` section of `config` (preset first, then each
+/// key that is present overrides it) and validates the result; InputError
+/// naming the key for any bad value.
+ShearTestSpec read_shear_test_spec(const Config& config);
+/// The same keys read from `section` (e.g. [scale.molecular]) for a material
+/// given apart ("Si" or "SiO2").
+ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material);
+
+}  // namespace wearscale::md

@@ -1,0 +1,350 @@
+#include "wearscale/md/shear_study.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/core/progress.hpp"
+#include "wearscale/core/units.hpp"
+#include "wearscale/core/version.hpp"
+#include "wearscale/md/lammps_runner.hpp"
+#include "wearscale/md/potential_file.hpp"
+#include "wearscale/md/result_cache.hpp"
+#include "wearscale/md/sha256.hpp"
+
+namespace wearscale::md {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kCostFile = "cost.txt";
+
+std::string utc_date() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+  return buf;
+}
+
+// "key value" lines (the deck's sample.txt, cost.txt).
+std::map<std::string, std::string> read_key_values(const fs::path& file) {
+  std::map<std::string, std::string> kv;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string k, v;
+    if (ss >> k) {
+      std::getline(ss >> std::ws, v);
+      kv[k] = v;
+    }
+  }
+  return kv;
+}
+
+double to_number(const std::map<std::string, std::string>& kv, const std::string& key, const fs::path& file) {
+  const auto it = kv.find(key);
+  char* end = nullptr;
+  const double v = it == kv.end() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(it->second.c_str(), &end);
+  if (it == kv.end() || end == it->second.c_str() || !std::isfinite(v))
+    throw NumericalError("LAMMPS", 0, key, fmt::format("{}: missing or not a number", file.string()));
+  return v;
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw InputError(fmt::format("cannot write {}", file.string()));
+}
+
+// The step number of the last complete row/line of a growing file (its
+// first token), read from its tail; -1 if none yet.
+long last_step(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in) return -1;
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = std::max<std::streamoff>(0, size - 4096);
+  in.seekg(from);
+  std::string tail(static_cast<std::size_t>(size - from), '\0');
+  in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+  const auto end = tail.rfind('\n');
+  if (end == std::string::npos) return -1;
+  std::stringstream ss(tail.substr(0, end));
+  std::string line;
+  long step = -1;
+  while (std::getline(ss, line)) {
+    char* e = nullptr;
+    const long s = std::strtol(line.c_str(), &e, 10);
+    if (e != line.c_str() && (*e == ' ' || *e == '\0')) step = s;
+  }
+  return step;
+}
+
+struct Context {
+  const ShearTestSpec& spec;
+  fs::path lmp;
+  std::string version;
+  std::string potential_name, potential_text;
+  ResultCache cache;
+  DeckFiles files;
+};
+
+// Looks `key` up in the cache, or runs `deck` in a fresh folder (with the
+// potential and `extra` files copied in), checks completion, and stores it.
+RunRecord cached_run(Context& ctx, const std::string& key, const std::string& deck, const std::string& label,
+                     const std::vector<fs::path>& extra, double expected_steps, const std::string& progress_file) {
+  RunRecord r;
+  r.key = key;
+  if (ctx.spec.use_cache) {
+    if (auto hit = ctx.cache.find(key)) {
+      r.folder = *hit;
+      r.cached = true;
+      const auto cost = read_key_values(*hit / kCostFile);
+      r.wall_seconds = cost.count("wall_seconds") != 0 ? std::strtod(cost.at("wall_seconds").c_str(), nullptr)
+                                                   : std::numeric_limits<double>::quiet_NaN();
+      r.ranks = cost.count("ranks") != 0 ? std::atoi(cost.at("ranks").c_str()) : ctx.spec.ranks;
+      r.date = cost.count("date") != 0 ? cost.at("date") : std::string();
+      log::debug("{}: cached in {}", label, hit->string());
+      return r;
+    }
+  }
+  const fs::path work = ctx.cache.begin(key);
+  write_text(work / "in.lammps", deck);
+  write_text(work / ctx.potential_name, ctx.potential_text);
+  for (const auto& f : extra) fs::copy_file(f, work / f.filename(), fs::copy_options::overwrite_existing);
+  LammpsJob job{ctx.lmp, ctx.spec.ranks, work, "in.lammps", label};
+  Progress progress(label, expected_steps, "steps");
+  long first = -1;
+  const fs::path watched = work / progress_file;
+  auto poll = [&]() {
+    const long s = last_step(watched);
+    if (s < 0) return;
+    if (first < 0) first = progress_file == "log.lammps" ? 0 : s;
+    progress.update(static_cast<double>(s - first));
+  };
+  const LammpsRunInfo info = run_lammps(job, poll);
+  progress.finish();
+  const auto sample = read_key_values(work / ctx.files.sample);
+  if (sample.count("completed") == 0)
+    throw NumericalError("LAMMPS", last_step(work / "log.lammps"), label,
+                         fmt::format("lmp ended without completing the deck (no 'completed' in {}); see {}",
+                                     (work / ctx.files.sample).string(), (work / "log.lammps").string()));
+  r.wall_seconds = info.wall_seconds;
+  r.ranks = info.ranks;
+  r.date = utc_date();
+  write_text(work / kCostFile, fmt::format("wall_seconds {:.3f}\nranks {}\ndate {}\nlammps_version {}\n", r.wall_seconds,
+                                           r.ranks, r.date, ctx.version));
+  r.folder = ctx.cache.commit(key, work);
+  return r;
+}
+
+std::string gpa(double pa) { return fmt::format("{:g}", pa / units::GPa); }
+
+}  // namespace
+
+ShearStudy run_shear_study(const ShearTestSpec& spec) {
+  validate(spec);
+  ShearStudy study;
+  study.spec = spec;
+  study.lmp = find_lmp(spec.lmp);
+  const fs::path cache_dir = spec.cache_dir.empty() ? default_cache_dir() : spec.cache_dir;
+  study.lammps_version = lammps_version(study.lmp, cache_dir);
+  study.potential_source = find_potential_file(spec.potential);
+  std::string potential_text = read_text_file(study.potential_source);
+  if (spec.material == Material::SiO2 && spec.cutoff > 0.0)
+    potential_text = vashishta_with_cutoff(potential_text, spec.cutoff / units::angstrom, study.potential_source.string());
+  study.potential_sha256 = sha256_hex(potential_text);
+
+  Context ctx{spec, study.lmp, study.lammps_version, run_potential_name(spec), potential_text, ResultCache(cache_dir), {}};
+  ctx.files.potential = ctx.potential_name;
+  const std::string fingerprint = spec.fingerprint();
+  const std::string material = to_string(spec.material);
+
+  std::string quench_key;
+  fs::path quenched_sample;
+  if (spec.material == Material::SiO2) {
+    const std::string deck = quench_deck(spec, ctx.files);
+    // The deck holds every input of the quench (cell, schedule, seeds).
+    quench_key = cache_key({"quench", deck, study.lammps_version, potential_text, std::to_string(spec.ranks)});
+    double steps = 0.0;
+    const auto& q = spec.quench;
+    for (std::size_t i = 0; i < q.temperatures.size(); ++i) {
+      steps += static_cast<double>(spec.steps(q.hold_time, q.timestep));
+      if (i > 0) {
+        const double rate = i + 1 == q.temperatures.size() ? q.final_cooling_rate : q.cooling_rate;
+        steps += static_cast<double>(spec.steps((q.temperatures[i - 1] - q.temperatures[i]) / rate, q.timestep));
+      }
+    }
+    QuenchRecord qr;
+    qr.run = cached_run(ctx, quench_key, deck, "SiO2 melt-quench", {}, steps, "log.lammps");
+    const fs::path sample_file = qr.run.folder / ctx.files.sample;
+    const auto kv = read_key_values(sample_file);
+    qr.atoms = std::lround(to_number(kv, "atoms", sample_file));
+    qr.density = to_number(kv, "density_g_cm3", sample_file) * 1000.0;
+    qr.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
+    qr.lz = to_number(kv, "lz_A", sample_file) * units::angstrom;
+    quenched_sample = qr.run.folder / ctx.files.quenched_sample;
+    log::info("SiO2 melt-quench: {} atoms, density {:.0f} kg/m^3 ({}, {:.0f} s)", qr.atoms, qr.density,
+              qr.run.cached ? "cached" : "ran", qr.run.wall_seconds);
+    study.quench = qr;
+  }
+
+  for (double p : spec.pressures) {
+    const std::string deck = shear_deck(spec, p, ctx.files);
+    const std::string key =
+        cache_key({"shear", fingerprint, deck, study.lammps_version, potential_text, quench_key});
+    const std::string label = fmt::format("{} shear test at {} GPa", material, gpa(p));
+    const double expected = spec.strain_end * static_cast<double>(spec.height_cells()) * spec.lattice_constant /
+                            (spec.shear_velocity * spec.timestep);
+    ShearPoint pt;
+    pt.pressure = p;
+    std::vector<fs::path> extra;
+    if (!quenched_sample.empty()) extra.push_back(quenched_sample);
+    pt.run = cached_run(ctx, key, deck, label, extra, expected, ctx.files.curve);
+    pt.curve = read_shear_curve(pt.run.folder / ctx.files.curve);
+    pt.strength = shear_strength(pt.curve, spec.window_begin, spec.window_end);
+    const fs::path sample_file = pt.run.folder / ctx.files.sample;
+    const auto kv = read_key_values(sample_file);
+    pt.atoms = std::lround(to_number(kv, "atoms", sample_file));
+    pt.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
+    pt.ly = to_number(kv, "ly_A", sample_file) * units::angstrom;
+    pt.h0 = to_number(kv, "h0_A", sample_file) * units::angstrom;
+    const auto& s = pt.strength;
+    log::info("{} p_N = {:>4} GPa: sigma_max = {:6.2f} GPa at strain {:.3f}, sigma_dyn = {:5.2f} ± {:.2f} GPa, "
+              "T(window) = {:.0f} K ({} {:.1f} s)",
+              material, gpa(p), s.sigma_max / units::GPa, s.strain_at_max, s.sigma_dyn / units::GPa,
+              s.sigma_dyn_std / units::GPa, s.temperature_window, pt.run.cached ? "cached," : "ran", pt.run.wall_seconds);
+    if (!s.failed_before_window)
+      log::warn("{} at {} GPa: the peak shear stress (strain {:.3f}) is not before the dynamic-strength window "
+                "[{:g}, {:g}]: sigma_dyn is not a post-failure value",
+                material, gpa(p), s.strain_at_max, spec.window_begin, spec.window_end);
+    if (std::abs(s.normal_stress - p) > 0.1 * p + 0.5 * units::GPa)
+      log::warn("{} at {} GPa: the measured normal stress on the top wall averages {:.2f} GPa over the window",
+                material, gpa(p), s.normal_stress / units::GPa);
+    study.points.push_back(std::move(pt));
+  }
+  return study;
+}
+
+materials::StrengthTable strength_table(const ShearStudy& st) {
+  const ShearTestSpec& s = st.spec;
+  materials::StrengthTable t;
+  t.material = to_string(s.material);
+  for (const auto& p : st.points) {
+    t.pressure.push_back(p.pressure);
+    t.sigma_max.push_back(p.strength.sigma_max);
+    t.sigma_dyn.push_back(p.strength.sigma_dyn);
+  }
+  auto& pv = t.provenance;
+  auto add = [&pv](std::string k, std::string v) { pv.emplace_back(std::move(k), std::move(v)); };
+  add("source", fmt::format("wearscale {} strength-table --backend lammps: MD shear test of thesis Sec. 9.3.1, "
+                            "preset {}, computed by this project (not thesis data)",
+                            version(), s.preset));
+  add("material", t.material);
+  add("units", "pressure_GPa = imposed normal pressure p_N; sigma_max_GPa = peak shear stress; sigma_dyn_GPa = mean "
+               "shear stress over the strain window");
+  add("lammps_version", st.lammps_version);
+  add("lammps_command", fmt::format("{} ({} MPI rank{})", st.lmp.string(), s.ranks, s.ranks > 1 ? "s" : ""));
+  if (s.material == Material::Si)
+    add("potential", fmt::format("pair_style sw, {} (Stillinger-Weber 1985, cutoff a*sigma from the file), sha256 {}",
+                                 st.potential_source.string(), st.potential_sha256.substr(0, 16)));
+  else
+    add("potential", fmt::format("pair_style vashishta, {} with rc set to {:g} A in every entry (file {}), sha256 {}",
+                                 st.potential_source.string(), s.cutoff / units::angstrom, run_potential_name(s),
+                                 st.potential_sha256.substr(0, 16)));
+  add("cutoff", s.material == Material::Si ? std::string("3.77 A (SW a*sigma = 1.80 * 2.0951 A)")
+                                           : fmt::format("{:g} A (two-body rc; three-body r0 unchanged)", s.cutoff / units::angstrom));
+  if (!st.points.empty()) {
+    const auto& p0 = st.points.front();
+    add("system_size", fmt::format("{:.2f} x {:.2f} nm laterally (periodic), box height {:.2f} nm, sheared height "
+                                   "(wall centroids) {:.2f} nm at p_N = {} GPa",
+                                   p0.lx / units::nm, p0.ly / units::nm,
+                                   (st.quench ? st.quench->lz : static_cast<double>(s.height_cells()) * s.lattice_constant) /
+                                       units::nm,
+                                   p0.h0 / units::nm, gpa(p0.pressure)));
+    add("atoms", std::to_string(p0.atoms));
+  }
+  add("sample", s.material == Material::Si
+                    ? fmt::format("diamond Si, a = {:g} A, {} x {} x {} cells, x=[100] y=[010] z=[001] ((001) faces on "
+                                  "the walls)",
+                                  s.lattice_constant / units::angstrom, s.lateral_cells(), s.lateral_cells(), s.height_cells())
+                    : fmt::format("amorphous SiO2 from beta-cristobalite (a = {:g} A, {} x {} x {} cells), one quench "
+                                  "reused at every pressure",
+                                  s.lattice_constant / units::angstrom, s.lateral_cells(), s.lateral_cells(), s.height_cells()));
+  add("walls", fmt::format("rigid, {:g} A thick; bottom fixed, top loaded by p_N (aveforce) and moved along x",
+                           s.wall_thickness / units::angstrom));
+  add("temperature", fmt::format("{:g} K", s.temperature));
+  add("thermostat", fmt::format("Langevin layers {:g} A thick next to the walls, damp {:g} ps, y and z only "
+                                "(temp/partial 0 1 1 bias: no drag along the sliding direction)",
+                                s.thermostat_thickness / units::angstrom, s.langevin_damp * 1e12));
+  add("timestep", fmt::format("{:g} fs", s.timestep * 1e15));
+  add("compression", fmt::format("{:g} ps under load before shearing", s.compression_time * 1e12));
+  add("shear_velocity", fmt::format("{:g} m/s", s.shear_velocity));
+  if (!st.points.empty())
+    add("shear_rate", fmt::format("{:.3g} 1/s (velocity / sheared height at p_N = {} GPa)",
+                                  s.shear_velocity / st.points.front().h0, gpa(st.points.front().pressure)));
+  add("strain", fmt::format("top-wall displacement / distance between the wall centroids (from atom positions), "
+                            "sheared up to {:g}",
+                            s.strain_end));
+  add("strain_window", fmt::format("sigma_dyn = mean shear stress for strain in [{:g}, {:g}]; small boxes stick-slip "
+                                   "after failure, so sigma_dyn depends on this window",
+                                   s.window_begin, s.window_end));
+  std::string heating;
+  for (const auto& p : st.points)
+    heating += fmt::format("{}{} GPa: {:.0f} K", heating.empty() ? "" : "; ", gpa(p.pressure), p.strength.temperature_window);
+  add("heating", "mean temperature of the mobile atoms (without the x streaming component) in the window: " + heating);
+  add("seeds", s.material == Material::Si
+                   ? fmt::format("velocity {}, langevin {}", s.seed, s.seed + 1)
+                   : fmt::format("quench velocity {}, quench langevin {}..{}, shear langevin {}", s.seed + 2, s.seed + 3,
+                                 s.seed + 1 + 2 * s.quench.temperatures.size(), s.seed + 1));
+  if (st.quench) {
+    const auto& q = s.quench;
+    std::string temps;
+    for (double T : q.temperatures) temps += fmt::format("{}{:g}", temps.empty() ? "" : ",", T);
+    add("quench", fmt::format("holds of {:g} ps at {} K, cooling {:g} K/ps, last {:g} K/ps, dt {:g} fs, Berendsen "
+                              "barostat {:g} GPa (damp {:g} ps), Langevin damp {:g} ps; density after: {:.0f} kg/m^3; "
+                              "{} atoms",
+                              q.hold_time * 1e12, temps, q.cooling_rate * 1e-12, q.final_cooling_rate * 1e-12,
+                              q.timestep * 1e15, q.pressure / units::GPa, q.barostat_damp * 1e12,
+                              q.thermostat_damp * 1e12, st.quench->density, st.quench->atoms));
+    add("quench_cost", fmt::format("{:.0f} s wall on {} rank(s)", st.quench->run.wall_seconds, st.quench->run.ranks));
+  }
+  std::string dates;
+  double cost = 0.0;
+  int costed = 0;
+  for (const auto& p : st.points) {
+    if (std::isfinite(p.run.wall_seconds)) {
+      cost += p.run.wall_seconds;
+      ++costed;
+    }
+    if (!p.run.date.empty() && dates.find(p.run.date) == std::string::npos)
+      dates += (dates.empty() ? "" : ", ") + p.run.date;
+  }
+  add("date", dates.empty() ? utc_date() : dates);
+  if (costed > 0)
+    add("cost_per_point", fmt::format("{:.1f} s wall on {} rank(s) (mean of {} pressures)", cost / costed,
+                                      st.points.front().run.ranks, costed));
+  for (const auto& p : st.points) {
+    const auto& r = p.strength;
+    add(fmt::format("point_{}GPa", gpa(p.pressure)),
+        fmt::format("peak at strain {:.3f}; window: {} rows, std {:.2f} GPa, measured p_N {:.2f} GPa; T max {:.0f} K; "
+                    "sheared height {:.2f} nm; run {}",
+                    r.strain_at_max, r.window_samples, r.sigma_dyn_std / units::GPa, r.normal_stress / units::GPa,
+                    r.temperature_max, p.h0 / units::nm, p.run.key.substr(0, 12)));
+  }
+  return t;
+}
+
+}  // namespace wearscale::md

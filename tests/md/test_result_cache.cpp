@@ -1,0 +1,93 @@
+// The result cache: identical inputs do not call lmp again.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "md_test_support.hpp"
+#include "wearscale/materials/strength_table.hpp"
+#include "wearscale/md/result_cache.hpp"
+#include "wearscale/md/shear_study.hpp"
+
+using namespace wearscale;
+using namespace wearscale::md;
+
+namespace {
+long lines(const std::filesystem::path& p) {
+  const std::string s = md_test::read(p);
+  return std::count(s.begin(), s.end(), '\n');
+}
+}  // namespace
+
+TEST(ResultCache, SecondIdenticalStudyDoesNotRunLmp) {
+  const auto dir = md_test::temp_dir("cache-study");
+  const auto counter = dir / "calls.txt";
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 10e9};
+  s.lmp = md_test::fake_lmp(dir, counter).string();
+  s.ranks = 1;
+  s.cache_dir = dir / "cache";
+  md_test::write(dir / "Si.sw", md_test::si_sw);
+  s.potential = dir / "Si.sw";
+
+  const ShearStudy first = run_shear_study(s);
+  EXPECT_EQ(lines(counter), 3) << "lmp -h once, then one run per pressure";
+  ASSERT_EQ(first.points.size(), 2u);
+  EXPECT_FALSE(first.points[0].run.cached);
+  EXPECT_NEAR(first.points[1].strength.sigma_max, 12e9, 1e-3);
+  EXPECT_NEAR(first.points[1].strength.sigma_dyn, 2e9, 1e-3);
+
+  const ShearStudy second = run_shear_study(s);
+  EXPECT_EQ(lines(counter), 3) << "nothing ran: versions and results came from the cache";
+  EXPECT_TRUE(second.points[0].run.cached);
+  EXPECT_TRUE(second.points[1].run.cached);
+  EXPECT_EQ(second.points[1].run.folder, first.points[1].run.folder);
+  EXPECT_DOUBLE_EQ(second.points[1].strength.sigma_dyn, first.points[1].strength.sigma_dyn);
+
+  // A changed input (seed) is a new key: lmp runs again, once per pressure.
+  s.seed = 5;
+  run_shear_study(s);
+  EXPECT_EQ(lines(counter), 5);
+  // A changed potential file is a new key too.
+  md_test::write(dir / "Si.sw", std::string(md_test::si_sw) + "# edited\n");
+  run_shear_study(s);
+  EXPECT_EQ(lines(counter), 7);
+  // Caching off: always runs.
+  s.use_cache = false;
+  run_shear_study(s);
+  EXPECT_EQ(lines(counter), 9);
+}
+
+TEST(ResultCache, TableCarriesProvenance) {
+  const auto dir = md_test::temp_dir("cache-table");
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 5e9};
+  s.lmp = md_test::fake_lmp(dir, dir / "calls.txt").string();
+  s.cache_dir = dir / "cache";
+  md_test::write(dir / "Si.sw", md_test::si_sw);
+  s.potential = dir / "Si.sw";
+  const materials::StrengthTable t = strength_table(run_shear_study(s));
+  EXPECT_EQ(t.material, "Si");
+  ASSERT_EQ(t.pressure.size(), 2u);
+  EXPECT_DOUBLE_EQ(t.pressure[1], 5e9);
+  for (const char* key : {"source", "material", "lammps_version", "potential", "cutoff", "system_size", "atoms",
+                          "temperature", "thermostat", "shear_velocity", "shear_rate", "strain_window", "seeds", "date",
+                          "cost_per_point"})
+    EXPECT_FALSE(t.info(key).empty()) << key;
+  EXPECT_EQ(t.info("lammps_version"), "1 Jan 2000 - fake");
+  EXPECT_EQ(t.info("atoms"), "544");
+}
+
+TEST(ResultCache, KeysAndEntries) {
+  EXPECT_NE(cache_key({"ab", "c"}), cache_key({"a", "bc"}));
+  EXPECT_EQ(cache_key({"x"}).size(), 64u);
+  const auto dir = md_test::temp_dir("cache-entries");
+  ResultCache c(dir);
+  EXPECT_FALSE(c.find("k"));
+  const auto work = c.begin("k");
+  md_test::write(work / "out.txt", "1");
+  EXPECT_FALSE(c.find("k")) << "a running (partial) entry is not found";
+  const auto e = c.commit("k", work);
+  ASSERT_TRUE(c.find("k"));
+  EXPECT_EQ(md_test::read(e / "out.txt"), "1");
+  EXPECT_FALSE(std::filesystem::exists(work));
+}
