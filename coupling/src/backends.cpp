@@ -10,6 +10,7 @@ const ScaleRegistry& scale_registry() {
     register_macro_hertz(r);
     register_molecular_table(r);
     register_molecular_ideal(r);
+    register_molecular_lammps(r);
     register_nano_analytic(r);
     register_macro_pin_on_disc(r);
     return r;

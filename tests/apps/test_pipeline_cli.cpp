@@ -38,6 +38,7 @@ TEST(PipelineCli, EveryExchangedQuantityNamesItsProducer) {
 
 TEST(PipelineCli, SwappingTheMolecularBackendChangesOnlyTheProvenance) {
   ASSERT_EQ(run_cli("run " + scale_link + " --out table", work).status, 0);
+  fs::create_directories(work);
   const auto ideal_case = work / "ideal.toml";
   {
     std::ifstream in(std::string(WEARSCALE_SOURCE_DIR) + "/cases/scale_link.toml");
@@ -99,6 +100,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(PipelineCli, AScaleWhoseInputNobodyProvidesIsRefused) {
   // Without a molecular scale, the junction model has no strengths to work on.
+  fs::create_directories(work);
   const auto no_molecular = work / "no_molecular.toml";
   {
     std::ofstream out(no_molecular);

@@ -1,0 +1,71 @@
+// molecular/lammps: shear strengths σ_max(p), σ_dyn(p) computed by a real
+// LAMMPS run of the §9.3.1 shear test for each material of the case (Si with
+// Stillinger–Weber, SiO2 with Vashishta at r_c = 8 Å), cached by input so a
+// sweep or a rerun does not recompute them.
+#include <map>
+
+#include "backends/backends.hpp"
+#include "backends/case_materials.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/materials/strength_law.hpp"
+#include "wearscale/md/shear_study.hpp"
+#include "wearscale/md/shear_test_config.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+
+class MolecularLammps final : public Scale {
+ public:
+  explicit MolecularLammps(const ScaleSetup& setup) : provenance_(setup.provenance()) {
+    const auto library = material_library(setup.root);
+    for (const auto& m : case_materials(setup.root, library)) {
+      if (m != "Si" && m != "SiO2")
+        throw setup.section.error("backend", "the LAMMPS shear test knows Si and SiO2 only (material '" + m + "')",
+                                  "\"table\" or \"ideal\" for other materials");
+      specs_.emplace(m, md::read_shear_test_spec(setup.section, m));
+    }
+    outside_ = setup.section.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
+                   ? materials::OutsideTable::Clamp
+                   : materials::OutsideTable::Error;
+  }
+
+  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> provides() const override {
+    std::vector<Key> out;
+    for (const auto& [m, spec] : specs_) out.push_back({Quantity::ShearStrength, m});
+    return out;
+  }
+
+  void run(Exchange& exchange, RunContext& ctx) override {
+    for (const auto& [m, spec] : specs_) {
+      const auto study = md::run_shear_study(spec);  // cached by every input
+      materials::StrengthLaw law(md::strength_table(study), outside_);
+      const auto& t = law.table();
+      ctx.h5().write_table("/molecular/" + m, {"pressure", "sigma_max", "sigma_dyn"},
+                           {t.pressure, t.sigma_max, t.sigma_dyn}, {"Pa", "Pa", "Pa"});
+      for (const auto& [k, v] : t.provenance) ctx.h5().set_attribute("/molecular/" + m, k, v);
+      Provenance p = provenance_;
+      p.parameters["lammps_version"] = study.lammps_version;
+      p.parameters["material"] = m;
+      exchange.put(Key{Quantity::ShearStrength, m}, std::move(law), p);
+    }
+  }
+
+ private:
+  Provenance provenance_;
+  std::map<std::string, md::ShearTestSpec> specs_;
+  materials::OutsideTable outside_ = materials::OutsideTable::Error;
+};
+
+}  // namespace
+
+void register_molecular_lammps(ScaleRegistry& registry) {
+  registry.add({"molecular", "lammps",
+                "σ_max(p), σ_dyn(p) from live LAMMPS shear tests of Si (SW) and SiO2 (Vashishta) (§9.3.1), cached",
+                {},
+                {"ShearStrength(<each material of [materials]>)"}},
+               [](const ScaleSetup& s) { return std::make_unique<MolecularLammps>(s); });
+}
+
+}  // namespace wearscale::coupling
