@@ -1,0 +1,33 @@
+// Full-length physics runs (label `long`, on demand: ctest -L long). CI runs
+// their reduced variants (tests/cases/*.gold.json, tests/tribometer).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+
+TEST(LongRuns, OxideThicknessSweepFollowsFig921) {
+  // The thesis sweep at full length (0.5 m): bare Si at μ_Si, bulk at μ_SiO2,
+  // thicker oxide → later transition, higher mean μ, less disc wear.
+  const auto work = fs::temp_directory_path() / ("wearscale_long_" + std::to_string(::getpid()));
+  const auto r = run_cli("run '" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/oxide_thickness_sweep.toml' --out sweep --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto runs = nlohmann::json::parse(r.out)["sweep"]["runs"];
+  ASSERT_EQ(runs.size(), 6u);
+  auto value = [&](std::size_t k, const char* name) { return runs[k]["results"][name]["value"].get<double>(); };
+  EXPECT_NEAR(value(0, "mu_mean"), 0.14, 0.005);
+  EXPECT_NEAR(value(5, "mu_mean"), 0.84, 0.005);
+  for (std::size_t k = 1; k + 1 < runs.size(); ++k) {
+    EXPECT_GT(value(k, "mu_mean"), value(k - 1, "mu_mean")) << runs[k]["value"];
+    EXPECT_LT(value(k, "disc_wear"), value(k - 1, "disc_wear")) << runs[k]["value"];
+    if (k > 1) {
+      EXPECT_GT(value(k, "substrate_reached_at"), value(k - 1, "substrate_reached_at")) << runs[k]["value"];
+    }
+  }
+  EXPECT_NEAR(value(2, "substrate_reached_at"), 0.03, 0.015);  // 1 µm: about s = 0.03 m (Fig. 9.20)
+  fs::remove_all(work);
+}
