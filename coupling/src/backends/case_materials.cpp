@@ -29,4 +29,17 @@ std::vector<std::string> case_materials(const Config& root, const materials::Mat
   return names;
 }
 
+void publish_strength(Exchange& exchange, RunContext& ctx, const std::string& material, materials::StrengthLaw law,
+                      Provenance provenance) {
+  const auto& t = law.table();
+  const std::string group = "/molecular/" + material;
+  ctx.h5().write_table(group, {"pressure", "sigma_max", "sigma_dyn"}, {t.pressure, t.sigma_max, t.sigma_dyn},
+                       {"Pa", "Pa", "Pa"});
+  ctx.h5().set_attribute(group, "file", t.origin);
+  for (const auto& [k, v] : t.provenance) ctx.h5().set_attribute(group, k, v);
+  provenance.parameters["table"] = t.origin;
+  provenance.parameters["material"] = material;
+  exchange.put(Key{Quantity::ShearStrength, material}, std::move(law), std::move(provenance));
+}
+
 }  // namespace wearscale::coupling

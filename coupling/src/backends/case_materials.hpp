@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "wearscale/core/config.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "wearscale/materials/material.hpp"
+#include "wearscale/materials/strength_law.hpp"
 
 namespace wearscale::coupling {
 
@@ -15,5 +17,11 @@ materials::MaterialLibrary material_library(const Config& root);
 /// Distinct names of [materials] pin, disc and layer.material, in that order;
 /// InputError (naming the key) for a name the library does not know.
 std::vector<std::string> case_materials(const Config& root, const materials::MaterialLibrary& library);
+
+/// Provides ShearStrength(material): stores the table in run.h5 under
+/// /molecular/<material> with its provenance lines, and puts the law in the
+/// exchange with `provenance`.
+void publish_strength(Exchange& exchange, RunContext& ctx, const std::string& material, materials::StrengthLaw law,
+                      Provenance provenance);
 
 }  // namespace wearscale::coupling

@@ -40,15 +40,9 @@ class MolecularLammps final : public Scale {
   void run(Exchange& exchange, RunContext& ctx) override {
     for (const auto& [m, spec] : specs_) {
       const auto study = md::run_shear_study(spec);  // cached by every input
-      materials::StrengthLaw law(md::strength_table(study), outside_);
-      const auto& t = law.table();
-      ctx.h5().write_table("/molecular/" + m, {"pressure", "sigma_max", "sigma_dyn"},
-                           {t.pressure, t.sigma_max, t.sigma_dyn}, {"Pa", "Pa", "Pa"});
-      for (const auto& [k, v] : t.provenance) ctx.h5().set_attribute("/molecular/" + m, k, v);
       Provenance p = provenance_;
       p.parameters["lammps_version"] = study.lammps_version;
-      p.parameters["material"] = m;
-      exchange.put(Key{Quantity::ShearStrength, m}, std::move(law), p);
+      publish_strength(exchange, ctx, m, materials::StrengthLaw(md::strength_table(study), outside_), std::move(p));
     }
   }
 

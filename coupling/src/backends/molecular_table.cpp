@@ -49,16 +49,7 @@ class MolecularTable final : public Scale {
   }
 
   void run(Exchange& exchange, RunContext& ctx) override {
-    for (const auto& [m, law] : laws_) {
-      const auto& t = law.table();
-      ctx.h5().write_table("/molecular/" + m, {"pressure", "sigma_max", "sigma_dyn"},
-                           {t.pressure, t.sigma_max, t.sigma_dyn}, {"Pa", "Pa", "Pa"});
-      ctx.h5().set_attribute("/molecular/" + m, "source", t.info("source"));
-      ctx.h5().set_attribute("/molecular/" + m, "file", t.origin);
-      Provenance p = provenance_;
-      p.parameters["table"] = t.origin;
-      exchange.put(Key{Quantity::ShearStrength, m}, law, p);
-    }
+    for (const auto& [m, law] : laws_) publish_strength(exchange, ctx, m, law, provenance_);
   }
 
  private:
