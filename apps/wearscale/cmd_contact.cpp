@@ -57,9 +57,7 @@ Command add_contact(CLI::App& app) {
       std::cout << summary.dump(2) << '\n';
       return 0;
     }
-    for (const auto& [name, r] : summary["results"].items())
-      std::cout << fmt::format("{:<18} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
-                               r["unit"].get<std::string>(), r["description"].get<std::string>());
+    print_results(summary["results"]);
     for (const auto& f : summary["files"]) log::info("wrote {}", f.get<std::string>());
     return 0;
   };

@@ -10,6 +10,12 @@
 
 namespace wearscale::app {
 
+void print_results(const nlohmann::json& results) {
+  for (const auto& [name, r] : results.items())
+    std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
+                             r["unit"].get<std::string>(), r["description"].get<std::string>());
+}
+
 namespace {
 // One row per swept value: the headline figures of the pin-on-disc runs when
 // present, else every figure.
@@ -56,9 +62,7 @@ Command add_run(CLI::App& app) {
       return 0;
     }
     if (summary.sweep_key.empty()) {
-      for (const auto& [name, r] : summary.results.items())
-        std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
-                                 r["unit"].get<std::string>(), r["description"].get<std::string>());
+      print_results(summary.results);
     } else {
       print_sweep_table(summary);
     }

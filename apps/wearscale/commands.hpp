@@ -4,10 +4,14 @@
 #include <functional>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace wearscale::app {
 
 using Command = std::function<int()>;
+
+/// Prints headline figures {name: {value, unit, description}}, one a line.
+void print_results(const nlohmann::json& results);
 
 Command add_run(CLI::App& app);
 Command add_backends(CLI::App& app);

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <ctime>
@@ -89,9 +90,8 @@ struct PreparedRun {
   RunSummary summary;
 };
 
-PreparedRun prepare(const RunOptions& options, const std::vector<std::string>& extra,
-                    const std::optional<std::filesystem::path>& out) {
-  PreparedRun run{load(options, extra), {}, {}};
+PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out) {
+  PreparedRun run{std::move(cfg_in), {}, {}};
   Config& cfg = run.cfg;
   run.summary.case_name = cfg.string("case.name");
   cfg.string_or("case.description", "");
@@ -126,8 +126,9 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
     const auto p = exchange.provenance(key).to_json();
     provenance[key.to_string()] = p;
     // One group per quantity, named by it, so the producer of each is visible in the file.
-    const std::string group = "/exchange/" + to_string(key.what) + "/" + key.subject.substr(0, key.subject.find('/')) +
-                              (key.subject.find('/') == std::string::npos ? "" : "-" + key.subject.substr(key.subject.find('/') + 1));
+    std::string subject = key.subject;  // "SiO2/Si" would nest groups: store it as "SiO2-Si"
+    std::replace(subject.begin(), subject.end(), '/', '-');
+    const std::string group = "/exchange/" + to_string(key.what) + "/" + subject;
     h5.set_attribute(group, "producer", p["scale"].get<std::string>() + "/" + p["backend"].get<std::string>());
     h5.set_attribute(group, "provenance", p.dump());
   }
@@ -174,7 +175,7 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   for (const auto& v : values) {
     if (!probe.has(key))
       throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
-    runs.push_back(prepare(options, {key + "=" + v}, sweep.output_dir / label_of(key, v)));
+    runs.push_back(prepare(load(options, {key + "=" + v}), sweep.output_dir / label_of(key, v)));
   }
   sweep.scales = runs.front().summary.scales;
   sweep.parameters = runs.front().summary.parameters;
@@ -249,7 +250,7 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
 RunSummary run_case(const RunOptions& options) {
   Config probe = load(options, {});
   if (probe.has("sweep")) return run_sweep(options, probe);
-  PreparedRun run = prepare(options, {}, options.output_dir);
+  PreparedRun run = prepare(std::move(probe), options.output_dir);  // a single run: the file is parsed once
   log::info("case '{}': {} → {}", run.summary.case_name, fmt::join(run.summary.scales, " → "),
             run.summary.output_dir.string());
   execute(run, options, true);
