@@ -1,0 +1,93 @@
+// DEM throughput on the reference work of bench/dem (README there): the
+// dense HCP block with the linear spring-dashpot law with history, and the
+// same block with the thesis' cohesive law. Reports particle-steps per
+// second (items/s) and per CPU-second, and the neighbour pairs.
+//
+//   OMP_NUM_THREADS=1 build/bench/bench_dem --benchmark_filter=Hooke
+//   OMP_NUM_THREADS=2 build/bench/bench_dem --benchmark_filter=Hooke/20
+#include <benchmark/benchmark.h>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "wearscale/dem/anchor_block.hpp"
+#include "wearscale/dem/hcp_lattice.hpp"
+
+using namespace wearscale::dem;
+
+namespace {
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+double peak_rss_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0.0;
+}
+
+void report(benchmark::State& state, const Simulation& sim, long steps, double cpu) {
+  const double work = static_cast<double>(sim.particles().size()) * static_cast<double>(steps);
+  state.SetItemsProcessed(static_cast<std::int64_t>(work));
+  state.counters["N"] = static_cast<double>(sim.particles().size());
+  state.counters["pairs"] = static_cast<double>(sim.neighbor_list().pairs());
+  state.counters["Mpsteps_per_cpu_s"] = work / cpu / 1e6;
+  state.counters["peak_RSS_MiB"] = peak_rss_mib();
+}
+
+// The deck's block: N = 4 n³, rebuild every 10 steps without a check.
+void Hooke(benchmark::State& state) {
+  auto sim = make_anchor_block({static_cast<int>(state.range(0)), 10});
+  const long steps = state.range(1);
+  sim.run(10);  // first build and warm caches
+  double cpu = 0.0;
+  long done = 0;
+  for (auto _ : state) {
+    const double c0 = cpu_seconds();
+    sim.run(steps);
+    cpu += cpu_seconds() - c0;
+    done += steps;
+  }
+  report(state, sim, done, cpu);
+}
+BENCHMARK(Hooke)->Args({20, 200})->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The thesis law on the same block: unit spheres of a cohesive material whose
+// d_c is above the particle size, neighbours at 0.5 % overlap.
+void Cohesive(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  HcpLattice lattice{0.995, n, n, n};
+  CohesiveMaterial m;
+  m.name = "bench";
+  m.young = 1e4;
+  m.poisson = 0.15;
+  m.tensile_strength = 100.0;
+  m.shear_strength = 50.0;
+  m.surface_energy = 2.5;  // d_min = 0.1 (δ_f = 0.1 d), d_c = 10 d
+  m.restitution = 0.9;
+  m.density = 6.0 / std::numbers::pi;
+  Particles p;
+  for (const auto& x : lattice.sites()) {
+    const double h = std::sin(12.9898 * x.x + 78.2330 * x.y + 37.7190 * x.z) * 43758.5453;
+    p.add({x, 0.5, m.density, {0.01 * (2.0 * (h - std::floor(h)) - 1.0), 0, 0}, 0, 0});
+  }
+  Simulation sim(std::move(p), lattice.box(), CohesiveLaw({m}), NeighborSettings{0.1, 10, false});
+  sim.set_time_step(0.1 * std::get<CohesiveLaw>(sim.law()).critical_time_step(sim.particles()));
+  const long steps = state.range(1);
+  sim.run(10);
+  double cpu = 0.0;
+  long done = 0;
+  for (auto _ : state) {
+    const double c0 = cpu_seconds();
+    sim.run(steps);
+    cpu += cpu_seconds() - c0;
+    done += steps;
+  }
+  report(state, sim, done, cpu);
+}
+BENCHMARK(Cohesive)->Args({20, 200})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace

@@ -1,0 +1,70 @@
+#pragma once
+// A half neighbour list (each pair once, under the lower index) built from a
+// cell list with a skin, with per-pair tangential history that survives
+// rebuilds. Periodic images are stored as one of 27 shift indices.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "wearscale/dem/box.hpp"
+#include "wearscale/dem/particles.hpp"
+
+namespace wearscale::dem {
+
+struct NeighborSettings {
+  double skin = 0.0;  ///< extra range beyond the interaction cutoff
+  /// Rebuild every this many steps (0: only on displacement).
+  int every = 0;
+  /// Also rebuild when a particle has moved more than skin/2 since the last
+  /// build (the list is then never stale).
+  bool check_displacement = true;
+};
+
+class NeighborList {
+ public:
+  /// Builds the list for pairs closer than r_i + r_j + reach + skin, skipping
+  /// pairs of particles of the same wall (two walls do interact). Periodic coordinates must be wrapped into
+  /// the box. The history of pairs present before is kept.
+  void build(const Particles& p, const Box& box, double reach, double skin);
+
+  std::size_t pairs() const { return neighbor_.size(); }
+  const std::vector<std::uint32_t>& offsets() const { return offset_; }
+  const std::vector<std::uint32_t>& neighbors() const { return neighbor_; }
+  const std::vector<std::uint8_t>& shifts() const { return shift_; }
+  /// Tangential history, 3 per pair, in list order.
+  std::vector<double>& history() { return history_; }
+  const std::vector<double>& history() const { return history_; }
+
+  /// The separation offset of shift index s for this box.
+  static std::array<Vec3, 27> shift_vectors(const Box& box);
+  static constexpr std::uint8_t no_shift = 13;
+
+  /// Largest displacement since the last build exceeds half the skin.
+  bool moved_beyond_half_skin(const Particles& p) const;
+  long builds() const { return builds_; }
+  /// Forgets all pairs and histories.
+  void clear();
+
+ private:
+  void sort_and_keep_history(std::size_t n);
+
+  std::vector<std::uint32_t> offset_, neighbor_;
+  std::vector<std::uint8_t> shift_;
+  std::vector<double> history_;
+  // Previous list, for carrying history over a rebuild.
+  std::vector<std::uint32_t> old_offset_, old_neighbor_;
+  std::vector<double> old_history_;
+  // Scratch reused between builds.
+  struct Candidate {
+    std::uint32_t i, j;
+    std::uint8_t shift;
+  };
+  std::vector<Candidate> candidates_;
+  std::vector<std::uint32_t> cell_head_, cell_next_, count_;
+  std::vector<Vec3> built_at_;
+  double half_skin_ = 0.0;
+  long builds_ = 0;
+};
+
+}  // namespace wearscale::dem

@@ -1,0 +1,111 @@
+#include "wearscale/dem/cohesive_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/dem/particles.hpp"
+
+namespace wearscale::dem {
+
+double normal_cross_section(double r_eff, double poisson) {
+  return std::numbers::sqrt2 * r_eff * r_eff / (1.0 - 2.0 * poisson);  // (6.51)
+}
+
+double tangential_cross_section(double r_eff, double poisson) {
+  return std::numbers::sqrt2 * r_eff * r_eff * (1.0 - 4.0 * poisson) /
+         ((1.0 - 2.0 * poisson) * (1.0 + poisson));  // (6.52)
+}
+
+double elastic_separation(const CohesiveMaterial& m, double radius_sum) {
+  return radius_sum * m.tensile_strength / m.young;  // (6.56)
+}
+
+double fracture_separation(const CohesiveMaterial& m, double radius_sum) {
+  const double d_c = critical_diameter(m);
+  if (radius_sum <= d_c) return 4.0 * m.surface_energy / m.tensile_strength;  // (6.57), (6.21)
+  return elastic_separation(m, radius_sum) * std::pow(radius_sum / d_c, -m.scaling_exponent);
+}
+
+CohesivePair cohesive_pair(const CohesiveMaterial& m, double r_i, double r_j, double m_i,
+                           double m_j) {
+  const double r_eff = std::min(r_i, r_j);  // (6.53)
+  const double sum = r_i + r_j;
+  const double m_eff = m_i * m_j / (m_i + m_j);  // (6.61)
+  const double damping = 2.0 * (1.0 - m.restitution) / std::numbers::pi;
+  CohesivePair p;
+  p.k_n = normal_cross_section(r_eff, m.poisson) * m.young / sum;      // (6.54)
+  p.k_t = tangential_cross_section(r_eff, m.poisson) * m.young / sum;  // (6.55)
+  p.delta_f = fracture_separation(m, sum);
+  p.delta_e = std::min(elastic_separation(m, sum), p.delta_f);
+  p.f_mt = tangential_cross_section(r_eff, m.poisson) * m.shear_strength;  // (6.58)
+  p.c_n = damping * std::sqrt(p.k_n * m_eff);                             // (6.59)
+  p.c_t = damping * std::sqrt(std::max(p.k_t, 0.0) * m_eff);              // (6.60)
+  return p;
+}
+
+double normal_force(const CohesivePair& p, double delta_n) {
+  if (delta_n <= p.delta_e) return p.k_n * delta_n;  // (6.3)
+  if (delta_n <= p.delta_f) return -p.k_n * p.delta_e / (p.delta_f - p.delta_e) * (delta_n - p.delta_f);
+  return 0.0;
+}
+
+double tangential_cap(const CohesivePair& p, double delta_n) {
+  return std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.5)
+}
+
+double normal_energy(const CohesivePair& p, double delta_n) {
+  if (delta_n >= p.delta_f) return 0.0;
+  if (delta_n > p.delta_e) {
+    const double gap = p.delta_f - delta_n;
+    return -0.5 * p.k_n * p.delta_e * gap * gap / (p.delta_f - p.delta_e);
+  }
+  return 0.5 * p.k_n * (delta_n * delta_n - p.delta_e * p.delta_f);
+}
+
+double critical_time_step(double mass, double k_n) { return std::sqrt(2.0 * mass / k_n); }  // (6.6)
+double critical_damping(double mass, double k_n) { return std::sqrt(2.0 * k_n * mass); }    // (6.64)
+
+CohesiveLaw::CohesiveLaw(std::vector<CohesiveMaterial> materials) : materials_(std::move(materials)) {
+  if (materials_.empty()) throw InputError("the cohesive DEM force law needs at least one material");
+  if (materials_.size() > 255) throw InputError("the cohesive DEM force law allows at most 255 materials");
+  for (const auto& m : materials_) require_modelled(m);
+  mixed_.reserve(materials_.size() * materials_.size());
+  for (const auto& a : materials_)
+    for (const auto& b : materials_) mixed_.push_back(mix(a, b));
+}
+
+CohesivePair CohesiveLaw::pair(const Particles& p, std::size_t i, std::size_t j) const {
+  return cohesive_pair(pair_material(p.material[i], p.material[j]), p.radius[i], p.radius[j],
+                       p.mass[i], p.mass[j]);
+}
+
+double CohesiveLaw::reach(double max_radius) const {
+  double reach = 0.0;
+  for (const auto& m : mixed_) {
+    // δ_f is constant below d_c and grows as (r_i + r_j)^(1−s) above it.
+    reach = std::max(reach, fracture_separation(m, 2.0 * max_radius));
+    reach = std::max(reach, 4.0 * m.surface_energy / m.tensile_strength);
+  }
+  return reach;
+}
+
+double CohesiveLaw::critical_time_step(const Particles& p) const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto pp = pair(p, i, i);
+    dt = std::min(dt, dem::critical_time_step(p.mass[i], pp.k_n));
+  }
+  return dt;
+}
+
+double CohesiveLaw::critical_damping(const Particles& p) const {
+  if (p.empty()) return 0.0;
+  const auto smallest = static_cast<std::size_t>(
+      std::min_element(p.radius.begin(), p.radius.end()) - p.radius.begin());
+  return dem::critical_damping(p.mass[smallest], pair(p, smallest, smallest).k_n);
+}
+
+}  // namespace wearscale::dem
