@@ -19,5 +19,6 @@ Command add_version(CLI::App& app);
 Command add_surface(CLI::App& app);
 Command add_contact(CLI::App& app);
 Command add_strength_table(CLI::App& app);
+Command add_dem(CLI::App& app);
 
 }  // namespace wearscale::app

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   add(app::add_surface);
   add(app::add_contact);
   add(app::add_strength_table);
+  add(app::add_dem);
 
   try {
     app.parse(argc, argv);

@@ -76,4 +76,14 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::files
   return render(script, png);
 }
 
+std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::path& history_csv,
+                                                         const std::filesystem::path& png, const std::string& title) {
+  return render(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
+                            "set title '{}'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
+                            "set grid\nplot '{}' every ::1 using ($2*1e9):($3*1e9) with lines lw 2 title 'tangential F_T', "
+                            "'' every ::1 using ($2*1e9):($4*1e9) with lines lw 1 title 'normal F_N'\n",
+                            title, history_csv.string()),
+                png);
+}
+
 }  // namespace wearscale::coupling

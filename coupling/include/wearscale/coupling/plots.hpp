@@ -27,4 +27,9 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
 std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
                                                                 const std::filesystem::path& png);
 
+/// The tangential force history of a sheared DEM junction (junction_history.csv
+/// of `wearscale dem junction`): F_T and F_N against the sliding distance.
+std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::path& history_csv,
+                                                         const std::filesystem::path& png, const std::string& title);
+
 }  // namespace wearscale::coupling

@@ -1,0 +1,120 @@
+// wearscale dem patch-test [CASE.toml] --material table-6.4|Si|SiO2 --lattice hcp|amorphous --d0 D
+//                          [--nu NU] [--s S] [--no-strengths] [--set KEY=VALUE]... [--out DIR] [--json]
+// wearscale dem junction   [CASE.toml] --material SiO2 --D 20e-9 --d0 6e-9 [--velocity V] [--pressure P]
+//                          [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
+// The coarse-grained DEM of thesis ch. 6: patch tests measuring E, ν, σ_m,N,
+// σ_m,T beside their targets (§6.2), and the sheared junction of §6.3.
+#include <iostream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/config.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/dem/dem_study.hpp"
+
+namespace wearscale::app {
+
+namespace {
+
+struct DemArgs {
+  std::string case_file, out;
+  std::vector<std::pair<std::string, std::string>> flags;  // key, value
+  std::vector<std::string> overrides;
+  bool json = false;
+  bool no_strengths = false;
+};
+
+// Adds `--name` writing the case key `key` (a.flags is reserved: slots stay put).
+void flag(CLI::App* cmd, DemArgs& a, const std::string& name, const std::string& key, const std::string& help) {
+  auto* slot = &a.flags.emplace_back(key, std::string());
+  cmd->add_option(name, slot->second, fmt::format("{} ({})", help, key));
+}
+
+Config build_config(const DemArgs& a, const std::string& default_out, std::filesystem::path& out) {
+  Config cfg = a.case_file.empty() ? Config::from_string("", "<command line>") : Config::load(a.case_file);
+  for (const auto& [key, value] : a.flags)
+    if (!value.empty()) cfg.override_value(fmt::format("{}={}", key, value));
+  for (const auto& o : a.overrides) cfg.override_value(o);
+  cfg.string_or("case.name", "dem");
+  cfg.string_or("case.description", "");
+  const std::string dir = cfg.string_or("output.dir", default_out);
+  out = a.out.empty() ? std::filesystem::path(dir) : std::filesystem::path(a.out);
+  return cfg;
+}
+
+int finish(const DemArgs& a, nlohmann::json summary, const Config& cfg, const std::filesystem::path& out,
+           const std::string& name) {
+  summary["parameters"] = cfg.to_json();
+  summary["output_dir"] = out.string();
+  write_file_atomically(out / (name + ".json"), summary.dump(2) + "\n");
+  if (a.json) {
+    std::cout << summary.dump(2) << '\n';
+    return 0;
+  }
+  print_results(summary["results"]);
+  for (const auto& f : summary["files"]) log::info("wrote {}", f.get<std::string>());
+  return 0;
+}
+
+void common(CLI::App* cmd, DemArgs& a) {
+  cmd->add_option("case", a.case_file, "Case file with a [dem] table (every flag is also a key there)");
+  cmd->add_option("--set", a.overrides, "Override a case key: --set dem.patch_test.width=4 (repeatable)")
+      ->expected(1)->take_all();
+  cmd->add_option("--out", a.out, "Output folder");
+  cmd->add_flag("--json", a.json, "Print one JSON object with the results and resolved parameters");
+}
+
+}  // namespace
+
+Command add_dem(CLI::App& app) {
+  auto* dem = app.add_subcommand("dem", "Coarse-grained cohesive DEM (thesis ch. 6): patch tests and sheared junctions");
+  dem->require_subcommand(1);
+
+  auto* patch = dem->add_subcommand(
+      "patch-test", "Measure E, ν (confined compression) and σ_m,N, σ_m,T (walls pulled, sheared) of a DEM sample (§6.2)");
+  auto p = std::make_shared<DemArgs>();
+  p->flags.reserve(16);
+  common(patch, *p);
+  flag(patch, *p, "--material", "dem.material", "table-6.4 (Table 6.4, unitless), Si, SiO2 or a [materials.define] name");
+  flag(patch, *p, "--lattice", "dem.patch_test.lattice", "hcp or amorphous");
+  flag(patch, *p, "--d0", "dem.patch_test.d0", "particle diameter (HCP) or mode of diameters, e.g. 90 or \"6 nm\"");
+  flag(patch, *p, "--nu", "dem.poisson", "target Poisson's ratio, at most 0.25");
+  flag(patch, *p, "--s", "dem.scaling_exponent", "size-scaling exponent s of (6.57)");
+  flag(patch, *p, "--length", "dem.patch_test.length", "sample length L in d0");
+  flag(patch, *p, "--seed", "dem.patch_test.seed", "seed of the amorphous sample");
+  patch->add_flag("--no-strengths", p->no_strengths, "Only the elastic test (dem.patch_test.strengths = false)");
+
+  auto* junction = dem->add_subcommand(
+      "junction", "Shear a cylindrical junction between two surfaces (§6.3): plastic deformation or a rolling wear particle");
+  auto j = std::make_shared<DemArgs>();
+  j->flags.reserve(16);
+  common(junction, *j);
+  flag(junction, *j, "--material", "dem.material", "Si, SiO2 or a [materials.define] name");
+  flag(junction, *j, "--D", "dem.junction.diameter", "junction diameter D, e.g. 20e-9 or \"20 nm\"");
+  flag(junction, *j, "--d0", "dem.junction.d0", "mode of the particle diameters");
+  flag(junction, *j, "--velocity", "dem.junction.velocity", "sliding velocity of the top wall");
+  flag(junction, *j, "--pressure", "dem.junction.pressure", "normal pressure on the top wall");
+  flag(junction, *j, "--slide", "dem.junction.sliding_distance", "sliding distance (default 1.5 D)");
+  flag(junction, *j, "--seed", "dem.junction.seed", "seed of the amorphous sample");
+
+  return [dem, patch, p, junction, j]() {
+    std::filesystem::path out;
+    if (dem->got_subcommand(patch)) {
+      if (p->no_strengths) p->overrides.emplace_back("dem.patch_test.strengths=false");
+      const Config cfg = build_config(*p, "out/dem-patch-test", out);
+      return finish(*p, dem::run_patch_test_study(cfg, out), cfg, out, "patch_test");
+    }
+    const Config cfg = build_config(*j, "out/dem-junction", out);
+    auto summary = dem::run_junction_study(cfg, out);
+    if (auto png = coupling::plot_junction_force(out / "junction_history.csv", out / "junction_force.png",
+                                                 summary["verdict"].get<std::string>()))
+      summary["files"].push_back(png->string());
+    return finish(*j, summary, cfg, out, "junction");
+  };
+}
+
+}  // namespace wearscale::app

@@ -1,0 +1,29 @@
+#pragma once
+// The DEM studies a user runs from the command line (`wearscale dem ...`),
+// configured by the [dem] table of a case (flags map onto its keys): the
+// patch tests of §6.2 and the sheared junction of §6.3. Each validates every
+// key before it starts, writes its outputs under `out`, and returns a summary
+// {results: {name: {value, unit, description}}, files: [...]}.
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "wearscale/core/config.hpp"
+#include "wearscale/dem/cohesive_material.hpp"
+
+namespace wearscale::dem {
+
+/// The DEM targets named by dem.material: "table-6.4" (the unitless
+/// patch-test targets of Table 6.4) or a material of the case's library
+/// (Si, SiO2, [materials.define.*]); dem.poisson, dem.restitution and
+/// dem.scaling_exponent override or complete them.
+CohesiveMaterial dem_material(const Config& root);
+
+/// [dem.patch_test]: lattice, d0, length, width, load, strengths, ...
+nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out);
+
+/// [dem.junction]: diameter, d0, largest, velocity, pressure, ...
+/// Writes the force history (CSV, HDF5) and OVITO-readable snapshots.
+nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out);
+
+}  // namespace wearscale::dem

@@ -1,0 +1,56 @@
+#pragma once
+// Particle snapshots OVITO reads, appended frame after frame to one file:
+// LAMMPS dump text (`ITEM: ATOMS id type x y z radius vx vy vz fx fy fz body
+// wall ...`) or extended XYZ. Like every wearscale output, the file is
+// written under a temporary name and appears under its own name only once
+// committed; a writer destroyed before commit() leaves nothing.
+#include <cstdio>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "wearscale/dem/simulation.hpp"
+
+namespace wearscale::dem {
+
+/// A per-particle quantity written beside the standard columns (e.g. the
+/// worn flag or the cluster label), one value per particle.
+struct DumpColumn {
+  std::string name;
+  std::span<const double> values;
+};
+
+enum class DumpFormat {
+  lammps,        ///< LAMMPS `dump custom` text
+  extended_xyz,  ///< extended XYZ (Lattice, Origin, pbc, Properties)
+};
+
+class DumpWriter {
+ public:
+  explicit DumpWriter(std::filesystem::path final_path, DumpFormat format = DumpFormat::lammps);
+  ~DumpWriter();
+  DumpWriter(const DumpWriter&) = delete;
+  DumpWriter& operator=(const DumpWriter&) = delete;
+
+  /// Appends one frame. Periodic axes are written with the box bounds (pp);
+  /// open axes (ff) with bounds that enclose every particle and the box.
+  /// Walls are written as wall index + 1 (0: mobile particle); type is the
+  /// material + 1.
+  void write(long step, double time, const Particles& p, const Box& box, const std::vector<DumpColumn>& extra = {});
+  void write(const Simulation& sim, const std::vector<DumpColumn>& extra = {});
+
+  std::size_t frames() const { return frames_; }
+  /// Closes the file and moves it to its final name.
+  void commit();
+  const std::filesystem::path& final_path() const { return final_; }
+
+ private:
+  std::filesystem::path final_, partial_;
+  DumpFormat format_;
+  std::FILE* file_ = nullptr;
+  std::size_t frames_ = 0;
+  bool committed_ = false;
+};
+
+}  // namespace wearscale::dem

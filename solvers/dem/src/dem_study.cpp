@@ -1,0 +1,203 @@
+#include "wearscale/dem/dem_study.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "wearscale/core/csv.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/core/progress.hpp"
+#include "wearscale/dem/dump_writer.hpp"
+#include "wearscale/dem/patch_test.hpp"
+#include "wearscale/dem/sheared_junction.hpp"
+#include "wearscale/dem/simulation.hpp"
+#include "wearscale/materials/material.hpp"
+
+namespace wearscale::dem {
+
+namespace {
+
+// Table 6.4: the patch-test targets (no units).
+CohesiveMaterial table_6_4() {
+  return {"table-6.4", 1.0, 0.15, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5};
+}
+
+void report(nlohmann::json& results, const std::string& name, double v, const std::string& unit,
+            const std::string& what) {
+  results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
+}
+
+}  // namespace
+
+CohesiveMaterial dem_material(const Config& root) {
+  const Config c = root.section("dem");
+  const std::string name = c.string_or("material", "table-6.4");
+  const double s = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
+  CohesiveMaterial m;
+  if (name == "table-6.4") {
+    m = table_6_4();
+    m.scaling_exponent = s;
+  } else {
+    materials::MaterialLibrary library;
+    library.define_from(root);
+    if (!library.contains(name)) {
+      std::string known = "table-6.4";
+      for (const auto& n : library.names()) known += ", " + n;
+      throw c.error("material", fmt::format("unknown material '{}'", name), known);
+    }
+    std::optional<double> eta;
+    if (c.has("restitution")) eta = c.number("restitution", Range{0.0, 1.0, true, false});
+    try {
+      m = cohesive_material(library.get(name), s, eta);
+    } catch (const InputError& e) {
+      throw c.error("restitution", e.what(), "0 < η ≤ 1");
+    }
+  }
+  if (c.has("restitution")) m.restitution = c.number("restitution", Range{0.0, 1.0, true, false});
+  if (c.has("poisson")) m.poisson = c.number("poisson", Range{-1.0, 0.5, true, true});
+  if (!(m.poisson <= 0.25))
+    throw c.error("poisson",
+                  fmt::format("ν = {} cannot be modelled by the DEM pair force: central pair forces give ν ≤ 1/4 "
+                              "(the tangential cross section A_T of (6.52) would be negative)",
+                              m.poisson),
+                  "-1 < ν ≤ 0.25");
+  require_modelled(m);
+  return m;
+}
+
+nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out) {
+  PatchTestSpec spec;
+  spec.material = dem_material(root);
+  const Config c = root.section("dem.patch_test");
+  const bool unitless = spec.material.name == "table-6.4";
+  spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
+  const double d_c = critical_diameter(spec.material);
+  spec.d0 = c.has("d0") ? c.number("d0", Range::positive(), unitless ? units::dimensionless : units::length) : 0.6 * d_c;
+  spec.load_along_c_axis = c.boolean_or("load_along_c_axis", false);
+  spec.length = c.number_or("length", 25.0, Range::closed(6.0, 400.0));
+  spec.width = c.number_or("width", 3.0, Range::closed(2.0, 100.0));
+  spec.load = c.number_or("load", 0.01, Range::open(0.0, spec.material.tensile_strength / spec.material.young));
+  spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
+  spec.strain_rate = c.number_or("strain_rate", 1e-5, Range::open(0.0, 1e-2));
+  spec.strengths = c.boolean_or("strengths", true);
+  spec.max_elastic_steps = c.integer_or("max_elastic_steps", 40000, Range::at_least(1000));
+  spec.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
+  root.reject_unknown_keys();
+
+  log::info("DEM patch test: {} {}, d0 = {:g} (d_min = {:g}, d_c = {:g}), ν target {:g}", spec.amorphous ? "amorphous" : "HCP",
+            spec.material.name, spec.d0, minimum_diameter(spec.material), d_c, spec.material.poisson);
+  std::unique_ptr<Progress> bar;
+  std::string phase;
+  const auto result = run_patch_test(spec, [&](const std::string& name, long done, long planned) {
+    if (name != phase) {
+      bar = std::make_unique<Progress>("patch test: " + name, static_cast<double>(planned));
+      phase = name;
+    }
+    bar->update(static_cast<double>(done));
+  });
+  bar.reset();
+
+  const std::string stress_unit = unitless ? "1" : "Pa";
+  nlohmann::json results = nlohmann::json::object();
+  report(results, "young", result.young, stress_unit, fmt::format("measured E (target {:g})", spec.material.young));
+  report(results, "poisson", result.poisson, "1", fmt::format("measured ν (target {:g})", spec.material.poisson));
+  report(results, "d_min", result.d_min, unitless ? "1" : "m", "minimum particle size 4γ/σ_m,N (6.62)");
+  report(results, "d_c", result.d_c, unitless ? "1" : "m", "critical particle size 4γE/σ_m,N² (6.35)");
+  report(results, "particles", static_cast<double>(result.particles), "1", "particles in the sample");
+  report(results, "elastic_steps", static_cast<double>(result.elastic_steps), "1",
+         result.elastic_converged ? "steps to rest under the load" : "steps run (the wall had not stopped)");
+  std::vector<std::string> names{"E", "nu"};
+  std::vector<double> measured{result.young, result.poisson}, target{spec.material.young, spec.material.poisson};
+  if (result.tensile_strength) {
+    report(results, "tensile_strength", *result.tensile_strength, stress_unit,
+           fmt::format("peak σ_yy in tension (target {:g}, (6.63))", result.target_tensile));
+    report(results, "shear_strength", *result.shear_strength, stress_unit,
+           fmt::format("peak σ_xy in shear (target {:g})", result.target_shear));
+    names.insert(names.end(), {"sigma_mN", "sigma_mT"});
+    measured.insert(measured.end(), {*result.tensile_strength, *result.shear_strength});
+    target.insert(target.end(), {result.target_tensile, result.target_shear});
+  }
+  std::vector<double> index(names.size());
+  for (std::size_t k = 0; k < index.size(); ++k) index[k] = static_cast<double>(k);
+  const auto csv = out / "patch_test.csv";
+  write_csv(csv, {"quantity_index", "measured", "target"}, {index, measured, target},
+            {fmt::format("DEM patch test (§6.2), {} {}, d0 = {:g}", spec.amorphous ? "amorphous" : "HCP", spec.material.name, spec.d0),
+             fmt::format("quantities: {}", fmt::join(names, ", "))});
+  return {{"results", results}, {"files", {csv.string()}}};
+}
+
+nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out) {
+  ShearedJunctionSpec spec;
+  spec.material = dem_material(root);
+  const Config c = root.section("dem.junction");
+  spec.diameter = c.number("diameter", Range::positive(), units::length);
+  spec.d0 = c.number("d0", Range::positive(), units::length);
+  spec.largest = c.number_or("largest", 1.25 * spec.d0, Range::at_least(spec.d0), units::length);
+  if (c.has("box")) {
+    const auto b = c.numbers("box", Range::positive(), units::length);
+    if (b.size() != 3) throw c.error("box", fmt::format("{} values", b.size()), "three lengths [x, y, z]");
+    spec.box = {b[0], b[1], b[2]};
+  }
+  spec.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
+  spec.pressure = c.number_or("pressure", 100e6, Range::non_negative(), units::pressure);
+  spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
+  spec.sliding_distance = c.number_or("sliding_distance", 1.5 * spec.diameter, Range::positive(), units::length);
+  spec.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
+  const long dump_every = c.integer_or("dump_every", 2000, Range::at_least(0));
+  root.reject_unknown_keys();
+
+  log::info("DEM sheared junction: {} D = {:.3g} m, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa", spec.material.name,
+            spec.diameter, spec.d0, spec.velocity, spec.pressure);
+  std::filesystem::create_directories(out);
+  DumpWriter dump(out / "junction.dump");
+  std::unique_ptr<Progress> bar;
+  const auto r = run_sheared_junction(spec, [&](const Simulation& sim, const JunctionSample&, long step, long planned) {
+    if (!bar) {
+      bar = std::make_unique<Progress>("sheared junction", static_cast<double>(planned));
+      dump.write(sim);
+    }
+    bar->update(static_cast<double>(step));
+    if (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)) dump.write(sim);
+  });
+  bar.reset();
+  dump.commit();
+
+  std::vector<double> t, s, ft, fn, ke;
+  for (const auto& h : r.history) {
+    t.push_back(h.time);
+    s.push_back(h.sliding);
+    ft.push_back(h.tangential_force);
+    fn.push_back(h.normal_force);
+    ke.push_back(h.kinetic_energy);
+  }
+  const auto csv = out / "junction_history.csv";
+  write_csv(csv, {"time_s", "sliding_m", "tangential_force_N", "normal_force_N", "kinetic_energy_J"}, {t, s, ft, fn, ke},
+            {fmt::format("sheared {} junction (§6.3): D = {:.3g} m, d0 = {:.3g} m; {}", spec.material.name,
+                         spec.diameter, spec.d0, r.verdict())});
+  const auto h5_path = out / "junction.h5";
+  H5Writer h5(h5_path);
+  h5.write_table("/history", {"time", "sliding", "tangential_force", "normal_force", "kinetic_energy"}, {t, s, ft, fn, ke},
+                 {"s", "m", "N", "N", "J"});
+  h5.set_attribute("/", "case_toml", root.to_toml());
+  nlohmann::json results = nlohmann::json::object();
+  auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+    report(results, name, v, unit, what);
+    h5.write_scalar("/results/" + name, v, unit);
+  };
+  put("detached", r.detached ? 1.0 : 0.0, "1", r.verdict());
+  put("d_star", r.d_star, "m", "critical junction size 32γG/σ_m,T² (6.65)");
+  put("peak_tangential_force", r.peak_tangential_force, "N", "peak resistance to sliding");
+  put("detached_cluster", static_cast<double>(r.detached_cluster), "1",
+      fmt::format("particles of the largest free cluster (junction: {})", r.junction_particles));
+  put("detached_diameter", r.detached_diameter, "m", "its equivalent diameter");
+  put("rigid_residual", r.rigid_residual, "1", "junction motion not explained by a rigid body (0: rigid)");
+  put("rolling_rate", r.rolling_rate, "1", "junction rotation about y in v/D (≈1 when rolling)");
+  put("particles", static_cast<double>(r.particles), "1", "particles");
+  put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
+  h5.commit();
+  return {{"results", results}, {"verdict", r.verdict()},
+          {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
+}
+
+}  // namespace wearscale::dem

@@ -1,0 +1,80 @@
+#include "wearscale/dem/virial_stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace wearscale::dem {
+
+namespace {
+template <class Indices>
+SymTensor stress_of(const Simulation& sim, const Indices& region, std::size_t count, double volume) {
+  const auto& p = sim.particles();
+  const auto& w = sim.virial();
+  if (w.size() != p.size())
+    throw std::logic_error(
+        "virial stress: the simulation keeps no per-particle virial for its particles; call "
+        "set_track_virial(true) and compute_forces() (or step()) first");
+  if (!(volume > 0.0)) throw std::invalid_argument("virial stress: the region's volume must be > 0");
+  SymTensor s{};
+  if (count == 0) return s;
+  // v̄: the streaming velocity, which carries no stress.
+  Vec3 momentum{};
+  double mass = 0.0;
+  for (std::size_t i : region) {
+    momentum += p.mass[i] * p.velocity[i];
+    mass += p.mass[i];
+  }
+  const Vec3 mean = (1.0 / mass) * momentum;
+  for (std::size_t i : region) {
+    const Vec3 u = p.velocity[i] - mean;
+    const double m = p.mass[i];
+    s[0] += w[i][0] - m * u.x * u.x;
+    s[1] += w[i][1] - m * u.y * u.y;
+    s[2] += w[i][2] - m * u.z * u.z;
+    s[3] += w[i][3] - m * u.x * u.y;
+    s[4] += w[i][4] - m * u.x * u.z;
+    s[5] += w[i][5] - m * u.y * u.z;
+  }
+  for (double& c : s) c /= volume;
+  return s;
+}
+
+struct AllIndices {
+  std::size_t n;
+  struct Iterator {
+    std::size_t i;
+    std::size_t operator*() const { return i; }
+    Iterator& operator++() {
+      ++i;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return i != o.i; }
+  };
+  Iterator begin() const { return {0}; }
+  Iterator end() const { return {n}; }
+};
+}  // namespace
+
+SymTensor virial_stress(const Simulation& sim, std::span<const std::size_t> region, double volume) {
+  for (std::size_t i : region)
+    if (i >= sim.particles().size()) throw std::out_of_range("virial stress: particle index out of range");
+  return stress_of(sim, region, region.size(), volume);
+}
+
+SymTensor box_stress(const Simulation& sim) {
+  const std::size_t n = sim.particles().size();
+  return stress_of(sim, AllIndices{n}, n, sim.box().volume());
+}
+
+double max_normal_stress(const SymTensor& s) {
+  return std::max({std::fabs(s[0]), std::fabs(s[1]), std::fabs(s[2])});
+}
+
+double max_stress(const SymTensor& s) {
+  double m = 0.0;
+  for (double c : s) m = std::max(m, std::fabs(c));
+  return m;
+}
+
+}  // namespace wearscale::dem

@@ -1,0 +1,58 @@
+// `wearscale dem`: the patch test prints measured E, ν beside the targets;
+// the sheared junction writes its force history, snapshots and a verdict;
+// bad input → status 2 naming the key and the allowed range.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_dem_cli_" + std::to_string(::getpid()));
+}  // namespace
+
+TEST(DemCli, PatchTestReportsElasticConstantsBesideTargets) {
+  fs::create_directories(work);
+  const auto r = run_cli("dem patch-test --lattice hcp --nu 0.1 --length 12 --no-strengths --out pt --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["results"]["young"]["value"].get<double>(), 1.0, 0.12);
+  EXPECT_NEAR(j["results"]["poisson"]["value"].get<double>(), 0.1, 0.012);
+  EXPECT_THAT(j["results"]["poisson"]["description"].get<std::string>(), HasSubstr("target 0.1"));
+  EXPECT_TRUE(fs::exists(work / "pt" / "patch_test.csv"));
+  EXPECT_TRUE(fs::exists(work / "pt" / "patch_test.json"));
+}
+
+TEST(DemCli, JunctionWritesHistorySnapshotsAndVerdict) {
+  fs::create_directories(work);
+  const auto r = run_cli("dem junction --material SiO2 --D 20e-9 --d0 '6 nm' --slide '3 nm' --out jn --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["results"]["d_star"]["value"].get<double>(), 18.5e-9, 0.5e-9);  // (6.65)
+  EXPECT_TRUE(j.contains("verdict"));
+  for (const char* f : {"junction_history.csv", "junction.h5", "junction.dump", "junction.json"})
+    EXPECT_TRUE(fs::exists(work / "jn" / f)) << f;
+  const std::string dump = slurp(work / "jn" / "junction.dump");
+  EXPECT_THAT(dump, HasSubstr("ITEM: ATOMS id type x y z radius"));
+}
+
+TEST(DemCli, BadInputNamesTheKeyAndExitsWithTwo) {
+  fs::create_directories(work);
+  auto r = run_cli("dem patch-test --nu 0.3 --out bad", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.poisson"));
+  EXPECT_THAT(r.err, HasSubstr("0.25"));
+  r = run_cli("dem junction --material SiO2 --D 50e-9 --d0 6e-9 --out bad", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("D"));
+  r = run_cli("dem junction --material Unobtainium --D 20e-9 --d0 6e-9 --out bad", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("SiO2"));
+  EXPECT_FALSE(fs::exists(work / "bad" / "junction.dump"));
+}
