@@ -59,7 +59,7 @@ inline PairForce hooke_pair(const HookeLaw& law, const PairState& s, double* his
   const Vec3 del = -s.d;  // x_i − x_j
   const double r = std::sqrt(r2);
   const double rinv = 1.0 / r;
-  const double rsqinv = 1.0 / r2;
+  const double rsqinv = rinv * rinv;
   const Vec3 vr = s.vi - s.vj;
   const double vnnr = dot(vr, del);
   const Vec3 vn = del * (vnnr * rsqinv);
@@ -71,15 +71,15 @@ inline PairForce hooke_pair(const HookeLaw& law, const PairState& s, double* his
   const Vec3 vtr = vt + cross(del, wr);
   Vec3 shear{hist[0], hist[1], hist[2]};
   if (advance) shear += vtr * dt;
-  const double shrmag = norm(shear);
+  const bool sheared = dot(shear, shear) != 0.0;  // LAMMPS tests |shear| != 0 before the rotation
   if (advance) shear -= del * (dot(shear, del) * rsqinv);
   const double damp_t = meff * law.gamma_t;
   Vec3 fs = -(law.k_t * shear + damp_t * vtr);
-  const double fsmag = norm(fs);
+  const double fs2 = dot(fs, fs);
   const double fn = law.friction * std::fabs(ccel * r);
-  if (fsmag > fn) {
-    if (shrmag != 0.0) {
-      const double ratio = fn / fsmag;
+  if (fs2 > fn * fn) {  // Coulomb cap; square roots only when it bites
+    if (sheared) {
+      const double ratio = fn / std::sqrt(fs2);
       const Vec3 dv = vtr * (damp_t / law.k_t);
       shear = ratio * (shear + dv) - dv;
       fs *= ratio;
