@@ -12,6 +12,7 @@ const ScaleRegistry& scale_registry() {
     register_molecular_ideal(r);
     register_molecular_lammps(r);
     register_nano_analytic(r);
+    register_nano_dem(r);
     register_macro_pin_on_disc(r);
     return r;
   }();

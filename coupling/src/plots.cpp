@@ -86,4 +86,28 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
                 png);
 }
 
+std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
+                                                            const std::filesystem::path& png, const std::string& title,
+                                                            const std::vector<double>& contact_ratios, double sigma,
+                                                            double p_crit) {
+  std::string plots;
+  const double s = sigma / 1e9, pc = p_crit / 1e9;
+  for (std::size_t k = 0; k < contact_ratios.size(); ++k) {
+    const double c = contact_ratios[k];
+    const int colour = static_cast<int>(k) + 1;
+    plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
+                         "title 'DEM, D/L = {:.3g}', ",
+                         runs_csv.string(), c, colour, c);
+    plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
+  }
+  plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";
+  return render(fmt::format("set datafile separator ','\nmax(a, b) = a > b ? a : b\nset key outside right top\n"
+                            "set offsets 0, graph 0.05, graph 0.05, 0\nset title '{}'\nset xlabel 'normal pressure p_N [GPa]'\n"
+                            "set ylabel 'peak tangential stress p_T [GPa]'\nset grid\nset xrange [0:*]\nset yrange [0:*]\n"
+                            "set label 1 'lines: (7.9)-(7.10) with {:.3g} GPa, p_{{crit}} = {:.3g} GPa' at graph 0.35, graph 0.05\n"
+                            "plot {}\n",
+                            title, s, pc, plots),
+                png);
+}
+
 }  // namespace wearscale::coupling

@@ -110,3 +110,43 @@ TEST(PipelineCli, AScaleWhoseInputNobodyProvidesIsRefused) {
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("nano/analytic needs ShearStrength(SiO2), but no scale of this case provides it"));
 }
+
+// nano/dem and nano/analytic are interchangeable: the same case runs with
+// either, the exchanged keys and headline names are the same, the producer
+// and provenance differ. The DEM runs (one D = L junction per interface on a
+// reduced cell) are cached by their inputs: the second run computes none.
+TEST(PipelineCli, SwappingTheNanoBackendChangesOnlyTheProvenance) {
+  const std::string dem = " --set scale.nano.backend=dem --set scale.nano.length=12 --set scale.nano.height=6"
+                          " --set scale.nano.velocity=50 --set 'scale.nano.contact_ratios=[1.0]'"
+                          " --set 'scale.nano.pressures=[1e9]' --set scale.nano.cache_dir='" +
+                          (work / "dem-cache").string() + "'";
+  fs::remove_all(work / "dem-cache");
+  const auto analytic = run_cli("run " + scale_link + " --json --out analytic", work);
+  ASSERT_EQ(analytic.status, 0) << analytic.err;
+  const auto cold = run_cli("run " + scale_link + dem + " --json --out dem", work);
+  ASSERT_EQ(cold.status, 0) << cold.err;
+  const auto warm = run_cli("run " + scale_link + dem + " --json --out dem-warm", work);
+  ASSERT_EQ(warm.status, 0) << warm.err;
+  EXPECT_THAT(cold.err, HasSubstr("nano/dem: SiO2/Si junction D/L = 1"));
+  EXPECT_THAT(warm.err, ::testing::Not(HasSubstr("junction D/L")));  // read from the cache
+
+  const auto a = nlohmann::json::parse(analytic.out), d = nlohmann::json::parse(cold.out),
+             w = nlohmann::json::parse(warm.out);
+  for (const auto& [name, v] : a["results"].items()) EXPECT_TRUE(d["results"].contains(name)) << name;
+  EXPECT_EQ(d["results"]["mu0_SiO2-Si"]["value"], w["results"]["mu0_SiO2-Si"]["value"]);
+  wearscale::H5Reader ha(work / "analytic" / "run.h5"), hd(work / "dem" / "run.h5"), hw(work / "dem-warm" / "run.h5");
+  for (const char* pair : {"/exchange/InterfaceLaw/SiO2-Si", "/exchange/InterfaceLaw/SiO2-SiO2"}) {
+    EXPECT_EQ(ha.string_attribute(pair, "producer"), "nano/analytic");
+    EXPECT_EQ(hd.string_attribute(pair, "producer"), "nano/dem");
+    const auto p = nlohmann::json::parse(hd.string_attribute(pair, "provenance"));
+    EXPECT_TRUE(p["parameters"].contains("fit")) << pair;
+    ASSERT_EQ(p["parameters"]["runs"].size(), 1u) << pair;
+    EXPECT_FALSE(p["parameters"]["runs"][0]["cached"].get<bool>());
+    const auto pw = nlohmann::json::parse(hw.string_attribute(pair, "provenance"));
+    EXPECT_TRUE(pw["parameters"]["runs"][0]["cached"].get<bool>());
+  }
+  EXPECT_EQ(ha.string_attribute("/exchange/ShearStrength/Si", "producer"),
+            hd.string_attribute("/exchange/ShearStrength/Si", "producer"));
+  EXPECT_TRUE(hd.exists("/nano/SiO2-Si/runs"));
+  EXPECT_TRUE(fs::exists(work / "dem" / "junction_SiO2-Si.csv"));
+}

@@ -9,6 +9,7 @@ void register_molecular_table(ScaleRegistry& registry);
 void register_molecular_ideal(ScaleRegistry& registry);
 void register_molecular_lammps(ScaleRegistry& registry);
 void register_nano_analytic(ScaleRegistry& registry);
+void register_nano_dem(ScaleRegistry& registry);
 void register_macro_pin_on_disc(ScaleRegistry& registry);
 
 }  // namespace wearscale::coupling

@@ -1,0 +1,480 @@
+// nano/dem: the junction study of §7.1.1 run in the DEM of chapter 6 for each
+// interface the pin meets (pin material on top, counterface below), fitted
+// to the model of §7.1.2 — the same InterfaceLaw (p_crit, μ0, A/A0 = p_N/p_crit,
+// wear rate) as nano/analytic, with the runs and the fit as provenance.
+// DEM particles take E, ν, γ, σ_m,N, ρ, η from the material record and σ_m,T
+// from the molecular strength law at the working pressure. Runs are cached on
+// disk by the SHA-256 of their inputs and shared within the process, so a
+// sweep computes each junction once.
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <future>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <tuple>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "backends/backends.hpp"
+#include "backends/case_materials.hpp"
+#include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/csv.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/dem/junction_strength.hpp"
+#include "wearscale/materials/junction_model.hpp"
+#include "wearscale/materials/material.hpp"
+#include "wearscale/md/result_cache.hpp"
+
+namespace wearscale::coupling {
+
+namespace {
+
+namespace fs = std::filesystem;
+using dem::JunctionStrengthResult;
+using dem::JunctionStrengthSpec;
+
+constexpr const char* cache_version = "wearscale-dem-junction-v2";
+
+// --- One junction run, as stored in the cache --------------------------------
+
+nlohmann::json to_json(const JunctionStrengthResult& r) {
+  std::vector<double> s, t, n;
+  const double area = r.length * r.depth;
+  for (const auto& h : r.history) {
+    s.push_back(h.sliding);
+    t.push_back(h.tangential_force / area);
+    n.push_back(h.normal_force / area);
+  }
+  return {{"length", r.length}, {"depth", r.depth}, {"height", r.height}, {"gap", r.gap},
+          {"particles", r.particles}, {"junction_particles", r.junction_particles}, {"time_step", r.time_step},
+          {"steps", r.steps}, {"initial_contact_ratio", r.initial_contact_ratio},
+          {"loaded_contact_ratio", r.loaded_contact_ratio}, {"final_contact_ratio", r.final_contact_ratio},
+          {"peak_tangential", r.peak_tangential}, {"steady_tangential", r.steady_tangential}, {"normal", r.normal},
+          {"rolling_rate", r.rolling_rate}, {"rigid_residual", r.rigid_residual}, {"outcome", r.verdict()},
+          {"history", {{"sliding", s}, {"p_T", t}, {"p_N", n}}}};
+}
+
+JunctionStrengthResult from_json(const nlohmann::json& j) {
+  JunctionStrengthResult r;
+  r.length = j.at("length");
+  r.depth = j.at("depth");
+  r.height = j.at("height");
+  r.gap = j.at("gap");
+  r.particles = j.at("particles");
+  r.junction_particles = j.at("junction_particles");
+  r.time_step = j.at("time_step");
+  r.steps = j.at("steps");
+  r.initial_contact_ratio = j.at("initial_contact_ratio");
+  r.loaded_contact_ratio = j.at("loaded_contact_ratio");
+  r.final_contact_ratio = j.at("final_contact_ratio");
+  r.peak_tangential = j.at("peak_tangential");
+  r.steady_tangential = j.at("steady_tangential");
+  r.normal = j.at("normal");
+  r.rolling_rate = j.at("rolling_rate");
+  r.rigid_residual = j.at("rigid_residual");
+  const std::string outcome = j.at("outcome");
+  r.outcome = outcome == "flattened" ? JunctionStrengthResult::Outcome::Flattened
+              : outcome == "detached" ? JunctionStrengthResult::Outcome::Detached
+                                      : JunctionStrengthResult::Outcome::Sheared;
+  const auto& h = j.at("history");
+  const auto s = h.at("sliding").get<std::vector<double>>(), t = h.at("p_T").get<std::vector<double>>(),
+             n = h.at("p_N").get<std::vector<double>>();
+  const double area = r.length * r.depth;
+  for (std::size_t k = 0; k < s.size() && k < t.size() && k < n.size(); ++k) {
+    dem::JunctionSample x;
+    x.sliding = s[k];
+    x.tangential_force = t[k] * area;
+    x.normal_force = n[k] * area;
+    r.history.push_back(x);
+  }
+  return r;
+}
+
+std::string material_text(const dem::CohesiveMaterial& m) {
+  return fmt::format("{}|{:.17g}|{:.17g}|{:.17g}|{:.17g}|{:.17g}|{:.17g}|{:.17g}|{:.17g}", m.name, m.young, m.poisson,
+                     m.tensile_strength, m.shear_strength, m.surface_energy, m.restitution, m.density,
+                     m.scaling_exponent);
+}
+
+// Every input that determines a run's result.
+std::string run_key(const JunctionStrengthSpec& s) {
+  const auto& c = s.cell;
+  const std::string spec = fmt::format(
+      "d0={:.17g} L={} H={} B={} gap={:.17g} wall={:.17g} D/L={:.17g} p={:.17g} v={:.17g} dt={:.17g} settle={:.17g} "
+      "slide={:.17g} steady={:.17g} every={}",
+      c.d0, c.length, c.height, c.depth, c.gap, c.wall_thickness, s.contact_ratio, s.pressure, s.velocity, s.time_step,
+      s.settle_distance, s.sliding_distance, s.steady_from, s.record_every);
+  return md::cache_key({cache_version, WEARSCALE_VERSION, material_text(s.top), material_text(s.bottom), spec});
+}
+
+// The runs of this process by key (a sweep's runs share them), backed by the
+// on-disk cache. The first caller of a key computes it; others wait for it.
+class JunctionRuns {
+ public:
+  static JunctionRuns& instance() {
+    static JunctionRuns runs;
+    return runs;
+  }
+  struct Claim {
+    std::shared_future<JunctionStrengthResult> result;
+    std::shared_ptr<std::promise<JunctionStrengthResult>> mine;  // set: this caller computes it
+  };
+  Claim claim(const std::string& key) {
+    std::lock_guard lock(mutex_);
+    if (auto it = runs_.find(key); it != runs_.end()) return {it->second, nullptr};
+    auto promise = std::make_shared<std::promise<JunctionStrengthResult>>();
+    auto future = promise->get_future().share();
+    runs_.emplace(key, future);
+    return {future, promise};
+  }
+  void forget(const std::string& key) {
+    std::lock_guard lock(mutex_);
+    runs_.erase(key);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_future<JunctionStrengthResult>> runs_;
+};
+
+fs::path default_cache_dir() {
+  if (const char* env = std::getenv("WEARSCALE_CACHE"); env != nullptr && *env != '\0')
+    return md::expand_home(env) / "dem";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0')
+    return fs::path(xdg) / "wearscale" / "dem";
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+    return fs::path(home) / ".cache" / "wearscale" / "dem";
+  return fs::temp_directory_path() / "wearscale-cache" / "dem";
+}
+
+// --- The backend --------------------------------------------------------------
+
+struct Interface {
+  std::string pin, counterface;
+  std::string pair() const { return pin + "/" + counterface; }
+  std::string tag() const { return pin + "-" + counterface; }
+};
+
+class NanoDem final : public Scale {
+ public:
+  explicit NanoDem(const ScaleSetup& setup) : provenance_(setup.provenance()) {
+    const Config& root = setup.root;
+    const Config& c = setup.section;
+    library_ = material_library(root);
+    case_materials(root, library_);  // checks every name
+    pin_ = root.string("materials.pin");
+    std::vector<std::string> counterfaces{root.string("materials.disc")};
+    if (root.has("materials.layer.material")) {
+      const std::string layer = root.string("materials.layer.material");
+      if (layer != counterfaces.front()) counterfaces.push_back(layer);
+    }
+    for (const auto& cf : counterfaces) interfaces_.push_back({pin_, cf});
+    e_star_ = materials::effective_modulus(library_.get(pin_), library_.get(pin_));
+
+    // The cell (§7.1.1) and the loading.
+    auto& cell = base_.cell;
+    cell.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
+    cell.length = c.integer_or("length", 25, Range::closed(6, 400));
+    cell.height = c.integer_or("height", 14, Range::closed(4, 400));
+    cell.depth = c.integer_or("depth", 2, Range::closed(2, 50));
+    cell.gap = c.number_or("gap", 0.25, Range::open(0.0, 0.8));
+    cell.wall_thickness = c.number_or("wall_thickness", 1.5, Range::closed(0.5, 10.0));
+    base_.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
+    base_.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
+    base_.settle_distance = c.number_or("settle_distance", 0.1, Range::non_negative());
+    base_.sliding_distance = c.number_or("sliding_distance", 1.0, Range::positive());
+    base_.steady_from = c.number_or("steady_from", 0.5, Range::closed_open(0.0, 1.0));
+    base_.record_every = c.integer_or("record_every", 200, Range::at_least(1));
+    ratios_ = c.has("contact_ratios") ? c.numbers("contact_ratios", Range::open_closed(0.0, 1.0))
+                                      : std::vector<double>{0.25, 1.0};
+    pressures_ = c.has("pressures") ? c.numbers("pressures", Range::non_negative(), units::pressure)
+                                    : std::vector<double>{1e9, 2e9, 4e9};
+    if (ratios_.empty()) throw c.error("contact_ratios", "no junction size", "a list of D/L in (0, 1]");
+    if (pressures_.empty()) throw c.error("pressures", "no normal pressure", "a list of p_N ≥ 0");
+    for (double r : ratios_)
+      if (r * cell.length < 1.0)
+        throw c.error("contact_ratios", fmt::format("D/L = {:g} is less than one particle of the {}-particle cell", r,
+                                                    cell.length),
+                      fmt::format("[{:.3g}, 1]", 1.0 / cell.length));
+
+    // DEM particles from the material records and the molecular strengths.
+    strength_ = c.choice_or("strength", "dynamic", {"dynamic", "peak"});
+    if (c.has("working_pressure")) working_pressure_ = c.number("working_pressure", Range::positive(), units::pressure);
+    scaling_exponent_ = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
+    restitution_ = c.number_or("restitution", 0.9, Range::open_closed(0.0, 1.0));
+    clamp_poisson_ = c.boolean_or("clamp_poisson", true);
+    for (const auto& name : case_materials(root, library_)) {
+      const auto& m = library_.get(name);
+      if (m.poisson > 0.25 && !clamp_poisson_)
+        throw c.error("clamp_poisson",
+                      fmt::format("material '{}' has ν = {} and the DEM pair force gives ν ≤ 1/4 (6.52)", name, m.poisson),
+                      "true (model it with ν = 0.25)");
+    }
+
+    cache_ = c.boolean_or("cache", true);
+    cache_dir_ = c.has("cache_dir") ? md::expand_home(c.string("cache_dir")) : default_cache_dir();
+    const long threads = std::max(1, omp_get_max_threads());
+    jobs_ = static_cast<int>(c.integer_or("jobs", threads, Range::closed(1, 256)));
+  }
+
+  std::vector<Key> consumes() const override {
+    std::vector<Key> out{{Quantity::ShearStrength, pin_}};
+    for (const auto& i : interfaces_)
+      if (i.counterface != pin_) out.push_back({Quantity::ShearStrength, i.counterface});
+    return out;
+  }
+  std::vector<Key> provides() const override {
+    std::vector<Key> out;
+    for (const auto& i : interfaces_) out.push_back({Quantity::InterfaceLaw, i.pair()});
+    return out;
+  }
+
+  void run(Exchange& exchange, RunContext& ctx) override {
+    for (const auto& i : interfaces_) {
+      const auto top = particle_material(exchange, i.pin);
+      const auto bottom = particle_material(exchange, i.counterface);
+      std::vector<JunctionStrengthSpec> specs;
+      for (double ratio : ratios_)
+        for (double p : pressures_) {
+          JunctionStrengthSpec s = base_;
+          s.top = top.material;
+          s.bottom = bottom.material;
+          s.contact_ratio = ratio;
+          s.pressure = p;
+          specs.push_back(s);
+        }
+      const auto results = run_all(specs, i.pair());
+
+      std::vector<dem::JunctionPoint> points;
+      for (const auto& r : results) {
+        const auto& [s, res, cached] = r;
+        points.push_back({s.pressure, res.initial_contact_ratio, res.loaded_contact_ratio, res.final_contact_ratio,
+                          res.peak_tangential, res.steady_tangential,
+                          res.outcome == JunctionStrengthResult::Outcome::Flattened});
+      }
+      const auto fit = dem::fit_junction_law(points);
+      materials::InterfaceLaw law;
+      law.pair = i.pair();
+      law.governing = top.material.shear_strength <= bottom.material.shear_strength ? i.pin : i.counterface;
+      law.p_crit = fit.p_crit;
+      law.mu0 = fit.mu0;
+      if (!(law.p_crit > 0.0) || !std::isfinite(law.p_crit) || !(law.mu0 > 0.0) || !std::isfinite(law.mu0))
+        throw NumericalError("nano/dem", 0, "junction law fit of " + law.pair,
+                             fmt::format("p_crit = {:g} Pa, μ0 = {:g}: no usable fit from {} runs", law.p_crit, law.mu0,
+                                         fit.runs));
+
+      const std::string tag = i.tag();
+      ctx.report("p_crit_" + tag, law.p_crit, "Pa",
+                 fmt::format("critical pressure of the {} junctions (7.6) from the DEM contact ratios ({})", law.pair,
+                             fit.p_crit_source));
+      ctx.report("mu0_" + tag, law.mu0, "1",
+                 fmt::format("steady friction coefficient of {}: DEM sliding strength {:.3g} GPa / p_crit (9.13)", law.pair,
+                             fit.steady_strength / 1e9));
+      ctx.report("steady_slope_" + tag, materials::steady_slope_rms(law.p_crit, e_star_), "1",
+                 "steady RMS slope √(2π) p_crit/E* with E* of the pin material (9.17)");
+      ctx.report("sigma_fit_" + tag, fit.shear_strength, "Pa",
+                 fmt::format("σ of peak p_T = (A/A0) σ (7.9) over the {} DEM runs", fit.runs));
+      const nlohmann::json fit_json = {
+          {"shear_strength", fit.shear_strength}, {"shear_strength_relative_rms", fit.shear_strength_rms},
+          {"full_contact_peak", fit.full_contact_peak}, {"steady_strength", fit.steady_strength},
+          {"p_crit", fit.p_crit}, {"p_crit_relative_rms", fit.p_crit_rms}, {"p_crit_source", fit.p_crit_source},
+          {"mu0", fit.mu0}, {"mu0_direct", fit.mu0_direct}, {"runs", fit.runs}, {"crushed", fit.crushed},
+          {"flattened", fit.flattened}, {"flattened_into_full_contact", fit.saturated}};
+      write_outputs(ctx, i, results, fit);
+
+      Provenance p = provenance_;
+      p.parameters["particles"] = {{"top", top.description}, {"bottom", bottom.description}};
+      p.parameters["fit"] = fit_json;
+      nlohmann::json runs = nlohmann::json::array();
+      for (const auto& [s, res, cached] : results)
+        runs.push_back({{"contact_ratio", s.contact_ratio}, {"pressure", s.pressure}, {"key", run_key(s)},
+                        {"cached", cached}, {"initial_contact_ratio", res.initial_contact_ratio},
+                        {"loaded_contact_ratio", res.loaded_contact_ratio},
+                        {"final_contact_ratio", res.final_contact_ratio}, {"peak_p_T", res.peak_tangential},
+                        {"steady_p_T", res.steady_tangential}, {"outcome", res.verdict()}});
+      p.parameters["runs"] = runs;
+      exchange.put(Key{Quantity::InterfaceLaw, law.pair}, law, std::move(p));
+    }
+  }
+
+ private:
+  struct ParticleMaterial {
+    dem::CohesiveMaterial material;
+    nlohmann::json description;
+  };
+  using Run = std::tuple<JunctionStrengthSpec, JunctionStrengthResult, bool>;
+
+  // The DEM targets of a material: its record, with σ_m,T = σ_dyn (or σ_max)
+  // of the molecular law at the working pressure — p_crit of (7.5) unless
+  // given: the local pressure of a sliding junction flattened to A_min (7.6).
+  ParticleMaterial particle_material(const Exchange& exchange, const std::string& name) const {
+    const auto& law = exchange.get<materials::StrengthLaw>({Quantity::ShearStrength, name});
+    const auto& record = library_.get(name);
+    const double p_work = working_pressure_ ? *working_pressure_ : materials::critical_pressure(law);
+    ParticleMaterial out;
+    auto& m = out.material;
+    m = dem::cohesive_material(record, scaling_exponent_, record.restitution ? *record.restitution : restitution_);
+    m.shear_strength = strength_ == "dynamic" ? law.sigma_dyn(p_work) : law.sigma_max(p_work);
+    const bool clamped = m.poisson > 0.25;
+    if (clamped) m.poisson = 0.25;  // central pair forces: ν ≤ 1/4 (6.52)
+    dem::require_modelled(m);
+    out.description = {{"material", name}, {"young", m.young}, {"poisson", m.poisson},
+                       {"poisson_record", record.poisson}, {"poisson_clamped", clamped},
+                       {"tensile_strength", m.tensile_strength}, {"shear_strength", m.shear_strength},
+                       {"shear_strength_from", fmt::format("{} of the molecular law at {:.4g} GPa ({})",
+                                                           strength_ == "dynamic" ? "σ_dyn" : "σ_max", p_work / 1e9,
+                                                           working_pressure_ ? "working_pressure" : "p_crit (7.5)")},
+                       {"surface_energy", m.surface_energy}, {"density", m.density},
+                       {"restitution", m.restitution}, {"restitution_from", record.restitution ? "record" : "restitution key"},
+                       {"scaling_exponent", m.scaling_exponent}};
+    return out;
+  }
+
+  // Runs (or reads) every junction, on jobs_ threads; each run is computed
+  // once per process and once per cache.
+  std::vector<Run> run_all(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair) const {
+    std::vector<std::string> keys;
+    for (const auto& s : specs) keys.push_back(run_key(s));
+    std::vector<std::shared_future<JunctionStrengthResult>> futures(specs.size());
+    std::vector<char> computed(specs.size(), 0);
+    std::atomic<std::size_t> next{0};
+    auto work = [&](bool own_thread) {
+      if (own_thread) omp_set_num_threads(1);
+      for (std::size_t k = next++; k < specs.size(); k = next++) {
+        auto claim = JunctionRuns::instance().claim(keys[k]);
+        futures[k] = claim.result;
+        if (!claim.mine) continue;  // another run of this process computes it
+        try {
+          bool fresh = false;
+          claim.mine->set_value(compute(specs[k], keys[k], pair, fresh));
+          computed[k] = fresh ? 1 : 0;
+        } catch (...) {
+          JunctionRuns::instance().forget(keys[k]);
+          claim.mine->set_exception(std::current_exception());
+        }
+      }
+    };
+    // At most the OpenMP threads of this run (one per run inside a sweep,
+    // whose runs then share the junctions through JunctionRuns).
+    const int threads = std::min({jobs_, std::max(1, omp_get_max_threads()), static_cast<int>(specs.size())});
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, true);
+    work(false);
+    for (auto& t : pool) t.join();
+    std::vector<Run> out;
+    for (std::size_t k = 0; k < specs.size(); ++k) out.emplace_back(specs[k], futures[k].get(), computed[k] == 0);
+    return out;
+  }
+
+  JunctionStrengthResult compute(const JunctionStrengthSpec& spec, const std::string& key, const std::string& pair,
+                                 bool& fresh) const {
+    const fs::path entry = cache_dir_ / (key + ".json");
+    if (cache_) {
+      std::error_code ec;
+      if (fs::is_regular_file(entry, ec)) {
+        try {
+          std::ifstream in(entry);
+          return from_json(nlohmann::json::parse(in));
+        } catch (const std::exception& e) {
+          log::warn("nano/dem: ignoring the unreadable cache entry {}: {}", entry.string(), e.what());
+        }
+      }
+    }
+    log::info("nano/dem: {} junction D/L = {:g} at p_N = {:.3g} GPa ...", pair, spec.contact_ratio, spec.pressure / 1e9);
+    auto result = dem::run_junction_strength(spec);
+    fresh = true;
+    log::info("nano/dem: {} D/L = {:g}, p_N = {:.3g} GPa: peak p_T {:.3g} GPa, steady {:.3g} GPa, A/A0 {:.2f} → {:.2f} ({})",
+              pair, spec.contact_ratio, spec.pressure / 1e9, result.peak_tangential / 1e9,
+              result.steady_tangential / 1e9, result.initial_contact_ratio, result.final_contact_ratio,
+              result.verdict());
+    if (cache_) {
+      std::error_code ec;
+      fs::create_directories(cache_dir_, ec);
+      if (ec)
+        throw InputError(fmt::format("nano/dem: cannot create the cache folder {}: {}; set scale.nano.cache_dir or "
+                                     "WEARSCALE_CACHE to a writable folder, or scale.nano.cache = false",
+                                     cache_dir_.string(), ec.message()));
+      write_file_atomically(entry, to_json(result).dump() + "\n");
+    }
+    return result;
+  }
+
+  // junction_<tag>.csv, /nano/<tag> in run.h5, and p_T against p_N with the
+  // model lines (7.9)-(7.10) when gnuplot is there.
+  void write_outputs(RunContext& ctx, const Interface& i, const std::vector<Run>& runs,
+                     const dem::JunctionLawFit& fit) const {
+    std::vector<double> ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached;
+    for (const auto& [s, r, from_cache] : runs) {
+      ratio.push_back(s.contact_ratio);
+      p_n.push_back(s.pressure);
+      c0.push_back(r.initial_contact_ratio);
+      cl.push_back(r.loaded_contact_ratio);
+      cf.push_back(r.final_contact_ratio);
+      peak.push_back(r.peak_tangential);
+      steady.push_back(r.steady_tangential);
+      normal.push_back(r.normal);
+      outcome.push_back(static_cast<double>(r.outcome));
+      rolling.push_back(r.rolling_rate);
+      cached.push_back(from_cache ? 1.0 : 0.0);
+    }
+    const std::vector<std::string> names{"D_over_L", "p_N", "A_over_A0_initial", "A_over_A0_loaded", "A_over_A0_final",
+                                         "p_T_peak", "p_T_steady", "p_N_measured", "outcome", "rolling_rate", "cached"};
+    const std::string group = "/nano/" + i.tag();
+    ctx.h5().write_table(group + "/runs", names, {ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached},
+                         {"1", "Pa", "1", "1", "1", "Pa", "Pa", "Pa", "1", "1", "1"});
+    ctx.h5().set_attribute(group + "/runs", "outcome", "0 flattened, 1 sheared, 2 detached");
+    ctx.h5().write_scalar(group + "/sigma_fit", fit.shear_strength, "Pa");
+    ctx.h5().write_scalar(group + "/p_crit", fit.p_crit, "Pa");
+    ctx.h5().write_scalar(group + "/mu0", fit.mu0, "1");
+    const auto csv = ctx.output_dir() / ("junction_" + i.tag() + ".csv");
+    write_csv(csv, names, {ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached},
+              {fmt::format("nano/dem junction runs of {} (§7.1.1), SI units; outcome: 0 flattened, 1 sheared, 2 detached",
+                           i.pair()),
+               fmt::format("fit (§7.1.2): sigma = {:.6g} Pa (rel. RMS {:.3f}), sliding strength {:.6g} Pa, p_crit = {:.6g} Pa "
+                           "({}, rel. RMS {:.3f}), mu0 = {:.6g}",
+                           fit.shear_strength, fit.shear_strength_rms, fit.steady_strength, fit.p_crit,
+                           fit.p_crit_source, fit.p_crit_rms, fit.mu0)});
+    ctx.add_file(csv);
+    if (auto png = plot_junction_strength(csv, ctx.output_dir() / ("junction_" + i.tag() + ".png"),
+                                          fmt::format("{} junctions (§7.1.1) and the fitted model (7.9)-(7.10)", i.pair()),
+                                          ratios_, fit.shear_strength, fit.p_crit))
+      ctx.add_file(*png);
+  }
+
+  Provenance provenance_;
+  materials::MaterialLibrary library_;
+  std::string pin_;
+  std::vector<Interface> interfaces_;
+  double e_star_ = 0.0;
+  JunctionStrengthSpec base_;
+  std::vector<double> ratios_, pressures_;
+  std::string strength_;
+  std::optional<double> working_pressure_;
+  double scaling_exponent_ = 0.5, restitution_ = 0.9;
+  bool clamp_poisson_ = true, cache_ = true;
+  fs::path cache_dir_;
+  int jobs_ = 1;
+};
+
+}  // namespace
+
+void register_nano_dem(ScaleRegistry& registry) {
+  registry.add({"nano", "dem",
+                "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear rate per "
+                "interface, cached",
+                {"ShearStrength(pin, disc, layer)"},
+                {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"}},
+               [](const ScaleSetup& s) { return std::make_unique<NanoDem>(s); });
+}
+
+}  // namespace wearscale::coupling
