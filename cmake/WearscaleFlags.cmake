@@ -14,6 +14,11 @@ set(WEARSCALE_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   list(APPEND WEARSCALE_WARNINGS -Wno-restrict)
 endif()
+# Clang reports `omp simd` loops it leaves scalar (e.g. under sanitizers):
+# a performance note, not a defect.
+if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+  list(APPEND WEARSCALE_WARNINGS -Wno-pass-failed)
+endif()
 
 if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
   if(WEARSCALE_NATIVE)
@@ -30,7 +35,19 @@ add_library(wearscale_flags INTERFACE)
 target_compile_options(wearscale_flags INTERFACE
   $<$<COMPILE_LANGUAGE:CXX>:${WEARSCALE_WARNINGS} ${WEARSCALE_ARCH_FLAGS} -fno-math-errno>)
 
-if(WEARSCALE_SANITIZE)
-  target_compile_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
-  target_link_options(wearscale_flags INTERFACE -fsanitize=address,undefined)
+# Sanitizers: AddressSanitizer + UndefinedBehaviorSanitizer, every UB report
+# fatal (so a finding fails its test instead of scrolling by).
+if(WEARSCALE_SANITIZE OR WEARSCALE_FUZZ)
+  target_compile_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=undefined
+                         -fno-omit-frame-pointer)
+  target_link_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=undefined)
+endif()
+# Fuzzing (tests/fuzz): libFuzzer needs clang; every library is instrumented
+# for coverage so the fuzzer can steer into the readers' branches.
+if(WEARSCALE_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "WEARSCALE_FUZZ needs clang (libFuzzer): configure with -DCMAKE_CXX_COMPILER=clang++ "
+                        "-DCMAKE_C_COMPILER=clang (Debian: apt-get install clang libclang-rt-14-dev libomp-14-dev)")
+  endif()
+  target_compile_options(wearscale_flags INTERFACE -fsanitize=fuzzer-no-link)
 endif()

@@ -1,4 +1,4 @@
-// wearscale run CASE.toml [--set KEY=VALUE]... [--out DIR] [--json]
+// wearscale run CASE.toml [--set KEY=VALUE]... [--out DIR] [--resume DIR] [--json]
 #include <algorithm>
 #include <iostream>
 
@@ -53,9 +53,15 @@ Command add_run(CLI::App& app) {
       ->expected(1)
       ->allow_extra_args(false);
   cmd->add_option("--out", *out, "Output folder (default: [output].dir of the case, else out/<case name>)");
+  auto resume = std::make_shared<std::string>();
+  cmd->add_option("--resume", *resume,
+                  "Continue the killed or interrupted run whose output folder is DIR from its checkpoint (same case "
+                  "and --set options; a sweep reruns only its unfinished runs)")
+      ->type_name("DIR");
   cmd->add_flag("--json", *json, "Print one JSON object with the headline results and resolved parameters");
-  return [options, json, out]() {
+  return [options, json, out, resume]() {
     if (!out->empty()) options->output_dir = *out;
+    if (!resume->empty()) options->resume_dir = *resume;
     const auto summary = coupling::run_case(*options);
     if (*json) {
       std::cout << summary.to_json().dump(2) << '\n';

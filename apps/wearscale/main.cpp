@@ -1,7 +1,9 @@
 // wearscale: friction and adhesive wear across scales.
 //
 // Exit status: 0 success, 2 bad input (message names file, key, value and the
-// allowed range), 1 numerical failure (message names solver, step, quantity).
+// allowed range), 1 numerical failure (message names solver, step, quantity),
+// 130 stopped by SIGINT/SIGTERM (checkpoints saved, unfinished files removed),
+// 3 internal error.
 #include <omp.h>
 
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include "commands.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 
 int main(int argc, char** argv) {
@@ -56,17 +59,27 @@ int main(int argc, char** argv) {
     omp_set_num_threads(threads);
     FFTPlanCache::global().set_threads(threads);
   }
+  install_interrupt_handlers();
   try {
     for (auto* sub : app.get_subcommands())
       if (commands.count(sub) != 0) return commands.at(sub)();
     return exit_bad_input;
-  } catch (const InputError& e) {
+  } catch (const Interrupted& e) {
     log::error("{}", e.what());
-    return exit_bad_input;
-  } catch (const NumericalError& e) {
-    log::error("{}", e.what());
-    return exit_numerical_failure;
+    return exit_interrupted;
   } catch (const std::exception& e) {
+    if (interrupt_requested()) {  // a failure caused by the stop, e.g. a child process killed by the same Ctrl-C
+      log::error("interrupted by a signal ({})", e.what());
+      return exit_interrupted;
+    }
+    if (dynamic_cast<const InputError*>(&e) != nullptr) {
+      log::error("{}", e.what());
+      return exit_bad_input;
+    }
+    if (dynamic_cast<const NumericalError*>(&e) != nullptr) {
+      log::error("{}", e.what());
+      return exit_numerical_failure;
+    }
     log::error("internal error: {}", e.what());
     return 3;
   }

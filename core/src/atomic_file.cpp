@@ -1,6 +1,7 @@
 #include "wearscale/core/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -50,7 +51,31 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
       io_error("cannot write", tmp);
     }
   }
-  commit_file(tmp, path);
+  try {
+    commit_file(tmp, path);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);  // never leave the temporary behind
+    throw;
+  }
+}
+
+std::size_t remove_stale_partials(const std::filesystem::path& dir) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const auto mark = name.rfind(".partial-");
+    if (name.empty() || name.front() != '.' || mark == std::string::npos) continue;
+    const std::string digits = name.substr(mark + 9);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const long pid = std::stol(digits);
+    if (pid <= 0 || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    std::error_code rm;
+    std::filesystem::remove_all(it->path(), rm);
+    if (!rm) ++removed;
+  }
+  return removed;
 }
 
 }  // namespace wearscale

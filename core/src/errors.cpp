@@ -19,6 +19,8 @@ NumericalError::NumericalError(const std::string& solver, long step, const std::
     : std::runtime_error(fmt::format("numerical failure in {} at step {}: {}: {}", solver, step,
                                      quantity, detail)),
       solver_(solver),
-      step_(step) {}
+      step_(step),
+      quantity_(quantity),
+      detail_(detail) {}
 
 }  // namespace wearscale

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/core/atomic_file.hpp"
+
 namespace wearscale {
 
 namespace detail {
@@ -129,10 +131,24 @@ bool FFTPlanCache::import_wisdom(const std::filesystem::path& file) {
 void FFTPlanCache::export_wisdom(const std::filesystem::path& file) const {
   std::lock_guard lock(planner_mutex());
   // Wisdom is a cache: write it beside and rename, never leave half a file.
-  const auto tmp = file.string() + ".partial";
+  const auto tmp = partial_path(file);
   if (fftw_export_wisdom_to_filename(tmp.c_str()) == 0)
     throw std::runtime_error("cannot write FFTW wisdom to " + file.string());
-  std::filesystem::rename(tmp, file);
+  commit_file(tmp, file);
+}
+
+std::string FFTPlanCache::export_wisdom_string() const {
+  std::lock_guard lock(planner_mutex());
+  char* text = fftw_export_wisdom_to_string();
+  if (text == nullptr) return {};
+  std::string out(text);
+  fftw_free(text);
+  return out;
+}
+
+bool FFTPlanCache::import_wisdom_string(const std::string& wisdom) {
+  std::lock_guard lock(planner_mutex());
+  return fftw_import_wisdom_from_string(wisdom.c_str()) != 0;
 }
 
 std::size_t FFTPlanCache::size() const {

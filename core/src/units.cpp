@@ -40,6 +40,9 @@ std::string Dimension::to_string() const {
 
 namespace {
 
+constexpr int kMaxExponent = 12;          // of one unit symbol: m^12 is already absurd
+constexpr int kMaxTotalExponent = 1000;   // of the whole quantity, far from int overflow
+
 struct UnitDef {
   std::string_view symbol;
   double factor;
@@ -114,6 +117,11 @@ Quantity parse_quantity(std::string_view text) {
       ++pos;
       auto [e2, ec2] = std::from_chars(text.data() + pos, text.data() + text.size(), power);
       if (ec2 != std::errc()) throw std::invalid_argument("expected an integer exponent after '^' in '" + std::string(text) + "'");
+      // Bounded so that dimension exponents cannot overflow (found by fuzzing: "Pa^1553714283").
+      if (power < -kMaxExponent || power > kMaxExponent)
+        throw std::invalid_argument("exponent " + std::to_string(power) + " in '" + std::string(text) +
+                                    "' is out of range; allowed: -" + std::to_string(kMaxExponent) + " to " +
+                                    std::to_string(kMaxExponent));
       pos = static_cast<std::size_t>(e2 - text.data());
     }
     if (divide) power = -power;
@@ -124,7 +132,13 @@ Quantity parse_quantity(std::string_view text) {
   }
   if (divide) throw std::invalid_argument("dangling '/' in '" + std::string(text) + "'");
   (void)any_unit;
-  return {value * factor, dim};
+  const double si = value * factor;
+  if (std::isfinite(value) && !std::isfinite(si))
+    throw std::invalid_argument("'" + std::string(text) + "' overflows in SI units");
+  for (int e : dim.exponent)
+    if (e < -kMaxTotalExponent || e > kMaxTotalExponent)
+      throw std::invalid_argument("'" + std::string(text) + "' has an implausible dimension");
+  return {si, dim};
 }
 
 }  // namespace wearscale::units

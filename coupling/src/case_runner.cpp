@@ -7,17 +7,22 @@
 #include <chrono>
 #include <ctime>
 #include <exception>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/fft.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/units.hpp"
@@ -88,36 +93,105 @@ struct PreparedRun {
   Config cfg;
   Pipeline pipeline;
   RunSummary summary;
+  CheckpointPolicy policy;
+  PlanRigor fft_rigor = PlanRigor::Measure;
+  std::string fingerprint;                 // the parameters that determine the results
+  std::optional<Checkpointer> checkpoints;
+  bool resume = false;                     // continues from its checkpoint
+  bool complete = false;                   // resumed, but it had finished: its outputs stand
 };
 
+// The resolved case without what does not change the results (how often to
+// checkpoint, where to write, the sweep around a run).
+std::string fingerprint_of(nlohmann::json parameters) {
+  if (parameters.is_object())
+    for (const char* key : {"run", "output", "sweep"}) parameters.erase(key);
+  return parameters.dump();
+}
+
 PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out) {
-  PreparedRun run{std::move(cfg_in), {}, {}};
+  PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false};
   Config& cfg = run.cfg;
   run.summary.case_name = cfg.string("case.name");
   cfg.string_or("case.description", "");
   const std::string case_dir = cfg.string_or("output.dir", "out/" + run.summary.case_name);
   run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
   cfg.mark_used("sweep");  // read by run_case
+  // [run]: how the run is carried out, not what it computes.
+  const Config r = cfg.section("run");
+  run.policy.interval = r.number_or("checkpoint_interval", 600.0, Range::non_negative(), units::time);
+  run.policy.every_steps = r.integer_or("checkpoint_steps", 0, Range::non_negative());
+  run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
+                                                                                                : PlanRigor::Measure;
   run.pipeline = build_pipeline(cfg);
   cfg.reject_unknown_keys();
   run.summary.scales = run.pipeline.ids();
   run.summary.parameters = cfg.to_json();
+  run.fingerprint = fingerprint_of(run.summary.parameters);
   return run;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// What --resume finds in a run's folder: a checkpoint to continue from, the
+// summary of a run that had completed, or nothing yet (it starts afresh).
+void find_resume_point(PreparedRun& run) {
+  const auto dir = run.summary.output_dir;
+  run.checkpoints.emplace(dir / "checkpoint.h5", run.fingerprint, run.policy);
+  std::error_code ec;
+  if (std::filesystem::exists(dir / "checkpoint.h5", ec)) {
+    run.checkpoints->load();
+    run.resume = true;
+    return;
+  }
+  const auto summary_file = dir / "summary.json";
+  if (!std::filesystem::exists(summary_file, ec)) {
+    log::info("{}: no checkpoint yet: the run starts from the beginning", dir.string());
+    return;
+  }
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(slurp(summary_file));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a wearscale summary ({})", summary_file.string(), e.what()));
+  }
+  const std::string was = fingerprint_of(j.value("parameters", nlohmann::json::object()));
+  if (was != run.fingerprint) {
+    const std::string diff = describe_case_difference(was, run.fingerprint);
+    throw InputError(fmt::format("{}: this run completed with other parameters{}; resume with the case file and --set "
+                                 "options it was run with, or write to another folder",
+                                 summary_file.string(), diff.empty() ? "" : " (" + diff + ")"));
+  }
+  run.summary.results = j.value("results", nlohmann::json::object());
+  for (const auto& f : j.value("files", nlohmann::json::array())) run.summary.files.emplace_back(f.get<std::string>());
+  run.complete = true;
 }
 
 void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
   RunSummary& summary = run.summary;
+  if (run.complete) {
+    log::info("{}: already complete", summary.output_dir.string());
+    return;
+  }
   std::error_code ec;
   std::filesystem::create_directories(summary.output_dir, ec);
   if (ec)
     throw InputError(fmt::format("output folder {}: cannot create it: {}", summary.output_dir.string(), ec.message()));
+  remove_stale_partials(summary.output_dir);  // left by a killed run
+  if (!run.checkpoints) run.checkpoints.emplace(summary.output_dir / "checkpoint.h5", run.fingerprint, run.policy);
+  if (!run.resume) run.checkpoints->discard();  // a fresh run: an older checkpoint must not be resumed later
   H5Writer h5(summary.output_dir / "run.h5");
   h5.set_attribute("/", "case_file", options.case_file.string());
   h5.set_attribute("/", "case_toml", run.cfg.to_toml());
   h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
   h5.set_attribute("/", "created", utc_now());
 
-  RunContext context(summary.output_dir, h5, show_progress);
+  RunContext context(summary.output_dir, h5, show_progress, &*run.checkpoints);
   Exchange exchange;
   run.pipeline.run(exchange, context);
 
@@ -148,6 +222,19 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
       summary.files.push_back(*png);
   write_file_atomically(summary.output_dir / "summary.json", summary.to_json().dump(2) + "\n");
   summary.files.push_back(summary.output_dir / "summary.json");
+  if (run.checkpoints->saves() > 0)
+    log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
+               run.checkpoints->seconds_saving());
+  run.checkpoints->discard();  // complete: nothing to resume
+}
+
+// How to continue an interrupted run, added to the Interrupted message.
+[[noreturn]] void rethrow_interrupted(const Interrupted& e, const RunOptions& options,
+                                      const std::filesystem::path& dir) {
+  std::string sets;
+  for (const auto& o : options.overrides) sets += fmt::format(" --set '{}'", o);
+  throw Interrupted(fmt::format("{}; continue with: wearscale run {}{} --resume {}", e.what(),
+                                options.case_file.string(), sets, dir.string()));
 }
 
 std::string label_of(const std::string& key, const std::string& value) {
@@ -170,13 +257,20 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   sweep.sweep_key = key;
   sweep.sweep_values = values;
 
-  // Every run is checked before any starts.
+  // Every run is checked before any starts; resuming, every checkpoint is
+  // read (and its FFT plans imported) before any run makes a plan.
   std::vector<PreparedRun> runs;
   for (const auto& v : values) {
     if (!probe.has(key))
       throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
     runs.push_back(prepare(load(options, {key + "=" + v}), sweep.output_dir / label_of(key, v)));
   }
+  if (options.resume_dir) {
+    for (auto& r : runs) find_resume_point(r);
+    const auto finished = std::count_if(runs.begin(), runs.end(), [](const PreparedRun& r) { return r.complete; });
+    log::info("resuming the sweep in {}: {} of {} runs complete", sweep.output_dir.string(), finished, runs.size());
+  }
+  FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
   sweep.scales = runs.front().summary.scales;
   sweep.parameters = runs.front().summary.parameters;
   sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
@@ -190,7 +284,7 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   Progress progress("sweep", static_cast<double>(runs.size()), "runs");
   auto work = [&] {
     if (workers > 1) omp_set_num_threads(1);  // the cores are shared out among runs
-    for (std::size_t k = next++; k < runs.size(); k = next++) {
+    for (std::size_t k = next++; k < runs.size() && !interrupt_requested(); k = next++) {
       try {
         execute(runs[k], options, false);
       } catch (...) {
@@ -205,8 +299,13 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   work();
   for (auto& t : pool) t.join();
   progress.finish();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  try {
+    throw_if_interrupted("sweep");  // also when the signal came between runs
+    for (auto& e : errors)
+      if (e) std::rethrow_exception(e);
+  } catch (const Interrupted& e) {
+    rethrow_interrupted(e, options, sweep.output_dir);
+  }
 
   // The sweep table: the swept value, then every headline figure of the runs.
   std::vector<std::string> names;
@@ -247,13 +346,33 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
 
 }  // namespace
 
-RunSummary run_case(const RunOptions& options) {
+RunSummary run_case(const RunOptions& options_in) {
+  RunOptions options = options_in;
+  if (options.resume_dir) {
+    const auto& dir = *options.resume_dir;
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec))
+      throw InputError(fmt::format("--resume {}: no such folder; give the output folder of the run to continue",
+                                   dir.string()));
+    if (options.output_dir && std::filesystem::weakly_canonical(*options.output_dir, ec) !=
+                                  std::filesystem::weakly_canonical(dir, ec))
+      throw InputError(fmt::format("--out {} and --resume {} name different folders; a resumed run writes into the "
+                                   "folder it continues",
+                                   options.output_dir->string(), dir.string()));
+    options.output_dir = dir;
+  }
   Config probe = load(options, {});
   if (probe.has("sweep")) return run_sweep(options, probe);
   PreparedRun run = prepare(std::move(probe), options.output_dir);  // a single run: the file is parsed once
+  if (options.resume_dir) find_resume_point(run);
+  FFTPlanCache::global().set_rigor(run.fft_rigor);
   log::info("case '{}': {} → {}", run.summary.case_name, fmt::join(run.summary.scales, " → "),
             run.summary.output_dir.string());
-  execute(run, options, true);
+  try {
+    execute(run, options, true);
+  } catch (const Interrupted& e) {
+    rethrow_interrupted(e, options, run.summary.output_dir);
+  }
   return run.summary;
 }
 

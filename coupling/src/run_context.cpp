@@ -2,6 +2,8 @@
 
 namespace wearscale::coupling {
 
+Checkpointer& RunContext::checkpoints() { return checkpoints_ != nullptr ? *checkpoints_ : no_checkpoints_; }
+
 void RunContext::report(const std::string& name, double value, const std::string& unit,
                         const std::string& description) {
   results_[name] = {{"value", value}, {"unit", unit}, {"description", description}};

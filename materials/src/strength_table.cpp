@@ -65,10 +65,20 @@ bool is_hdf5(const std::filesystem::path& p) {
 }
 
 StrengthTable read_csv(const std::filesystem::path& file) {
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open strength table", file.string()));
+  std::stringstream content;
+  content << in.rdbuf();
+  return parse_strength_table_csv(content.str(), file.string());
+}
+
+}  // namespace
+
+StrengthTable parse_strength_table_csv(std::string_view text, const std::string& origin) {
+  const std::filesystem::path file = origin;
+  std::istringstream in{std::string(text)};
   StrengthTable t;
-  t.origin = file.string();
+  t.origin = origin;
   std::string line;
   int line_no = 0;
   int col[3] = {-1, -1, -1};
@@ -125,6 +135,8 @@ StrengthTable read_csv(const std::filesystem::path& file) {
   check(t, [&](std::size_t r) { return fmt::format("{}:{}", file.string(), row_lines[r]); });
   return t;
 }
+
+namespace {
 
 StrengthTable read_h5(const std::filesystem::path& file) {
   H5Reader r(file);

@@ -195,8 +195,34 @@ TEST(NormalContact, NonConvergenceIsANumericalErrorNamingTheSolver) {
     FAIL() << "two iterations cannot reach 1e-14";
   } catch (const NumericalError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("Polonsky"));
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("last errors"));
+    EXPECT_THAT(e.solver(), ::testing::HasSubstr("Polonsky"));
+    EXPECT_EQ(e.step(), 2);
+    EXPECT_EQ(e.quantity(), "orthogonality error");
+    // The residual history: where it started and the errors of the last iterations.
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("at the first iteration"));
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("last 2 errors"));
   }
+}
+
+TEST(NormalContact, ARestoredWarmStartGivesTheSameSolveBitForBit) {
+  // What a checkpoint keeps of the solver between solves: the last pressure
+  // and mean gap. A fresh solver given them solves exactly as the original.
+  const Grid2D g = Grid2D::square(32, 1.0);
+  NormalContact a(paraboloid(g, 0.5), 1.0);
+  a.solve_mean_pressure(1e-3, {1e-10, 1000});
+  const std::vector<double> p(a.pressure().begin(), a.pressure().end());
+  const double shift = a.warm_gap_shift();
+  RealField next = paraboloid(g, 0.45);
+  a.set_surface(next);
+  const auto ra = a.solve_mean_pressure(1.2e-3, {1e-10, 1000});
+
+  NormalContact b(next, 1.0);
+  b.set_warm_start(p, shift);
+  const auto rb = b.solve_mean_pressure(1.2e-3, {1e-10, 1000});
+  EXPECT_EQ(ra.iterations, rb.iterations);
+  EXPECT_EQ(ra.error, rb.error);
+  for (std::size_t k = 0; k < g.size(); ++k) ASSERT_EQ(a.pressure()[k], b.pressure()[k]) << k;
+  EXPECT_THROW(b.set_warm_start(std::vector<double>(3, 0.0), 0.0), InputError);
 }
 
 TEST(NormalContact, GrowsFromAOnePointContactWhenTheLoadRises) {

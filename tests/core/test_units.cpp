@@ -53,3 +53,12 @@ TEST(Units, DimensionsPrintReadably) {
   EXPECT_EQ(dimensionless.to_string(), "1");
   EXPECT_EQ((length * length).to_string(), "m^2");
 }
+
+TEST(Units, HugeExponentsAndOverflowsAreRejected) {
+  // Found by fuzzing the topography reader ("# lx = 2 nm*Pa^1553714283"): the
+  // dimension exponents overflowed (undefined behaviour) instead of an error.
+  EXPECT_THROW(parse_quantity("2 Pa^1553714283"), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("2 m^-2147483648"), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("1e300 km^12"), std::invalid_argument);  // overflows in SI
+  EXPECT_EQ(parse_quantity("2 m^12").dimension, length.pow(12));
+}

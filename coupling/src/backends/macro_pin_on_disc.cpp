@@ -8,7 +8,9 @@
 
 #include "backends/backends.hpp"
 #include "backends/case_materials.hpp"
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/csv.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
@@ -71,22 +73,73 @@ class MacroPinOnDisc final : public Scale {
     s_.on_layer = exchange.get<materials::InterfaceLaw>({Quantity::InterfaceLaw, pin_ + "/" + layer_});
     tribometer::PinOnDisc model(s_);
 
+    // Resuming: the model, the samples so far and the field snapshots written
+    // before the checkpoint come back; the run then goes on from there.
     std::vector<tribometer::PinOnDiscSample> samples;
+    std::vector<Snapshot> snapshots;
+    std::size_t n = 0;
+    long adaptive_steps = 0;
+    double next_step = 0.0;
+    Checkpointer& checkpoints = ctx.checkpoints();
+    const CheckpointState* saved = checkpoints.restored(kOwner);
+    if (saved != nullptr) {
+      if (saved->text("integrator") != integrator_)
+        throw InputError(fmt::format("{}: saved by the {} integrator, the case asks for {}", saved->origin,
+                                     saved->text("integrator"), integrator_));
+      model.restore(*saved);
+      samples = load_samples(*saved);
+      snapshots = load_snapshots(*saved);
+      for (const auto& snap : snapshots) write_fields(ctx, model.grid(), snap);
+      n = static_cast<std::size_t>(saved->scalar("snapshot_counter"));
+      adaptive_steps = static_cast<long>(saved->scalar("adaptive_steps"));
+      next_step = saved->scalar("next_step");
+      log::info("resuming {} at s = {:g} m ({} samples, step {})", kOwner, model.distance(), samples.size(),
+                saved->step);
+    }
+    auto state = [&] {
+      CheckpointState st;
+      model.save(st);
+      st.put_text("integrator", integrator_);
+      save_samples(st, samples);
+      save_snapshots(st, snapshots);
+      st.put("snapshot_counter", static_cast<double>(n));
+      st.put("adaptive_steps", static_cast<double>(adaptive_steps));
+      st.put("next_step", next_step);
+      return st;
+    };
+
     Progress progress = ctx.show_progress() ? Progress("pin-on-disc", s_.distance * 1e3, "mm")
                                             : Progress::silent(s_.distance * 1e3);
-    std::size_t n = 0;
     auto observe = [&](const tribometer::PinOnDiscSample& x) {
       samples.push_back(x);
       progress.update(x.distance * 1e3);
-      if (fields_every_ > 0 && n++ % fields_every_ == 0) write_fields(ctx, model, fmt::format("/macro/fields/{:08.4f}", x.distance));
+      if (fields_every_ > 0 && n++ % fields_every_ == 0) {
+        snapshots.push_back(snapshot(model, fmt::format("/macro/fields/{:08.4f}", x.distance)));
+        write_fields(ctx, model.grid(), snapshots.back());
+      }
     };
-    if (integrator_ == "explicit")
-      model.run(observe);
-    else
-      tribometer::run_adaptive(model, adaptive_, observe);
+    if (integrator_ == "explicit") {
+      model.run([&](const tribometer::PinOnDiscSample& x) {
+        observe(x);
+        if (model.steps() < model.total_steps()) checkpoints.at_step(kOwner, model.steps(), state);
+      });
+    } else {
+      tribometer::AdaptiveOptions options = adaptive_;
+      options.initial_step = next_step;
+      options.observe_start = saved == nullptr;
+      options.steps_done = adaptive_steps;
+      const double end = s_.distance * (1.0 - 1e-12);
+      // Checkpoints (and a stop on SIGINT) only where the integrator restarts,
+      // so that a resumed run continues exactly as an uninterrupted one.
+      tribometer::run_adaptive(model, options, observe, [&](const tribometer::AdaptiveStatus& status) {
+        next_step = status.next_step;
+        adaptive_steps = status.steps;
+        if (status.segment_end && model.distance() < end) checkpoints.at_step(kOwner, adaptive_steps, state);
+      });
+    }
     progress.finish();
     report(ctx, model, samples);
-    write_fields(ctx, model, "/macro/final");
+    write_fields(ctx, model.grid(), snapshot(model, "/macro/final"));
     write_xdmf(ctx.output_dir() / "final_surfaces.xdmf", ctx.h5().final_path(), model.grid(),
                {{"/macro/final/pin", "pin"}, {"/macro/final/disc", "disc"}, {"/macro/final/pressure", "pressure"}});
     ctx.add_file(ctx.output_dir() / "final_surfaces.xdmf");
@@ -94,14 +147,81 @@ class MacroPinOnDisc final : public Scale {
   }
 
  private:
-  void write_fields(RunContext& ctx, const tribometer::PinOnDisc& model, const std::string& group) {
-    RealField disc(model.grid());
-    for (std::size_t i = 0; i < model.grid().nx; ++i)
-      for (std::size_t j = 0; j < model.grid().ny; ++j) disc(i, j) = model.disc_profile()[i];
-    ctx.h5().write_field(group + "/pin", model.pin_surface(), "m");
-    ctx.h5().write_field(group + "/disc", disc, "m");
-    ctx.h5().write_field(group + "/pressure", model.contact().pressure(), "Pa");
+  static constexpr const char* kOwner = "macro/bem-pin-on-disc";
+
+  // Surfaces and pressure at one distance (fields_every, and the final state).
+  struct Snapshot {
+    std::string group;
+    std::vector<double> pin, disc, pressure;  // pin and pressure n×n, disc one value per x column
+  };
+
+  static Snapshot snapshot(const tribometer::PinOnDisc& model, std::string group) {
+    return {std::move(group), {model.pin_surface().begin(), model.pin_surface().end()}, model.disc_profile(),
+            {model.contact().pressure().begin(), model.contact().pressure().end()}};
   }
+
+  static void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap) {
+    RealField pin(g), disc(g), pressure(g);
+    std::copy(snap.pin.begin(), snap.pin.end(), pin.begin());
+    std::copy(snap.pressure.begin(), snap.pressure.end(), pressure.begin());
+    for (std::size_t i = 0; i < g.nx; ++i)
+      for (std::size_t j = 0; j < g.ny; ++j) disc(i, j) = snap.disc[i];
+    ctx.h5().write_field(snap.group + "/pin", pin, "m");
+    ctx.h5().write_field(snap.group + "/disc", disc, "m");
+    ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa");
+  }
+
+  // The samples so far as columns of the checkpoint, and back.
+  static void save_samples(CheckpointState& st, const std::vector<tribometer::PinOnDiscSample>& x) {
+    std::vector<double> c[9];
+    for (const auto& e : x) {
+      const double row[9] = {e.distance,      e.friction,          e.pin_wear,     e.disc_wear, e.contact_fraction,
+                             e.layer_contact, e.substrate_contact, e.max_pressure, static_cast<double>(e.iterations)};
+      for (int k = 0; k < 9; ++k) c[k].push_back(row[k]);
+    }
+    for (int k = 0; k < 9; ++k) st.put(std::string("samples/") + kSampleColumns[k], c[k]);
+  }
+
+  static std::vector<tribometer::PinOnDiscSample> load_samples(const CheckpointState& st) {
+    const std::vector<double>* c[9];
+    for (int k = 0; k < 9; ++k) c[k] = &st.array(std::string("samples/") + kSampleColumns[k]);
+    std::vector<tribometer::PinOnDiscSample> x(c[0]->size());
+    for (int k = 1; k < 9; ++k)
+      if (c[k]->size() != x.size()) throw InputError(fmt::format("{}: sample columns of different lengths", st.origin));
+    for (std::size_t r = 0; r < x.size(); ++r)
+      x[r] = {(*c[0])[r], (*c[1])[r], (*c[2])[r], (*c[3])[r], (*c[4])[r],
+              (*c[5])[r], (*c[6])[r], (*c[7])[r], static_cast<int>((*c[8])[r])};
+    return x;
+  }
+
+  static void save_snapshots(CheckpointState& st, const std::vector<Snapshot>& snaps) {
+    std::string groups;
+    for (std::size_t k = 0; k < snaps.size(); ++k) {
+      groups += (k ? "\n" : "") + snaps[k].group;
+      st.put(fmt::format("snapshot{}/pin", k), snaps[k].pin);
+      st.put(fmt::format("snapshot{}/disc", k), snaps[k].disc);
+      st.put(fmt::format("snapshot{}/pressure", k), snaps[k].pressure);
+    }
+    st.put_text("snapshot_groups", groups);
+  }
+
+  static std::vector<Snapshot> load_snapshots(const CheckpointState& st) {
+    std::vector<Snapshot> out;
+    const std::string& groups = st.text("snapshot_groups");
+    std::size_t start = 0;
+    while (start < groups.size()) {
+      const auto end = std::min(groups.find('\n', start), groups.size());
+      const std::size_t k = out.size();
+      out.push_back({groups.substr(start, end - start), st.array(fmt::format("snapshot{}/pin", k)),
+                     st.array(fmt::format("snapshot{}/disc", k)), st.array(fmt::format("snapshot{}/pressure", k))});
+      start = end + 1;
+    }
+    return out;
+  }
+
+  static constexpr const char* kSampleColumns[9] = {"distance",          "friction",     "pin_wear",
+                                                    "disc_wear",         "contact_fraction", "layer_contact",
+                                                    "substrate_contact", "max_pressure", "iterations"};
 
   void report(RunContext& ctx, const tribometer::PinOnDisc& model, const std::vector<tribometer::PinOnDiscSample>& x) {
     std::vector<double> s, mu, v_pin, v_disc, area, on_layer, iterations;

@@ -47,7 +47,7 @@ NormalContact::NormalContact(const RealField& surface, double e_star)
 void NormalContact::set_surface(const RealField& surface) {
   if (!(surface.grid() == h_.grid())) throw std::invalid_argument("NormalContact::set_surface: grid changed");
   h_ = surface;
-  double mean = 0.0, max = -INFINITY;
+  double mean = 0.0, max = -std::numeric_limits<double>::infinity();
   for (double v : h_) {
     if (!std::isfinite(v)) throw InputError("normal contact: the surface has a NaN or infinite height");
     mean += v;
@@ -62,6 +62,17 @@ void NormalContact::set_surface(const RealField& surface) {
 }
 
 void NormalContact::reset() { p_.fill(0.0); }
+
+void NormalContact::set_warm_start(std::span<const double> pressure, double gap_shift) {
+  if (pressure.size() != p_.size())
+    throw InputError(fmt::format("normal contact: a warm start of {} pressures for a grid of {} points",
+                                 pressure.size(), p_.size()));
+  for (double v : pressure)
+    if (!std::isfinite(v) || v < 0.0) throw InputError("normal contact: a warm-start pressure is negative, NaN or infinite");
+  if (!std::isfinite(gap_shift)) throw InputError("normal contact: the warm-start mean gap is not finite");
+  std::copy(pressure.begin(), pressure.end(), p_.begin());
+  gap_shift_ = gap_shift;
+}
 
 void NormalContact::convolve(const RealField& in, RealField& out, double scale) {
   plan_->forward(in, spectrum_);
@@ -121,6 +132,7 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     p_.fill(p0);
   std::fill(t, t + n, 0.0);
 
+  double first_error = 0.0;
   bool conjugate = false;  // δ of Polonsky–Keer: false restarts steepest descent
   double g_norm_old = 0.0;
   double& shift = gap_shift_;  // the last mean gap: carried across solves (warm start)
@@ -173,6 +185,7 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     }
     const double error = err_num / (p_sum * h_rms_);
     if (!std::isfinite(error)) throw NumericalError(kSolver, it, "orthogonality error", "not finite (NaN in u or p)");
+    if (it == 0) first_error = error;
     history_.push_back(error);
     if (history_.size() > kHistory) history_.erase(history_.begin());
     if (error < opt.tolerance && penetrating == 0.0) {
@@ -207,7 +220,9 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     alpha = p0 * static_cast<double>(n) / new_sum;  // impose ⟨p⟩ = p0 (A.6c)
   }
   throw NumericalError(kSolver, opt.max_iterations, "orthogonality error",
-                       fmt::format("no convergence to {:g}; last errors: {:.3g}", opt.tolerance,
+                       fmt::format("no convergence to {:g} in {} iterations (ε = {:.3g} at the first iteration); "
+                                   "last {} errors: {:.3g}",
+                                   opt.tolerance, opt.max_iterations, first_error, history_.size(),
                                    fmt::join(history_, ", ")));
 }
 

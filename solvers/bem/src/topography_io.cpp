@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -128,16 +129,24 @@ RealField read_topography_text(const fs::path& file, const TopographySize& size)
   const std::string name = file.string();
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) throw InputError(fmt::format("{}: no such file", name));
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open for reading", name));
+  std::stringstream content;
+  content << in.rdbuf();
+  return parse_topography_text(content.str(), name, size);
+}
 
+RealField parse_topography_text(std::string_view content, const std::string& name, const TopographySize& size) {
+  const fs::path file = name;
   std::optional<double> lx, ly;
   std::vector<double> values;
   std::vector<std::string_view> fields;
   std::size_t rows = 0, cols = 0, first_row_line = 0, line_no = 0;
   bool header_allowed = true;
-  std::string line;
-  while (std::getline(in, line)) {
+  for (std::size_t start = 0; start < content.size();) {
+    const std::size_t end = std::min(content.find('\n', start), content.size());
+    const std::string_view line = content.substr(start, end - start);
+    start = end + 1;
     ++line_no;
     const std::string_view text = trim(line);
     if (text.empty()) continue;

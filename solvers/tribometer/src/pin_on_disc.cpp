@@ -78,13 +78,20 @@ void PinOnDisc::build_profile(double s) {
 void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pin_rate,
                          std::vector<double>* disc_rate) {
   const Grid2D& g = grid();
+  if (!std::isfinite(s)) throw NumericalError(kModel, solves_, "sliding distance", fmt::format("s = {}", s));
   build_profile(s);
+  for (std::size_t k = 0; k < profile_.size(); ++k)
+    if (!std::isfinite(profile_[k]))
+      throw NumericalError(kModel, solves_, "surface heights",
+                           fmt::format("{} at cell ({}, {}) at s = {:g} m (pin {}, disc {})", profile_[k], k / g.ny,
+                                       k % g.ny, s, pin_[k], disc_[k / g.ny]));
   contact_.set_surface(profile_);
   bem::ContactResult r;
   try {
     r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, 20000});
   } catch (const NumericalError& e) {
-    throw NumericalError(kModel, solves_, "contact at s = " + fmt::format("{:g} m", s), e.what());
+    throw NumericalError(kModel, solves_, fmt::format("contact at s = {:g} m", s),
+                         fmt::format("{} at iteration {}: {}: {}", e.solver(), e.step(), e.quantity(), e.detail()));
   }
   ++solves_;
   const double share_layer = pin_share(setup_.on_layer), share_substrate = pin_share(setup_.on_substrate);
@@ -126,6 +133,10 @@ void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pi
   out.disc_wear = disc_wear_;
   last_pin_volume_rate_ = pin_volume * g.cell_area();
   last_disc_volume_rate_ = disc_volume * g.cell_area();
+  if (!std::isfinite(out.friction) || !std::isfinite(last_pin_volume_rate_) || !std::isfinite(last_disc_volume_rate_))
+    throw NumericalError(kModel, solves_, "friction and wear rates",
+                         fmt::format("μ = {}, dV_pin/ds = {}, dV_disc/ds = {} at s = {:g} m", out.friction,
+                                     last_pin_volume_rate_, last_disc_volume_rate_, s));
 }
 
 PinOnDiscSample PinOnDisc::step() {
@@ -137,16 +148,53 @@ PinOnDiscSample PinOnDisc::step() {
   pin_wear_ += last_pin_volume_rate_ * ds;
   disc_wear_ += last_disc_volume_rate_ * ds;
   s_ += ds;
+  ++steps_;
   return sample;
 }
 
-void PinOnDisc::run(const std::function<void(const PinOnDiscSample&)>& observe) {
+long PinOnDisc::total_steps() const {
   const double ds = setup_.velocity * setup_.time_step;
-  const auto steps = static_cast<long>(std::ceil(setup_.distance / ds - 1e-9));
-  for (long n = 0; n < steps; ++n) observe(step());
+  return static_cast<long>(std::ceil(setup_.distance / ds - 1e-9));
+}
+
+void PinOnDisc::run(const std::function<void(const PinOnDiscSample&)>& observe) {
+  const long steps = total_steps();
+  while (steps_ < steps) observe(step());
   PinOnDiscSample last;
   evaluate(s_, last, nullptr, nullptr);
   observe(last);
+}
+
+void PinOnDisc::save(CheckpointState& state) const {
+  state.put("pin_surface", std::span<const double>(pin_.data(), pin_.size()));
+  state.put("disc_profile", disc_);
+  state.put("distance", s_);
+  state.put("pin_wear", pin_wear_);
+  state.put("disc_wear", disc_wear_);
+  state.put("steps", static_cast<double>(steps_));
+  state.put("solves", static_cast<double>(solves_));
+  state.put("contact_pressure", std::span<const double>(contact_.pressure().data(), contact_.pressure().size()));
+  state.put("contact_gap_shift", contact_.warm_gap_shift());
+}
+
+void PinOnDisc::restore(const CheckpointState& state) {
+  const auto& pin = state.array("pin_surface");
+  const auto& disc = state.array("disc_profile");
+  const auto& p = state.array("contact_pressure");
+  if (pin.size() != pin_.size() || disc.size() != disc_.size() || p.size() != pin_.size())
+    throw InputError(fmt::format("{}: a pin-on-disc state of {} cells, the case has {} ({}×{})", state.origin,
+                                 pin.size(), pin_.size(), grid().nx, grid().ny));
+  for (const auto* v : {&pin, &disc})
+    for (double x : *v)
+      if (!std::isfinite(x)) throw InputError(fmt::format("{}: a saved surface height is NaN or infinite", state.origin));
+  std::copy(pin.begin(), pin.end(), pin_.begin());
+  std::copy(disc.begin(), disc.end(), disc_.begin());
+  s_ = state.scalar("distance");
+  pin_wear_ = state.scalar("pin_wear");
+  disc_wear_ = state.scalar("disc_wear");
+  steps_ = static_cast<long>(state.scalar("steps"));
+  solves_ = static_cast<int>(state.scalar("solves"));
+  contact_.set_warm_start(p, state.scalar("contact_gap_shift"));
 }
 
 std::vector<double> PinOnDisc::state() const {

@@ -18,4 +18,8 @@ void commit_file(const std::filesystem::path& partial, const std::filesystem::pa
 /// Writes `content` to `path` atomically (CSV tables, XDMF, JSON).
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
+/// Removes the temporary files (and folders) in `dir` left by processes that
+/// no longer exist, e.g. a run killed with SIGKILL; returns how many.
+std::size_t remove_stale_partials(const std::filesystem::path& dir);
+
 }  // namespace wearscale

@@ -8,6 +8,9 @@ namespace wearscale {
 inline constexpr int exit_success = 0;
 inline constexpr int exit_numerical_failure = 1;
 inline constexpr int exit_bad_input = 2;
+/// Stopped by SIGINT or SIGTERM after saving a checkpoint and removing
+/// unfinished files (128 + SIGINT, the shell's convention).
+inline constexpr int exit_interrupted = 130;
 
 /// Bad input: a missing file, a syntax error, an unknown key, a value of the
 /// wrong type or out of its allowed range. The message names what and where.
@@ -29,10 +32,21 @@ class NumericalError : public std::runtime_error {
                  const std::string& detail);
   const std::string& solver() const { return solver_; }
   long step() const { return step_; }
+  const std::string& quantity() const { return quantity_; }
+  const std::string& detail() const { return detail_; }
 
  private:
   std::string solver_;
   long step_;
+  std::string quantity_, detail_;
+};
+
+/// The run was asked to stop (SIGINT/SIGTERM): thrown from a solver loop
+/// after its checkpoint is saved, so that every unfinished output is removed
+/// on the way out. The program then exits with exit_interrupted.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(const std::string& message) : std::runtime_error(message) {}
 };
 
 }  // namespace wearscale

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <utility>
 
 #include "wearscale/core/field.hpp"
@@ -59,6 +60,9 @@ class FFTPlanCache {
   /// FFTW wisdom makes MEASURE/PATIENT planning instantaneous on later runs.
   bool import_wisdom(const std::filesystem::path& file);
   void export_wisdom(const std::filesystem::path& file) const;
+  /// The same as text (stored in checkpoints so a resumed run plans alike).
+  std::string export_wisdom_string() const;
+  bool import_wisdom_string(const std::string& wisdom);
   std::size_t size() const;
   void clear();
 

@@ -3,6 +3,12 @@
 // and runs the pipeline, writes run.h5 (+ sidecars) into the output folder.
 // A [sweep] runs the case once per value of one key (in parallel when cores
 // allow) and gathers the headline figures in one table.
+//
+// Long runs checkpoint ([run] checkpoint_interval, checkpoint_steps) into
+// checkpoint.h5 in their output folder; `resume_dir` continues a killed or
+// interrupted run from it (a sweep: only its unfinished runs), with results
+// identical to an uninterrupted run. The checkpoint is removed when the run
+// completes.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -16,6 +22,7 @@ struct RunOptions {
   std::filesystem::path case_file;
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
+  std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
 };
 
 struct RunSummary {
@@ -33,7 +40,8 @@ struct RunSummary {
 };
 
 /// Throws InputError for a bad case (before any output is written; for a
-/// sweep, before any of its runs starts) and NumericalError when a solver fails.
+/// sweep, before any of its runs starts), NumericalError when a solver fails,
+/// and Interrupted on SIGINT/SIGTERM (after saving the checkpoints).
 RunSummary run_case(const RunOptions& options);
 
 }  // namespace wearscale::coupling

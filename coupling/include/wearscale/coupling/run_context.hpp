@@ -1,24 +1,31 @@
 #pragma once
 // What a scale sees of the run it is part of: the output folder, the run's
-// HDF5 file, and the table of headline results.
+// HDF5 file, its checkpoints, and the table of headline results.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 
 namespace wearscale::coupling {
 
 class RunContext {
  public:
-  RunContext(std::filesystem::path output_dir, H5Writer& h5, bool show_progress = true)
-      : dir_(std::move(output_dir)), h5_(h5), show_progress_(show_progress) {}
+  RunContext(std::filesystem::path output_dir, H5Writer& h5, bool show_progress = true,
+             Checkpointer* checkpoints = nullptr)
+      : dir_(std::move(output_dir)), h5_(h5), show_progress_(show_progress), checkpoints_(checkpoints) {}
 
   const std::filesystem::path& output_dir() const { return dir_; }
   /// The run's HDF5 file (run.h5): scales write their series and fields here.
   H5Writer& h5() { return h5_; }
+  /// The run's checkpoints: a scale with a long loop restores from
+  /// restored(<its id>) and calls at_step(<its id>, …) after each step
+  /// (which also stops the loop on SIGINT). Without a checkpointer: one that
+  /// never saves but still stops on SIGINT.
+  Checkpointer& checkpoints();
 
   /// A headline figure: shown in the summary, printed by --json, stored in run.h5 /results.
   void report(const std::string& name, double value, const std::string& unit, const std::string& description);
@@ -36,6 +43,8 @@ class RunContext {
   nlohmann::json results_ = nlohmann::json::object();
   std::vector<std::filesystem::path> files_;
   bool show_progress_ = true;
+  Checkpointer* checkpoints_ = nullptr;
+  Checkpointer no_checkpoints_ = Checkpointer::disabled();
 };
 
 }  // namespace wearscale::coupling

@@ -14,6 +14,7 @@
 // in Pa, and each provenance line as a string attribute of /strength.
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,6 +36,8 @@ struct StrengthTable {
 /// Reads a .csv/.txt or .h5 table. InputError naming the file and line for a
 /// missing column, non-monotone pressure, NaN, or a negative strength.
 StrengthTable read_strength_table(const std::filesystem::path& file);
+/// The CSV format above from its text; `origin` names it in messages.
+StrengthTable parse_strength_table_csv(std::string_view text, const std::string& origin);
 
 /// Writes the table (CSV or HDF5 by extension), atomically. The `material`
 /// is stored as the provenance key "material".

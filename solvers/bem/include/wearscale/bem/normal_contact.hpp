@@ -12,6 +12,7 @@
 // with g shifted so that its mean over the contact is zero and h_rms the RMS
 // of h about its mean (1 for a flat surface), must fall below `tolerance`
 // while no point outside the contact penetrates (g < 0 where p = 0).
+#include <span>
 #include <vector>
 
 #include "wearscale/core/fft.hpp"
@@ -41,6 +42,12 @@ class NormalContact {
   void set_surface(const RealField& surface);
   /// Forgets the warm start.
   void reset();
+  /// The warm start carried from one solve to the next: the last pressure
+  /// (pressure()) and the mean gap on the contact. Restoring both (from a
+  /// checkpoint) makes the next solve bit-identical to the one an
+  /// uninterrupted computation would do.
+  double warm_gap_shift() const { return gap_shift_; }
+  void set_warm_start(std::span<const double> pressure, double gap_shift);
 
   /// Solves for the imposed mean pressure p0 ≥ 0 (InputError if negative;
   /// NumericalError on NaN, breakdown or no convergence).

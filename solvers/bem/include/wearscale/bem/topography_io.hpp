@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct TopographySize {
 /// column for ragged rows, non-numbers, NaN or infinities, and for an empty
 /// file or a missing size (neither a "# lx =" comment nor `size`).
 RealField read_topography_text(const std::filesystem::path& file, const TopographySize& size = {});
+/// The same from the text itself; `name` stands for the file in messages.
+RealField parse_topography_text(std::string_view text, const std::string& name, const TopographySize& size = {});
 
 /// A height grid from an HDF5 dataset. InputError if the file or dataset is
 /// missing, the dataset is not 2D, holds NaN/inf, or has no size (no lx/ly

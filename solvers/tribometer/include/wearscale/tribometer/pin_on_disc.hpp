@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/materials/junction_model.hpp"
 
 namespace wearscale::tribometer {
@@ -69,8 +70,20 @@ class PinOnDisc {
   /// One explicit step of the thesis (§9.3.2, "Model summary"): solve, then
   /// wear by rate × v dt. Returns the sample of the state the step started from.
   PinOnDiscSample step();
-  /// Steps until the sliding distance is covered, calling `observe` after each.
+  /// Steps until the sliding distance is covered, calling `observe` after
+  /// each, then once more with the final state. Continues from steps() when
+  /// the model was restored from a checkpoint.
   void run(const std::function<void(const PinOnDiscSample&)>& observe);
+
+  /// Explicit steps taken so far, and how many cover setup().distance.
+  long steps() const { return steps_; }
+  long total_steps() const;
+
+  /// Everything the next steps depend on (surfaces, worn volumes, distance,
+  /// step count and the contact solver's warm start), bit for bit.
+  void save(CheckpointState& state) const;
+  /// Restores a saved state; InputError if it does not fit this setup's grid.
+  void restore(const CheckpointState& state);
 
   double distance() const { return s_; }
   int contact_solves() const { return solves_; }
@@ -96,6 +109,7 @@ class PinOnDisc {
   bem::NormalContact contact_;
   std::vector<double> pin_rate_, disc_rate_;
   double s_ = 0.0, pin_wear_ = 0.0, disc_wear_ = 0.0;
+  long steps_ = 0;
   double last_pin_volume_rate_ = 0.0, last_disc_volume_rate_ = 0.0;  // dV/ds of the last evaluate()
   int solves_ = 0;
 };

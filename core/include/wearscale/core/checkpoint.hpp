@@ -1,0 +1,103 @@
+#pragma once
+// Checkpoints: the state of a long run, saved now and then so that a killed
+// run can be resumed (`wearscale run CASE --resume DIR`). One file per run,
+// `checkpoint.h5` in its output folder, always replaced atomically (written
+// under a temporary name, then renamed), so a kill at any moment leaves the
+// previous complete checkpoint. It holds one state per owner (a scale:
+// "macro/bem-pin-on-disc"), the fingerprint of the case it belongs to, and
+// the FFTW plans in use (wisdom), so a resumed run computes with the same
+// transforms as the run it continues.
+//
+// A solver that wants to be resumable saves what it needs into a
+// CheckpointState (arrays of doubles are stored bit for bit) and restores
+// from one; its backend calls at_step() after each step.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace wearscale {
+
+/// When to save: by wall-clock time, by solver steps, or both (whichever
+/// comes first). A pending SIGINT/SIGTERM always saves.
+struct CheckpointPolicy {
+  double interval = 600.0;  ///< wall-clock seconds between checkpoints; 0: never by time
+  long every_steps = 0;     ///< solver steps between checkpoints; 0: never by steps
+};
+
+/// The saved state of one owner: named arrays of doubles (bit-exact) and texts.
+class CheckpointState {
+ public:
+  long step = 0;  ///< the owner's step count when saved
+
+  void put(const std::string& name, std::span<const double> values);
+  void put(const std::string& name, double value);
+  void put_text(const std::string& name, std::string text);
+
+  bool has(const std::string& name) const;
+  /// InputError naming the entry if the checkpoint lacks it (a file of another version).
+  const std::vector<double>& array(const std::string& name) const;
+  /// An array of exactly one value.
+  double scalar(const std::string& name) const;
+  const std::string& text(const std::string& name) const;
+
+  const std::map<std::string, std::vector<double>>& arrays() const { return arrays_; }
+  const std::map<std::string, std::string>& texts() const { return texts_; }
+  /// Where it was read from (for messages).
+  std::string origin = "checkpoint";
+
+ private:
+  std::map<std::string, std::vector<double>> arrays_;
+  std::map<std::string, std::string> texts_;
+};
+
+class Checkpointer {
+ public:
+  /// Checkpoints of one run into `file`. `fingerprint` identifies the case
+  /// (the resolved parameters that determine the results, as JSON text).
+  Checkpointer(std::filesystem::path file, std::string fingerprint, CheckpointPolicy policy);
+  /// One that never saves; at_step() still honours interrupts.
+  static Checkpointer disabled();
+
+  /// Reads the checkpoint to resume from: InputError if it is not a wearscale
+  /// checkpoint, or belongs to a case with other parameters (naming the first
+  /// key that differs). Imports its FFTW wisdom.
+  void load();
+  /// The state `owner` saved before the run stopped, or nullptr.
+  const CheckpointState* restored(const std::string& owner) const;
+
+  /// Call after every step of a solver loop: saves make() when the policy
+  /// says so; if SIGINT/SIGTERM is pending, saves and throws Interrupted.
+  void at_step(const std::string& owner, long step, const std::function<CheckpointState()>& make);
+  /// Saves `state` for `owner` now (with the other owners' last states).
+  void save(const std::string& owner, CheckpointState state);
+  /// Removes the checkpoint (the run has completed).
+  void discard();
+
+  bool enabled() const { return enabled_; }
+  const std::filesystem::path& file() const { return file_; }
+  long saves() const { return saves_; }
+  double seconds_saving() const { return seconds_saving_; }
+
+ private:
+  Checkpointer() = default;
+  void write() const;
+  std::filesystem::path file_;
+  std::string fingerprint_;
+  CheckpointPolicy policy_;
+  bool enabled_ = false;
+  std::map<std::string, CheckpointState> states_;  // last saved (or restored) state per owner
+  std::map<std::string, long> last_step_;
+  std::chrono::steady_clock::time_point last_save_ = std::chrono::steady_clock::now();
+  long saves_ = 0;
+  double seconds_saving_ = 0.0;
+};
+
+/// "key 'scale.macro.grid' was 64, is now 128": the first difference between
+/// two resolved cases given as JSON text, or "" if they are equal or not JSON.
+std::string describe_case_difference(const std::string& was, const std::string& now);
+
+}  // namespace wearscale

@@ -1,0 +1,231 @@
+#include "wearscale/core/checkpoint.hpp"
+
+#include <chrono>
+#include <ctime>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/fft.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/interrupt.hpp"
+#include "wearscale/core/log.hpp"
+
+namespace wearscale {
+
+namespace {
+constexpr const char* kFormat = "wearscale checkpoint 1";
+
+// Names joined one a line (names never hold a newline: they are code's own).
+std::string join_lines(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : "\n") + n;
+  return out;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size() && !text.empty()) {
+    const auto end = text.find('\n', start);
+    out.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string value_text(const nlohmann::json& j) { return j.is_string() ? j.get<std::string>() : j.dump(); }
+
+// "key 'scale.macro.grid' was 64, is now 128" for the first difference of two
+// resolved cases (JSON), or "" if they cannot be compared that way.
+}  // namespace
+
+std::string describe_case_difference(const std::string& was, const std::string& now) {
+  try {
+    const auto a = nlohmann::json::parse(was).flatten(), b = nlohmann::json::parse(now).flatten();
+    auto key_of = [](const std::string& pointer) {
+      std::string k = pointer.substr(1);
+      for (auto& c : k)
+        if (c == '/') c = '.';
+      return k;
+    };
+    for (const auto& [k, v] : a.items()) {
+      if (!b.contains(k)) return fmt::format("key '{}' was {}, is now absent", key_of(k), value_text(v));
+      if (b[k] != v) return fmt::format("key '{}' was {}, is now {}", key_of(k), value_text(v), value_text(b[k]));
+    }
+    for (const auto& [k, v] : b.items())
+      if (!a.contains(k)) return fmt::format("key '{}' was absent, is now {}", key_of(k), value_text(v));
+  } catch (const nlohmann::json::exception&) {
+  }
+  return {};
+}
+
+namespace {
+// Owners name HDF5 groups: "macro/bem-pin-on-disc" → "macro-bem-pin-on-disc".
+std::string group_of(const std::string& owner) {
+  std::string g = owner;
+  for (auto& c : g)
+    if (c == '/' || c == '.') c = '-';
+  return "/owners/" + g;
+}
+
+std::string utc_now() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+}  // namespace
+
+// ------------------------------------------------------------------ state ---
+
+void CheckpointState::put(const std::string& name, std::span<const double> values) {
+  arrays_[name].assign(values.begin(), values.end());
+}
+void CheckpointState::put(const std::string& name, double value) { arrays_[name] = {value}; }
+void CheckpointState::put_text(const std::string& name, std::string text) { texts_[name] = std::move(text); }
+
+bool CheckpointState::has(const std::string& name) const {
+  return arrays_.count(name) != 0 || texts_.count(name) != 0;
+}
+
+const std::vector<double>& CheckpointState::array(const std::string& name) const {
+  const auto it = arrays_.find(name);
+  if (it == arrays_.end())
+    throw InputError(fmt::format("{}: no entry '{}' (written by another version of wearscale?)", origin, name));
+  return it->second;
+}
+
+double CheckpointState::scalar(const std::string& name) const {
+  const auto& a = array(name);
+  if (a.size() != 1) throw InputError(fmt::format("{}: entry '{}' holds {} values, expected one", origin, name, a.size()));
+  return a[0];
+}
+
+const std::string& CheckpointState::text(const std::string& name) const {
+  const auto it = texts_.find(name);
+  if (it == texts_.end())
+    throw InputError(fmt::format("{}: no entry '{}' (written by another version of wearscale?)", origin, name));
+  return it->second;
+}
+
+// ------------------------------------------------------------ checkpointer ---
+
+Checkpointer::Checkpointer(std::filesystem::path file, std::string fingerprint, CheckpointPolicy policy)
+    : file_(std::move(file)), fingerprint_(std::move(fingerprint)), policy_(policy),
+      enabled_(policy.interval > 0.0 || policy.every_steps > 0) {}
+
+Checkpointer Checkpointer::disabled() { return Checkpointer(); }
+
+void Checkpointer::load() {
+  const std::string name = file_.string();
+  const H5Reader h5(file_);  // InputError if missing or not HDF5
+  std::string format;
+  try {
+    format = h5.string_attribute("/", "format");
+  } catch (const InputError&) {
+  }
+  if (format != kFormat)
+    throw InputError(fmt::format("{}: not a wearscale checkpoint (format '{}', expected '{}')", name, format, kFormat));
+  const std::string was = h5.string_attribute("/", "fingerprint");
+  if (was != fingerprint_) {
+    const std::string diff = describe_case_difference(was, fingerprint_);
+    throw InputError(fmt::format("{}: the checkpoint belongs to a case with other parameters{}; resume with the case "
+                                 "file and --set options of the interrupted run, or start afresh without --resume",
+                                 name, diff.empty() ? "" : " (" + diff + ")"));
+  }
+  for (const auto& owner : split_lines(h5.string_attribute("/", "owners"))) {
+    const std::string g = group_of(owner);
+    CheckpointState s;
+    s.origin = fmt::format("{} ({})", name, owner);
+    s.step = static_cast<long>(h5.number_attribute(g, "step"));
+    const auto arrays = split_lines(h5.string_attribute(g, "arrays"));
+    for (std::size_t k = 0; k < arrays.size(); ++k) s.put(arrays[k], h5.read_series(fmt::format("{}/a{}", g, k)));
+    const auto texts = split_lines(h5.string_attribute(g, "texts"));
+    for (std::size_t k = 0; k < texts.size(); ++k) s.put_text(texts[k], h5.string_attribute(g, fmt::format("t{}", k)));
+    last_step_[owner] = s.step;
+    states_[owner] = std::move(s);
+  }
+  const std::string wisdom = h5.string_attribute("/", "fftw_wisdom");
+  if (!wisdom.empty() && !FFTPlanCache::global().import_wisdom_string(wisdom))
+    log::warn("{}: its FFTW wisdom could not be imported; the resumed run may differ in the last digits", name);
+  last_save_ = std::chrono::steady_clock::now();
+}
+
+const CheckpointState* Checkpointer::restored(const std::string& owner) const {
+  const auto it = states_.find(owner);
+  return it == states_.end() ? nullptr : &it->second;
+}
+
+void Checkpointer::at_step(const std::string& owner, long step, const std::function<CheckpointState()>& make) {
+  const bool stop = interrupt_requested();
+  bool due = stop;
+  if (enabled_ && !due) {
+    const long last = last_step_.count(owner) != 0 ? last_step_[owner] : 0;
+    if (policy_.every_steps > 0 && step - last >= policy_.every_steps) due = true;
+    if (policy_.interval > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_save_).count() >= policy_.interval)
+      due = true;
+  }
+  if (due && enabled_) {
+    CheckpointState s = make();
+    s.step = step;
+    save(owner, std::move(s));
+  }
+  if (stop) {
+    if (enabled_) log::info("checkpoint saved at step {} in {}", step, file_.string());
+    throw_if_interrupted(owner);
+  }
+}
+
+void Checkpointer::save(const std::string& owner, CheckpointState state) {
+  if (!enabled_) return;
+  const auto start = std::chrono::steady_clock::now();
+  last_step_[owner] = state.step;
+  states_[owner] = std::move(state);
+  write();
+  last_save_ = std::chrono::steady_clock::now();
+  ++saves_;
+  seconds_saving_ += std::chrono::duration<double>(last_save_ - start).count();
+}
+
+void Checkpointer::write() const {
+  H5Writer h5(file_);  // a temporary name until commit(): the previous checkpoint stays valid meanwhile
+  h5.set_attribute("/", "format", kFormat);
+  h5.set_attribute("/", "fingerprint", fingerprint_);
+  h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
+  h5.set_attribute("/", "written", utc_now());
+  h5.set_attribute("/", "fftw_wisdom", FFTPlanCache::global().export_wisdom_string());
+  std::vector<std::string> owners;
+  for (const auto& [owner, s] : states_) {
+    owners.push_back(owner);
+    const std::string g = group_of(owner);
+    h5.set_attribute(g, "owner", owner);
+    h5.set_attribute(g, "step", static_cast<double>(s.step));
+    std::vector<std::string> arrays, texts;
+    for (const auto& [name, values] : s.arrays()) {
+      h5.write_series(fmt::format("{}/a{}", g, arrays.size()), values);
+      arrays.push_back(name);
+    }
+    for (const auto& [name, text] : s.texts()) {
+      h5.set_attribute(g, fmt::format("t{}", texts.size()), text);
+      texts.push_back(name);
+    }
+    h5.set_attribute(g, "arrays", join_lines(arrays));
+    h5.set_attribute(g, "texts", join_lines(texts));
+  }
+  h5.set_attribute("/", "owners", join_lines(owners));
+  h5.commit();
+}
+
+void Checkpointer::discard() {
+  if (file_.empty()) return;
+  std::error_code ec;
+  std::filesystem::remove(file_, ec);
+}
+
+}  // namespace wearscale

@@ -1,0 +1,155 @@
+// Restarting the pin-on-disc model from a saved state (what a checkpoint
+// holds): the explicit integrator ends bit for bit where an uninterrupted
+// run ends; the adaptive one within its error tolerance. And the numerical
+// guards of the loop: NaN/Inf stop it with a NumericalError naming the
+// quantity, the step and the distance.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/tribometer/adaptive_wear.hpp"
+#include "wearscale/tribometer/pin_on_disc.hpp"
+
+using namespace wearscale;
+using namespace wearscale::tribometer;
+
+namespace {
+const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
+const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
+
+// A reduced thesis setup (32 × 32 cells) through the oxide transition at 0.5 µm.
+PinOnDiscSetup small(double distance) {
+  PinOnDiscSetup s;
+  s.grid = 32;
+  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
+  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
+  s.layer_thickness = 0.5e-6;
+  s.distance = distance;
+  return s;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_identical(const std::vector<PinOnDiscSample>& a, const std::vector<PinOnDiscSample>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    ASSERT_TRUE(same_bits(a[k].distance, b[k].distance)) << k;
+    ASSERT_TRUE(same_bits(a[k].friction, b[k].friction)) << k;
+    ASSERT_TRUE(same_bits(a[k].pin_wear, b[k].pin_wear)) << k;
+    ASSERT_TRUE(same_bits(a[k].disc_wear, b[k].disc_wear)) << k;
+    ASSERT_TRUE(same_bits(a[k].max_pressure, b[k].max_pressure)) << k;
+    ASSERT_EQ(a[k].iterations, b[k].iterations) << k;
+  }
+}
+
+struct Stop {};  // stands for the process being killed
+}  // namespace
+
+TEST(PinOnDiscRestart, ExplicitRunFromASavedStateEndsBitForBitAsAnUninterruptedOne) {
+  const auto setup = small(0.03);  // 188 steps, through the transition near 0.015 m
+  PinOnDisc whole(setup);
+  std::vector<PinOnDiscSample> reference;
+  whole.run([&](const PinOnDiscSample& x) { reference.push_back(x); });
+
+  PinOnDisc first(setup);
+  std::vector<PinOnDiscSample> samples;
+  for (int k = 0; k < 77; ++k) samples.push_back(first.step());
+  CheckpointState saved;
+  first.save(saved);
+
+  PinOnDisc second(setup);  // a new process: a fresh model, restored
+  second.restore(saved);
+  EXPECT_EQ(second.steps(), 77);
+  second.run([&](const PinOnDiscSample& x) { samples.push_back(x); });
+  expect_identical(samples, reference);
+  EXPECT_EQ(second.contact_solves(), whole.contact_solves());
+  for (std::size_t k = 0; k < whole.pin_surface().size(); ++k)
+    ASSERT_TRUE(same_bits(second.pin_surface()[k], whole.pin_surface()[k])) << k;
+}
+
+TEST(PinOnDiscRestart, AdaptiveRunFromAStateSavedAtARestartEndsBitForBitAsAnUninterruptedOne) {
+  const auto setup = small(0.03);
+  PinOnDisc whole(setup);
+  std::vector<PinOnDiscSample> reference;
+  long steps = 0;
+  run_adaptive(whole, {}, [&](const PinOnDiscSample& x) { reference.push_back(x); },
+               [&](const AdaptiveStatus& status) { steps = status.steps; });
+  ASSERT_GT(steps, 40) << "the test needs a run of several restart segments";
+
+  PinOnDisc first(setup);
+  std::vector<PinOnDiscSample> samples;
+  CheckpointState saved;
+  AdaptiveStatus at;
+  try {
+    run_adaptive(first, {}, [&](const PinOnDiscSample& x) { samples.push_back(x); },
+                 [&](const AdaptiveStatus& status) {
+                   if (!status.segment_end || status.steps < 40) return;
+                   first.save(saved);
+                   at = status;
+                   throw Stop{};  // killed right after its checkpoint
+                 });
+    FAIL() << "the run should have stopped at step 40";
+  } catch (const Stop&) {
+  }
+  EXPECT_EQ(at.steps, 40);
+  PinOnDisc second(setup);
+  second.restore(saved);
+  AdaptiveOptions resume;
+  resume.initial_step = at.next_step;
+  resume.steps_done = at.steps;
+  resume.observe_start = false;
+  run_adaptive(second, resume, [&](const PinOnDiscSample& x) { samples.push_back(x); });
+  EXPECT_NEAR(samples.back().distance, 0.03, 1e-12);
+  expect_identical(samples, reference);
+}
+
+TEST(PinOnDiscRestart, AStateOfAnotherGridIsRefused) {
+  PinOnDisc a(small(0.01));
+  CheckpointState saved;
+  a.save(saved);
+  auto other = small(0.01);
+  other.grid = 64;
+  PinOnDisc b(other);
+  try {
+    b.restore(saved);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("1024 cells, the case has 4096"));
+  }
+}
+
+TEST(PinOnDiscGuards, AnInfiniteWearRateStopsTheRunNamingTheQuantity) {
+  auto setup = small(0.01);
+  setup.on_layer.p_crit = 1e-300;  // p/p_crit overflows to +inf
+  PinOnDisc model(setup);
+  try {
+    model.run([](const PinOnDiscSample&) {});
+    FAIL() << "an infinite wear rate must stop the run";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(e.solver(), "tribometer/pin-on-disc");
+    EXPECT_EQ(e.quantity(), "friction and wear rates");
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("inf"));
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("at s = 0 m"));
+  }
+}
+
+TEST(PinOnDiscGuards, ANonFiniteStateInTheAdaptiveIntegratorIsANumericalError) {
+  auto setup = small(0.01);
+  PinOnDisc model(setup);
+  std::vector<double> y = model.state();
+  y[5] = std::nan("");
+  std::vector<double> dyds(y.size());
+  PinOnDiscSample sample;
+  try {
+    model.derivative(0.0, y.data(), dyds.data(), sample);
+    FAIL() << "a NaN height must stop the solve";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(e.quantity(), "surface heights");
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("cell (0, 5)"));
+  }
+}
