@@ -38,11 +38,11 @@ void report(benchmark::State& state, const Simulation& sim, long steps, double c
   state.counters["peak_RSS_MiB"] = peak_rss_mib();
 }
 
-// The deck's block: N = 4 n³, rebuild every 10 steps without a check.
-void Hooke(benchmark::State& state) {
-  auto sim = make_anchor_block({static_cast<int>(state.range(0)), 10});
+// Runs state.range(1) steps per iteration after a warm-up (first build,
+// warm caches) and reports them.
+void time_steps(benchmark::State& state, Simulation& sim) {
   const long steps = state.range(1);
-  sim.run(10);  // first build and warm caches
+  sim.run(10);
   double cpu = 0.0;
   long done = 0;
   for (auto _ : state) {
@@ -52,6 +52,12 @@ void Hooke(benchmark::State& state) {
     done += steps;
   }
   report(state, sim, done, cpu);
+}
+
+// The deck's block: N = 4 n³, rebuild every 10 steps without a check.
+void Hooke(benchmark::State& state) {
+  auto sim = make_anchor_block({static_cast<int>(state.range(0)), 10});
+  time_steps(state, sim);
 }
 BENCHMARK(Hooke)->Args({20, 200})->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -76,17 +82,7 @@ void Cohesive(benchmark::State& state) {
   }
   Simulation sim(std::move(p), lattice.box(), CohesiveLaw({m}), NeighborSettings{0.1, 10, false});
   sim.set_time_step(0.1 * std::get<CohesiveLaw>(sim.law()).critical_time_step(sim.particles()));
-  const long steps = state.range(1);
-  sim.run(10);
-  double cpu = 0.0;
-  long done = 0;
-  for (auto _ : state) {
-    const double c0 = cpu_seconds();
-    sim.run(steps);
-    cpu += cpu_seconds() - c0;
-    done += steps;
-  }
-  report(state, sim, done, cpu);
+  time_steps(state, sim);
 }
 BENCHMARK(Cohesive)->Args({20, 200})->Unit(benchmark::kMillisecond)->UseRealTime();
 

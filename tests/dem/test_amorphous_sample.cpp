@@ -15,19 +15,7 @@
 using namespace wearscale::dem;
 
 namespace {
-CohesiveMaterial table_6_4() {
-  CohesiveMaterial m;
-  m.name = "table-6.4";
-  m.young = 1.0;
-  m.poisson = 0.15;
-  m.tensile_strength = 0.2;
-  m.shear_strength = 0.1;
-  m.surface_energy = 1.5;
-  m.restitution = 0.95;
-  m.density = 1.0;
-  m.scaling_exponent = 0.5;
-  return m;
-}
+CohesiveMaterial table_6_4() { return patch_test_targets(); }
 
 constexpr double d0 = 100.0;
 

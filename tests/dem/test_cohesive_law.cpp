@@ -16,15 +16,8 @@ namespace {
 
 // Table 6.4: the patch-test targets (no units).
 CohesiveMaterial table_6_4(double poisson = 0.15, double s = 0.5) {
-  CohesiveMaterial m;
-  m.name = "table-6.4";
-  m.young = 1.0;
+  auto m = patch_test_targets();
   m.poisson = poisson;
-  m.tensile_strength = 0.2;
-  m.shear_strength = 0.1;
-  m.surface_energy = 1.5;
-  m.restitution = 0.95;
-  m.density = 1.0;
   m.scaling_exponent = s;
   return m;
 }

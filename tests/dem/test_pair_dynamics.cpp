@@ -15,16 +15,8 @@ using namespace wearscale::dem;
 namespace {
 
 CohesiveMaterial table_6_4(double restitution = 0.95) {
-  CohesiveMaterial m;
-  m.name = "table-6.4";
-  m.young = 1.0;
-  m.poisson = 0.15;
-  m.tensile_strength = 0.2;
-  m.shear_strength = 0.1;
-  m.surface_energy = 1.5;
+  auto m = patch_test_targets();
   m.restitution = restitution;
-  m.density = 1.0;
-  m.scaling_exponent = 0.5;
   return m;
 }
 

@@ -12,7 +12,8 @@ using namespace wearscale::dem;
 namespace {
 PatchTestSpec table_6_4(double poisson) {
   PatchTestSpec s;
-  s.material = {"table-6.4", 1.0, poisson, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5};
+  s.material = patch_test_targets();
+  s.material.poisson = poisson;
   s.d0 = 90.0;  // 0.6 d_c, the smallest size of §6.2.1
   s.length = 15.0;
   s.strengths = false;

@@ -75,7 +75,7 @@ TEST(WornParticles, FollowsParticlesByIdentityAcrossRemovalAndInsertion) {
 
 TEST(WornParticles, CohesiveNeighboursAreThoseWithinDeltaF) {
   // Table 6.4 spheres of d = 100: δ_f = 4γ/σ_m,N = 30. Gaps of 25 and 35.
-  CohesiveMaterial m{"table-6.4", 1.0, 0.15, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5};
+  CohesiveMaterial m = patch_test_targets();
   const CohesiveLaw law({m});
   Box box;
   box.lo = {0, 0, 0};

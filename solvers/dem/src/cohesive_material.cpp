@@ -7,6 +7,8 @@
 
 namespace wearscale::dem {
 
+CohesiveMaterial patch_test_targets() { return {"table-6.4", 1.0, 0.15, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5}; }
+
 CohesiveMaterial cohesive_material(const materials::Material& m, double scaling_exponent,
                                    std::optional<double> restitution) {
   CohesiveMaterial c;

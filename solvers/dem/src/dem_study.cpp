@@ -18,11 +18,6 @@ namespace wearscale::dem {
 
 namespace {
 
-// Table 6.4: the patch-test targets (no units).
-CohesiveMaterial table_6_4() {
-  return {"table-6.4", 1.0, 0.15, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5};
-}
-
 void report(nlohmann::json& results, const std::string& name, double v, const std::string& unit,
             const std::string& what) {
   results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
@@ -36,7 +31,7 @@ CohesiveMaterial dem_material(const Config& root) {
   const double s = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
   CohesiveMaterial m;
   if (name == "table-6.4") {
-    m = table_6_4();
+    m = patch_test_targets();
     m.scaling_exponent = s;
   } else {
     materials::MaterialLibrary library;

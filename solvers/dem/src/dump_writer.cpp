@@ -32,6 +32,20 @@ std::array<std::pair<double, double>, 3> bounds(const Particles& p, const Box& b
   return b;
 }
 
+// One line per particle, the same columns in both formats:
+// id type x y z radius vx vy vz fx fy fz body wall [extra...].
+void particle_rows(fmt::memory_buffer& out, const Particles& p, const std::vector<DumpColumn>& extra) {
+  auto it = std::back_inserter(out);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 &x = p.position[i], &v = p.velocity[i], &f = p.force[i];
+    fmt::format_to(it, "{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {} {}", p.id[i],
+                   p.material[i] + 1, x.x, x.y, x.z, p.radius[i], v.x, v.y, v.z, f.x, f.y, f.z, p.body[i],
+                   p.wall[i] + 1);
+    for (const auto& c : extra) fmt::format_to(it, " {:.10g}", c.values[i]);
+    fmt::format_to(it, "\n");
+  }
+}
+
 void lammps_frame(fmt::memory_buffer& out, long step, const Particles& p, const Box& box,
                   const std::vector<DumpColumn>& extra) {
   auto it = std::back_inserter(out);
@@ -43,14 +57,7 @@ void lammps_frame(fmt::memory_buffer& out, long step, const Particles& p, const 
   fmt::format_to(it, "ITEM: ATOMS id type x y z radius vx vy vz fx fy fz body wall");
   for (const auto& c : extra) fmt::format_to(it, " {}", c.name);
   fmt::format_to(it, "\n");
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3 &x = p.position[i], &v = p.velocity[i], &f = p.force[i];
-    fmt::format_to(it, "{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {} {}", p.id[i],
-                   p.material[i] + 1, x.x, x.y, x.z, p.radius[i], v.x, v.y, v.z, f.x, f.y, f.z, p.body[i],
-                   p.wall[i] + 1);
-    for (const auto& c : extra) fmt::format_to(it, " {:.10g}", c.values[i]);
-    fmt::format_to(it, "\n");
-  }
+  particle_rows(out, p, extra);
 }
 
 void xyz_frame(fmt::memory_buffer& out, long step, double time, const Particles& p, const Box& box,
@@ -66,14 +73,7 @@ void xyz_frame(fmt::memory_buffer& out, long step, double time, const Particles&
   fmt::format_to(it, "Properties=id:I:1:species:S:1:pos:R:3:radius:R:1:velo:R:3:force:R:3:body:I:1:wall:I:1");
   for (const auto& c : extra) fmt::format_to(it, ":{}:R:1", c.name);
   fmt::format_to(it, "\n");
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3 &x = p.position[i], &v = p.velocity[i], &f = p.force[i];
-    fmt::format_to(it, "{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {:.8g} {} {}", p.id[i],
-                   p.material[i] + 1, x.x, x.y, x.z, p.radius[i], v.x, v.y, v.z, f.x, f.y, f.z, p.body[i],
-                   p.wall[i] + 1);
-    for (const auto& c : extra) fmt::format_to(it, " {:.10g}", c.values[i]);
-    fmt::format_to(it, "\n");
-  }
+  particle_rows(out, p, extra);
 }
 
 bool valid_name(const std::string& name) {

@@ -9,7 +9,8 @@ using namespace wearscale::dem;
 
 TEST(HcpPatchTestLong, TensileStrengthMatchesTheTargetForZeroPoisson) {
   PatchTestSpec s;
-  s.material = {"table-6.4", 1.0, 0.0, 0.2, 0.1, 1.5, 0.95, 1.0, 0.5};
+  s.material = patch_test_targets();
+  s.material.poisson = 0.0;
   s.d0 = 90.0;
   s.length = 25.0;
   const auto r = run_patch_test(s);

@@ -20,6 +20,10 @@ struct CohesiveMaterial {
   double scaling_exponent = 0.5;  ///< s ≥ 0 of the d_c rescaling (6.57)
 };
 
+/// The patch-test targets of Table 6.4 (no units): E = 1, ν = 0.15,
+/// σ_m,N = 0.2, σ_m,T = 0.1, γ = 1.5, η = 0.95, ρ = 1, s = ½.
+CohesiveMaterial patch_test_targets();
+
 /// The DEM targets of a material record. η comes from the record (Table 6.5)
 /// or `restitution`; InputError when neither gives it.
 CohesiveMaterial cohesive_material(const materials::Material& m, double scaling_exponent,
