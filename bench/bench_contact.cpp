@@ -3,6 +3,15 @@
 //
 //   build/bench/bench_contact --benchmark_counters_tabular=true
 //
+// BM_FrictionalRoughSphere: the frictional solver (Appendix A) on the rough
+// sphere of Fig. A.5 on 512² points: L = 500 µm, R = 6 mm, E = 70 GPa,
+// ν = 0.17 (coupled), Sa = 0.01 µm, H = 0.8, λ_l = λ_r = 10 µm (k = 50),
+// λ_s = 1.95 µm (k_s = 256, the Nyquist wavenumber; 1.37 µm in the thesis at
+// 729²), p_N,0 = 10 MPa, p_x,0 = 2 MPa; Tresca σ_m,T = 250 MPa (law 0, as in
+// Fig. A.5) or Coulomb μ = 0.5 (law 1); tolerance 1e-10 on the cost (A.14).
+// One iteration needs 9 FFTs: u = F * p (3 r2c + 3 c2r) and the spectra of
+// the search direction (3 r2c), i.e. 4.5 FFT pairs.
+//
 // Surface (issue #3): H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1, E* = 1,
 // mean pressure 0.03 (about 6.5 % contact), tolerance 1e-10 on the relative
 // orthogonality error ε = Σ p|g| / (Σ p · h_rms) (see normal_contact.hpp).
@@ -11,6 +20,7 @@
 
 #include <chrono>
 
+#include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 
@@ -72,4 +82,45 @@ static void BM_RoughContact(benchmark::State& state) {
 }
 BENCHMARK(BM_RoughContact)
     ->Args({512, 1})->Args({512, 2})->Args({1024, 1})->Args({1024, 2})->Args({2048, 1})->Args({2048, 2})
+    ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+
+static void BM_FrictionalRoughSphere(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const bool tresca = state.range(1) == 0;
+  const int threads = static_cast<int>(state.range(2));
+  omp_set_num_threads(threads);
+  FFTPlanCache::global().clear();
+  FFTPlanCache::global().set_threads(threads);
+  const double l = 500e-6;
+  RoughSurfaceSpec spec;
+  spec.grid = Grid2D::square(n, l);
+  spec.hurst = 0.8;
+  spec.k_l = spec.k_r = 50.0;
+  spec.k_s = static_cast<double>(n / 2);
+  spec.seed = 1;
+  const RealField h = add(generate_surface(spec, RoughnessMeasure::Sa, 0.01e-6), sphere(spec.grid, 6e-3, l / 2, l / 2));
+  FrictionalContact contact(h, 70e9, 0.17, tresca ? FrictionLaw::tresca(250e6) : FrictionLaw::coulomb(0.5));
+  const double fft = fft_pair_seconds(h.grid());
+  FrictionalResult r;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    contact.reset();
+    const auto t0 = std::chrono::steady_clock::now();
+    r = contact.solve({10e6, 2e6, 0.0}, {1e-10, 100000});
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    state.SetIterationTime(seconds);
+  }
+  state.counters["iterations"] = r.iterations;
+  state.counters["bound_updates"] = r.bound_updates;
+  state.counters["unsettled"] = static_cast<double>(r.unsettled_points);
+  state.counters["contact_%"] = 100.0 * r.contact_fraction;
+  state.counters["stick_%_of_contact"] = 100.0 * r.stick_fraction / r.contact_fraction;
+  state.counters["ms_per_iter"] = 1e3 * seconds / r.iterations;
+  state.counters["fft_pair_ms"] = 1e3 * fft;
+  state.counters["iter/fft_pair"] = seconds / r.iterations / fft;
+  state.counters["threads"] = threads;
+}
+BENCHMARK(BM_FrictionalRoughSphere)
+    ->ArgNames({"n", "coulomb", "threads"})
+    ->Args({512, 0, 1})->Args({512, 0, 2})->Args({512, 1, 1})->Args({512, 1, 2})
     ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);

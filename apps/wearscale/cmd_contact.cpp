@@ -1,6 +1,7 @@
 // wearscale contact [CASE.toml] [--surface F] [--pressure P | --load F | --interference D]
-//                   [--e-star E] [--set KEY=VALUE]... [--out DIR] [--json]
-// Frictionless normal contact of a rigid surface on an elastic flat (BEM).
+//                   [--e-star E] [--poisson NU] [--friction coulomb|tresca [--mu M | --shear-strength S]
+//                   [--tangential-pressure Q] [--tensile-strength SM]] [--set KEY=VALUE]... [--out DIR] [--json]
+// Normal (frictionless) or frictional contact of a rigid surface on an elastic flat (BEM).
 #include <iostream>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@ namespace wearscale::app {
 namespace {
 struct ContactArgs {
   std::string case_file, surface, pressure, load, interference, e_star, out;
+  std::string poisson, friction, mu, shear_strength, tangential, tensile_strength;
   std::vector<std::string> overrides;
   bool json = false;
 };
@@ -23,7 +25,8 @@ struct ContactArgs {
 
 Command add_contact(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "contact", "Normal contact of a rigid surface (file, generated rough surface, sphere) on an elastic flat");
+      "contact",
+      "Normal or frictional contact of a rigid surface (file, generated rough surface, sphere) on an elastic flat");
   auto a = std::make_shared<ContactArgs>();
   cmd->add_option("case", a->case_file, "Case file with a [contact] table (e.g. cases/rough_contact.toml)");
   cmd->add_option("--surface", a->surface, "Height file (HDF5 /surface/height, or CSV/text grid): contact.surface");
@@ -31,6 +34,15 @@ Command add_contact(CLI::App& app) {
   cmd->add_option("--load", a->load, "Imposed normal force on the cell: contact.normal_load");
   cmd->add_option("--interference", a->interference, "Imposed interference: contact.interference");
   cmd->add_option("--e-star", a->e_star, "Contact modulus E* (1.12): contact.e_star");
+  cmd->add_option("--poisson", a->poisson, "Poisson's ratio ν of the elastic flat: contact.poisson");
+  cmd->add_option("--friction", a->friction, "Friction law (Appendix A): coulomb | tresca | none: contact.friction");
+  cmd->add_option("--mu", a->mu, "Coulomb friction coefficient μ (A.2): contact.friction_coefficient");
+  cmd->add_option("--shear-strength", a->shear_strength,
+                  "Tresca shear strength σ_m,T (A.3), e.g. \"250 MPa\": contact.shear_strength");
+  cmd->add_option("--tangential-pressure", a->tangential, "Imposed mean tangential traction along x: "
+                  "contact.tangential_pressure");
+  cmd->add_option("--tensile-strength", a->tensile_strength,
+                  "Tensile strength σ_m: crack initiation (4.25) per micro-contact: contact.tensile_strength");
   cmd->add_option("--set", a->overrides, "Override a case key: --set contact.rough.seed=3 (repeatable)")
       ->expected(1)->take_all();
   cmd->add_option("--out", a->out, "Output folder (default: [output].dir, else out/contact)");
@@ -41,7 +53,13 @@ Command add_contact(CLI::App& app) {
                                                                 {&a->pressure, "contact.mean_pressure"},
                                                                 {&a->load, "contact.normal_load"},
                                                                 {&a->interference, "contact.interference"},
-                                                                {&a->e_star, "contact.e_star"}};
+                                                                {&a->e_star, "contact.e_star"},
+                                                                {&a->poisson, "contact.poisson"},
+                                                                {&a->friction, "contact.friction"},
+                                                                {&a->mu, "contact.friction_coefficient"},
+                                                                {&a->shear_strength, "contact.shear_strength"},
+                                                                {&a->tangential, "contact.tangential_pressure"},
+                                                                {&a->tensile_strength, "contact.tensile_strength"}};
     for (const auto& [value, key] : flags)
       if (!value->empty()) cfg.override_value(fmt::format("{}={}", key, *value));
     for (const auto& o : a->overrides) cfg.override_value(o);

@@ -1,0 +1,159 @@
+#pragma once
+// Frictional contact of a rigid surface on a periodic elastic flat (Appendix
+// A): imposed mean normal and tangential tractions, Coulomb (A.2) or Tresca
+// (A.3) friction, all three traction components solved together through the
+// Boussinesq–Cerruti tensor, so normal and tangential are coupled for ν < 0.5
+// and decoupled for ν = 0.5.
+//
+// Conventions (as HalfSpace and NormalContact): z points into the solid; the
+// rigid body presses with p_N = p_z ≥ 0 and drags with p_T = (p_x, p_y);
+// heights h are positive towards the elastic body. The normal gap is
+// g_N = u_z − h + d and the slip g_T = u_T − δ_T, with d and δ_T the rigid
+// normal and tangential displacements (the multipliers of the imposed means).
+// At the solution every point is open (p = 0, g_N ≥ 0), sticking
+// (‖p_T‖ < p_T,max, g_T = 0) or sliding (‖p_T‖ = p_T,max, g_T = −λ p_T, λ ≥ 0).
+//
+// Algorithm 1 of the thesis, a projected conjugate gradient on p:
+//  - the gradient (A.13) is the gap, shifted to zero mean on the contact
+//    (normal) and on the stick zone I_s (tangential: the shift is δ_T);
+//  - two conjugate sequences, one for p_N (Polonsky–Keer) and one for p_T,
+//    with step lengths minimising the quadratic model over both together
+//    (the normal–tangential coupling term comes from the Fourier spectra);
+//  - a point on the friction cone keeps p_T on it and only turns its p_T
+//    (the cone's curvature, ‖g_T‖/p_T,max, enters the step length); one that
+//    slides the wrong way (g_T·p_T > 0) is released into the stick zone;
+//  - after each step p is brought back into the friction cone: p_N ≥ 0 with
+//    penetrating points re-admitted (Polonsky–Keer), p_N rescaled to its mean
+//    (A.8c), p_T projected on the discs ‖p_T‖ ≤ p_T,max with its mean imposed
+//    by one shift of the free (non-sliding) points.
+// The friction bound p_T,max is lagged: each subproblem is solved with a fixed
+// bound (μ p_N of the previous one, or σ_m,T on the previous contact), then
+// the bound is updated, until it changes by less than the tolerance (a
+// fixed point, as in Panagiotopoulos' scheme). This replaces the μ‖g_T‖ term
+// of (A.13): that term compensates the dilatancy of a projection orthogonal
+// to the cone, while our projection is at fixed p_N and has none.
+// Tresca with ν < 0.5 may not settle: a point entering a micro-contact
+// carries σ_m,T at once, whose normal displacement (4.22) can lift a
+// neighbour off, which lifts it back... After 8 updates without progress the
+// last bound is kept (FrictionalResult::unsettled_points says how many points
+// differ from the law).
+// Coupled contact close to full sliding, with a stick zone of a few cells,
+// may lose its stick zone again and again: NumericalError after 50 restarts
+// (Mindlin's sphere, ν = 0.3, n = 243: converges up to Q/μP = 0.947).
+//
+// Convergence is measured by the cost (A.14), see FrictionalResult::error.
+#include <cstdint>
+#include <vector>
+
+#include "wearscale/bem/friction_law.hpp"
+#include "wearscale/bem/half_space.hpp"
+
+namespace wearscale::bem {
+
+/// Imposed mean tractions ⟨p_N⟩ ≥ 0 and ⟨p_T⟩ = (x, y) over the cell [Pa].
+struct MeanTraction {
+  double normal = 0.0;
+  double x = 0.0, y = 0.0;
+};
+
+struct FrictionalOptions {
+  double tolerance = 1e-10;   ///< on FrictionalResult::error
+  int max_iterations = 20000;
+};
+
+/// What a surface point does at the solution (the stick/slip map).
+enum class ContactState : std::uint8_t { Open = 0, Stick = 1, Slip = 2 };
+
+struct FrictionalResult {
+  int iterations = 0;
+  int bound_updates = 0;      ///< subproblems solved before the bound held (see above)
+  long unsettled_points = 0;  ///< contact points whose p_T,max still differs from the law's (see above)
+  /// ε = ε_N + ε_T, the cost (A.14) made relative:
+  ///   ε_N = Σ p_N |g_N| / (Σ p_N · h_rms),
+  ///   ε_T = Σ (p_T,max ‖g_T‖ + p_T·g_T) / (Σ p_T,max · h_rms),
+  /// h_rms the RMS of h about its mean (1 for a flat surface). The sliding
+  /// term equals (A.14)'s (p_T,max − ‖p_T‖)‖g_T‖ when g_T opposes p_T, and is
+  /// also > 0 for a point that slides the wrong way.
+  double error = 0.0;
+  double normal_error = 0.0, tangential_error = 0.0;
+  MeanTraction mean_traction;     ///< reached ⟨p⟩ [Pa]
+  double contact_fraction = 0.0;  ///< A/A0
+  double stick_fraction = 0.0;    ///< sticking area / A0
+  double slip_fraction = 0.0;     ///< sliding area / A0
+  bool full_sliding = false;      ///< ‖⟨p_T⟩‖ = ⟨p_T,max⟩: every contact point slides
+  double interference = 0.0;      ///< δ = max h − d [m], as NormalContact
+  /// δ_T, the rigid tangential displacement of the stick zone [m] (NaN in full sliding).
+  double tangential_displacement_x = 0.0, tangential_displacement_y = 0.0;
+  double elastic_energy = 0.0;    ///< ½∫p·u dA per cell [J]  (4.1)
+  double frictional_force_ratio = 0.0;  ///< ‖⟨p_T⟩‖/⟨p_N⟩
+};
+
+class FrictionalContact {
+ public:
+  /// `surface` heights on a periodic grid; E and ν of the elastic flat (the
+  /// rigid surface's own compliance folded in beforehand, (A.1)).
+  FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law);
+
+  /// Solves for the imposed mean tractions. InputError if ⟨p_N⟩ < 0 or if the
+  /// tangential load exceeds what friction can carry (‖⟨p_T⟩‖ > μ⟨p_N⟩ for
+  /// Coulomb, > σ_m,T A/A0 for Tresca): that is gross sliding, reported and
+  /// never clamped. NumericalError on NaN, breakdown or no convergence.
+  /// The last solution is the warm start of the next solve.
+  FrictionalResult solve(const MeanTraction& load, const FrictionalOptions& options = {});
+  /// Forgets the warm start.
+  void reset();
+
+  /// p_x, p_y and p_z = p_N [Pa].
+  const VectorField& traction() const { return p_; }
+  /// u = F * p, all components (zero mean) [m]; valid after a solve.
+  const VectorField& displacement() const { return u_; }
+  /// g_N (0 in the contact, ≥ 0 outside) [m].
+  const RealField& normal_gap() const { return gap_; }
+  /// g_T: 0 where sticking, opposed to p_T where sliding (x, y; z unused) [m].
+  const VectorField& slip() const { return slip_; }
+  /// ContactState per point as 0 (open), 1 (stick), 2 (slip).
+  const RealField& stick_slip_map() const { return map_; }
+
+  const RealField& surface() const { return h_; }
+  const Grid2D& grid() const { return h_.grid(); }
+  const FrictionLaw& law() const { return law_; }
+  double young() const { return young_; }
+  double poisson() const { return poisson_; }
+  /// The last iterations' errors ε (for reports of slow convergence).
+  const std::vector<double>& history() const { return history_; }
+
+ private:
+  void apply(const VectorField& p, VectorField& u);  // u = F * p
+  // Σ_x t·(F * t) split into its normal (nn), tangential (tt) and coupling
+  // (nt, counted once) blocks, by Parseval.
+  struct BlockForm {
+    double nn, tt, nt;
+  };
+  BlockForm quadratic_form(const VectorField& t);
+  // Brings p_T into the discs ‖p_T‖ ≤ p_T,max(p_N) with the imposed mean,
+  // shifting only the points off the cone if `free_only` (and they can carry
+  // it); returns false if the discs cannot carry it (gross sliding).
+  bool project_tangential(double target_x, double target_y, int iteration, bool free_only);
+  FrictionalResult finish(int iterations, double error, double error_n, double error_t, const MeanTraction& load);
+
+  RealField h_;
+  double young_, poisson_;
+  FrictionLaw law_;
+  VectorField p_, u_, t_, t_old_, d_, slip_;
+  RealField gap_, map_;
+  RealField bound_;                  // p_T,max of the current subproblem at points in contact
+  std::vector<std::uint8_t> state_;  // per point: open, stick, slip (on the cone), released
+  ComplexField sx_, sy_, sz_;        // spectra
+  // The Green tensor (A.4) on the half spectrum, 1/N folded in:
+  // F = [[xx, xy, i xz], [xy, yy, i yz], [−i xz, −i yz, zz]].
+  std::vector<double> fxx_, fyy_, fxy_, fzz_, ixz_, iyz_;
+  std::shared_ptr<const FFTPlan> plan_;
+  double h_rms_ = 1.0, h_max_ = 0.0, self_compliance_ = 1.0;
+  double shift_n_ = 0.0, shift_x_ = 0.0, shift_y_ = 0.0;  // gap shifts of the last iteration
+  bool all_sliding_ = false, overloaded_ = false;
+  double capacity_ = 0.0;  // ⟨p_T,max⟩ at the last projection
+  int bound_updates_ = 0;
+  std::vector<double> history_;
+};
+
+}  // namespace wearscale::bem

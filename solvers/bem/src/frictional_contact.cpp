@@ -1,0 +1,719 @@
+#include "wearscale/bem/frictional_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "wearscale/core/errors.hpp"
+
+namespace wearscale::bem {
+
+namespace {
+constexpr const char* kSolver = "bem/frictional-contact (Algorithm 1)";
+constexpr std::size_t kHistory = 12;
+// A point with ‖p_T‖ ≥ (1 − kOnCone) p_T,max is on the friction cone (sliding).
+constexpr double kOnCone = 1e-9;
+// Updates of the friction bound without halving its change before it is kept.
+constexpr int kStalledUpdates = 8;
+// A block's conjugacy is restarted when its residual grows by more than this.
+constexpr double kBetaMax = 10.0;
+// Per-point state during the iterations; kReleased: on the cone but slipping
+// the wrong way, so its tangential traction is set free again (as stick).
+enum : std::uint8_t { kOpen = 0, kStick = 1, kSlip = 2, kReleased = 3 };
+
+// ‖(x, y)‖ without std::hypot's overflow care (tractions and displacements
+// are far from it), which costs more than the rest of a pass.
+inline double norm(double x, double y) { return std::sqrt(x * x + y * y); }
+
+void check_material(double e, double nu) {
+  if (!(e > 0.0) || !std::isfinite(e))
+    throw InputError(fmt::format("frictional contact: Young's modulus E = {} is not allowed; allowed: E > 0", e));
+  if (!(nu > -1.0 && nu <= 0.5))
+    throw InputError(fmt::format(
+        "frictional contact: Poisson's ratio ν = {} is not allowed; allowed: −1 < ν ≤ 0.5", nu));
+}
+}  // namespace
+
+FrictionalContact::FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law)
+    : h_(surface), young_(young), poisson_(poisson), law_(law), p_(surface.grid()), u_(surface.grid()),
+      t_(surface.grid()), t_old_(surface.grid()), d_(surface.grid()), slip_(surface.grid()), gap_(surface.grid()),
+      map_(surface.grid()),
+      bound_(surface.grid()), state_(surface.size(), kOpen), sx_(ComplexField::spectrum_of(surface.grid())),
+      sy_(ComplexField::spectrum_of(surface.grid())), sz_(ComplexField::spectrum_of(surface.grid())) {
+  const Grid2D& g = surface.grid();
+  check_material(young, poisson);
+  if (g.nx < 2 || g.ny < 2) throw InputError("frictional contact: the grid needs at least 2×2 points");
+  double mean = 0.0, max = -INFINITY;
+  for (double v : h_) {
+    if (!std::isfinite(v)) throw InputError("frictional contact: the surface has a NaN or infinite height");
+    mean += v;
+    max = std::max(max, v);
+  }
+  mean /= static_cast<double>(h_.size());
+  double var = 0.0;
+  for (double v : h_) var += (v - mean) * (v - mean);
+  h_rms_ = std::sqrt(var / static_cast<double>(h_.size()));
+  if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
+  h_max_ = max;
+
+  plan_ = FFTPlanCache::global().plan(g);
+  const std::size_t cols = g.spectral_ny(), modes = g.spectral_size();
+  for (auto* f : {&fxx_, &fyy_, &fxy_, &fzz_, &ixz_, &iyz_}) f->assign(modes, 0.0);
+  const double shear = young / (2.0 * (1.0 + poisson)), inv_n = 1.0 / static_cast<double>(g.size());
+  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
+  const std::size_t last = nyq_y ? cols - 1 : cols;  // the Nyquist column is its own mirror
+  self_compliance_ = 0.0;
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < cols; ++j) {
+      const std::size_t m = i * cols + j;
+      // (2.35), (4.3), (4.22); the odd coupling dropped at Nyquist frequencies, as in HalfSpace.
+      const GreenTensor f = HalfSpace::green_tensor(g.wavenumber_x(i), g.wavenumber_y(j), shear, poisson,
+                                                    !(nyq_x && i == g.nx / 2), !(nyq_y && j == g.ny / 2));
+      fxx_[m] = f[0][0].real() * inv_n;
+      fyy_[m] = f[1][1].real() * inv_n;
+      fxy_[m] = f[0][1].real() * inv_n;
+      fzz_[m] = f[2][2].real() * inv_n;
+      ixz_[m] = f[0][2].imag() * inv_n;
+      iyz_[m] = f[1][2].imag() * inv_n;
+      self_compliance_ += (j == 0 || j == last ? 1.0 : 2.0) * fzz_[m];
+    }
+}
+
+void FrictionalContact::reset() {
+  for (RealField* f : {&p_.x, &p_.y, &p_.z}) f->fill(0.0);
+}
+
+void FrictionalContact::apply(const VectorField& p, VectorField& u) {
+  plan_->forward(p.x, sx_);
+  plan_->forward(p.y, sy_);
+  plan_->forward(p.z, sz_);
+  // û = F p̂ (A.4) in real arithmetic (std::complex products call __muldc3).
+  double* a = reinterpret_cast<double*>(sx_.data());
+  double* b = reinterpret_cast<double*>(sy_.data());
+  double* c = reinterpret_cast<double*>(sz_.data());
+  const std::size_t modes = fxx_.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t m = 0; m < modes; ++m) {
+    const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
+    const double fxx = fxx_[m], fyy = fyy_[m], fxy = fxy_[m], fzz = fzz_[m], gx = ixz_[m], gy = iyz_[m];
+    a[2 * m] = fxx * xr + fxy * yr - gx * zi;  // i g z = (−g z_i, g z_r)
+    a[2 * m + 1] = fxx * xi + fxy * yi + gx * zr;
+    b[2 * m] = fxy * xr + fyy * yr - gy * zi;
+    b[2 * m + 1] = fxy * xi + fyy * yi + gy * zr;
+    c[2 * m] = gx * xi + gy * yi + fzz * zr;  // −i g x = (g x_i, −g x_r)
+    c[2 * m + 1] = -gx * xr - gy * yr + fzz * zi;
+  }
+  plan_->backward_unnormalized(sx_, u.x);
+  plan_->backward_unnormalized(sy_, u.y);
+  plan_->backward_unnormalized(sz_, u.z);
+}
+
+FrictionalContact::BlockForm FrictionalContact::quadratic_form(const VectorField& t) {
+  plan_->forward(t.x, sx_);
+  plan_->forward(t.y, sy_);
+  plan_->forward(t.z, sz_);
+  const Grid2D& g = grid();
+  const std::size_t cols = g.spectral_ny(), rows = g.nx;
+  const std::size_t last = g.ny % 2 == 0 ? cols - 1 : cols;
+  const double* a = reinterpret_cast<const double*>(sx_.data());
+  const double* b = reinterpret_cast<const double*>(sy_.data());
+  const double* c = reinterpret_cast<const double*>(sz_.data());
+  double nn = 0.0, tt = 0.0, nt = 0.0;
+#pragma omp parallel for reduction(+ : nn, tt, nt) schedule(static)
+  for (std::size_t r = 0; r < rows; ++r) {
+    double row_nn = 0.0, row_tt = 0.0, row_nt = 0.0;
+    for (std::size_t j = 0; j < cols; ++j) {
+      const std::size_t m = r * cols + j;
+      const double w = (j == 0 || j == last) ? 1.0 : 2.0;  // modes stored once for ±q_y
+      const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
+      // The blocks of t̂ᴴ F t̂ (F Hermitian: each is real); Im(conj(x) z) = x_r z_i − x_i z_r.
+      row_nn += w * fzz_[m] * (zr * zr + zi * zi);
+      row_tt += w * (fxx_[m] * (xr * xr + xi * xi) + fyy_[m] * (yr * yr + yi * yi) +
+                     2.0 * fxy_[m] * (xr * yr + xi * yi));
+      row_nt -= w * (ixz_[m] * (xr * zi - xi * zr) + iyz_[m] * (yr * zi - yi * zr));
+    }
+    nn += row_nn;
+    tt += row_tt;
+    nt += row_nt;
+  }
+  return {nn, tt, nt};  // Σ_x t·(F * t) = (1/N) Σ_q t̂ᴴ F t̂, the 1/N being in the kernel
+}
+
+bool FrictionalContact::project_tangential(double target_x, double target_y, int iteration, bool free_only) {
+  const std::size_t n = h_.size();
+  double* px = p_.x.data();
+  double* py = p_.y.data();
+  const double* pn = p_.z.data();
+  const std::uint8_t* state = state_.data();
+  const double* bound = bound_.data();
+  // Points on the cone keep their traction; the others (stick, released, newly
+  // admitted) take the shift. cap: ⟨p_T,max⟩; the sums are over the cell.
+  double cap = 0.0, cap_free = 0.0, fixed_x = 0.0, fixed_y = 0.0;
+  std::size_t n_free = 0;
+#pragma omp parallel for reduction(+ : cap, cap_free, fixed_x, fixed_y, n_free) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const double b = (pn[k] > 0.0 ? bound[k] : 0.0);
+    cap += b;
+    if (!(b > 0.0)) continue;
+    if (free_only && state[k] == kSlip) {
+      const double r = norm(px[k], py[k]), s = r > b ? b / r : 1.0;
+      fixed_x += s * px[k];
+      fixed_y += s * py[k];
+    } else {
+      cap_free += b;
+      n_free += 1;
+    }
+  }
+  const double nn = static_cast<double>(n);
+  capacity_ = cap / nn;
+  const double q0 = norm(target_x, target_y);
+  all_sliding_ = false;
+  overloaded_ = false;
+  if (q0 == 0.0 && cap == 0.0) {
+    std::fill(px, px + n, 0.0);
+    std::fill(py, py + n, 0.0);
+    return true;
+  }
+  if (q0 > 0.0 && q0 >= capacity_ * (1.0 - 1e-12)) {
+    // Every point at its limit along the load: full sliding, or more than friction can carry.
+    const double ex = target_x / q0, ey = target_y / q0;
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double b = (pn[k] > 0.0 ? bound[k] : 0.0);
+      px[k] = b * ex;
+      py[k] = b * ey;
+    }
+    all_sliding_ = true;
+    overloaded_ = q0 > capacity_ * (1.0 + 1e-9);
+    return !overloaded_;
+  }
+  // The free points must carry what the others do not; if they cannot, all move.
+  if (free_only && (n_free == 0 || norm(target_x * nn - fixed_x, target_y * nn - fixed_y) >= cap_free)) {
+    return project_tangential(target_x, target_y, iteration, false);
+  }
+  // Projection on {‖p_T‖ ≤ p_T,max} ∩ {⟨p_T⟩ = target}: p_T = P(w + λ) at the
+  // free points, P the projection on each point's disc, the shift λ found by
+  // Newton's method on the monotone map λ ↦ Σ P(w + λ) (damped by halving).
+  const double tol = 1e-11 * nn * std::max(q0, capacity_);  // above the rounding of the sums
+  const double goal_x = target_x * nn - fixed_x, goal_y = target_y * nn - fixed_y;
+  double lx = 0.0, ly = 0.0, step_x = 0.0, step_y = 0.0, scale = 1.0, f_prev = INFINITY;
+  double base_x = 0.0, base_y = 0.0;
+  for (int newton = 0; newton < 200; ++newton) {
+    double fx = 0.0, fy = 0.0, jxx = 0.0, jyy = 0.0, jxy = 0.0;
+#pragma omp parallel for reduction(+ : fx, fy, jxx, jyy, jxy) schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double b = (pn[k] > 0.0 ? bound[k] : 0.0);
+      if (!(b > 0.0) || (free_only && state[k] == kSlip)) continue;
+      const double vx = px[k] + lx, vy = py[k] + ly, r = norm(vx, vy);
+      if (r <= b) {
+        fx += vx;
+        fy += vy;
+        jxx += 1.0;
+        jyy += 1.0;
+      } else {
+        const double s = b / r, nx = vx / r, ny = vy / r;
+        fx += s * vx;
+        fy += s * vy;
+        jxx += s * (1.0 - nx * nx);
+        jyy += s * (1.0 - ny * ny);
+        jxy -= s * nx * ny;
+      }
+    }
+    fx -= goal_x;
+    fy -= goal_y;
+    const double f_norm = norm(fx, fy);
+    if (f_norm <= tol) {
+      // The last residual goes to the points strictly inside their disc (a
+      // shift of order 1e-11 of the load, which keeps them inside).
+      double n_in = 0.0;
+#pragma omp parallel for reduction(+ : n_in) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        const double b = (pn[k] > 0.0 ? bound[k] : 0.0);
+        const bool shifted = !(free_only && state[k] == kSlip);
+        const double vx = px[k] + (shifted ? lx : 0.0), vy = py[k] + (shifted ? ly : 0.0), r = norm(vx, vy);
+        const double s = !(b > 0.0) ? 0.0 : (r <= b ? 1.0 : b / r);
+        px[k] = s * vx;
+        py[k] = s * vy;
+        n_in += (shifted && b > 0.0 && r < b * (1.0 - 1e-6)) ? 1.0 : 0.0;
+      }
+      if (n_in > 0.0) {
+        double sum_x = 0.0, sum_y = 0.0;
+#pragma omp parallel for reduction(+ : sum_x, sum_y) schedule(static)
+        for (std::size_t k = 0; k < n; ++k) {
+          sum_x += px[k];
+          sum_y += py[k];
+        }
+        const double cx = (target_x * nn - sum_x) / n_in, cy = (target_y * nn - sum_y) / n_in;
+#pragma omp parallel for schedule(static)
+        for (std::size_t k = 0; k < n; ++k) {
+          const double b = (pn[k] > 0.0 ? bound[k] : 0.0);
+          const bool shifted = !(free_only && state[k] == kSlip);
+          if (shifted && b > 0.0 && norm(px[k], py[k]) < b * (1.0 - 1e-6)) {
+            px[k] += cx;
+            py[k] += cy;
+          }
+        }
+      }
+      return true;
+    }
+    if (f_norm > f_prev && scale > 1e-6) {  // overshoot: halve the last step
+      scale *= 0.5;
+      lx = base_x - scale * step_x;
+      ly = base_y - scale * step_y;
+      continue;
+    }
+    f_prev = f_norm;
+    base_x = lx;
+    base_y = ly;
+    scale = 1.0;
+    const double det = jxx * jyy - jxy * jxy;
+    if (det > 1e-12 * (jxx * jxx + jyy * jyy) && det > 0.0) {
+      step_x = (jyy * fx - jxy * fy) / det;
+      step_y = (jxx * fy - jxy * fx) / det;
+    } else {  // every point at its limit: move as if all were free
+      const double free = static_cast<double>(std::max<std::size_t>(n_free, 1));
+      step_x = fx / free;
+      step_y = fy / free;
+    }
+    lx = base_x - step_x;
+    ly = base_y - step_y;
+  }
+  throw NumericalError(kSolver, iteration, "mean tangential traction",
+                       fmt::format("the projection on the friction cone did not reach ⟨p_T⟩ = ({:g}, {:g}) Pa "
+                                   "(capacity ⟨p_T,max⟩ = {:g} Pa)",
+                                   target_x, target_y, capacity_));
+}
+
+FrictionalResult FrictionalContact::solve(const MeanTraction& load, const FrictionalOptions& opt) {
+  if (!(load.normal >= 0.0) || !std::isfinite(load.normal))
+    throw InputError(
+        fmt::format("frictional contact: mean normal traction {} is not allowed; allowed: ≥ 0", load.normal));
+  if (!std::isfinite(load.x) || !std::isfinite(load.y))
+    throw InputError("frictional contact: the mean tangential traction must be finite");
+  if (!(opt.tolerance > 0.0)) throw InputError("frictional contact: the tolerance must be > 0");
+  const double q0 = norm(load.x, load.y);
+  const bool coulomb = law_.kind() == FrictionLaw::Kind::Coulomb;
+  const double mu = coulomb ? law_.parameter() : 0.0;
+  if (q0 > 0.0 && (load.normal == 0.0 || (coulomb && q0 > mu * load.normal * (1.0 + 1e-12))))
+    throw InputError(fmt::format(
+        "frictional contact: the tangential load ‖⟨p_T⟩‖ = {:g} Pa exceeds what {} friction can carry at "
+        "⟨p_N⟩ = {:g} Pa: the contact slides as a whole (gross sliding); "
+        "allowed: ‖⟨p_T⟩‖ ≤ μ⟨p_N⟩ = {:g} Pa",
+        q0, law_.to_string(), load.normal, mu * load.normal));
+  history_.clear();
+  bound_updates_ = 0;
+  const std::size_t n = h_.size();
+  const double nn = static_cast<double>(n);
+  double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
+  const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data();
+  const double *dx = d_.x.data(), *dy = d_.y.data(), *dz = d_.z.data();
+  double* bound = bound_.data();
+  const double* h = h_.data();
+  std::uint8_t* state = state_.data();
+
+  if (load.normal == 0.0) {
+    reset();
+    for (RealField* f : {&u_.x, &u_.y, &u_.z}) f->fill(0.0);
+    std::fill(state_.begin(), state_.end(), kOpen);
+    shift_n_ = -h_max_;
+    shift_x_ = shift_y_ = 0.0;
+    all_sliding_ = false;
+    return finish(0, 0.0, 0.0, 0.0, load);
+  }
+  // Warm start: the previous traction rescaled to the new mean; else uniform.
+  double mean = 0.0;
+  for (std::size_t k = 0; k < n; ++k) mean += pz[k];
+  mean /= nn;
+  if (mean > 0.0 && std::isfinite(mean)) {
+    const double alpha = load.normal / mean;
+    for (std::size_t k = 0; k < n; ++k) {
+      pz[k] *= alpha;
+      px[k] *= alpha;
+      py[k] *= alpha;
+    }
+  } else {
+    p_.z.fill(load.normal);
+    p_.x.fill(0.0);
+    p_.y.fill(0.0);
+  }
+  // The friction bound of the current subproblem: σ_m,T (A.3), or μ p_N (A.2)
+  // of the last converged traction (lagged; see the header).
+  const FrictionLaw law = law_;
+  for (std::size_t k = 0; k < n; ++k) bound[k] = law.max_tangential(pz[k]);
+  for (RealField* f : {&t_.x, &t_.y, &t_.z, &t_old_.x, &t_old_.y, &t_old_.z}) f->fill(0.0);
+  project_tangential(load.x, load.y, 0, false);
+
+  double first_error = 0.0, rn_old = 0.0, rt_old = 0.0, bound_change = 1.0, best_change = INFINITY;
+  int restarts = 0, stalled = 0;
+  bool settled = false;
+  bool conjugate_n = false, conjugate_t = false;
+  for (int it = 0; it < opt.max_iterations; ++it) {
+    apply(p_, u_);  // u = F * p   (Algorithm 1, line 5)
+
+    // Pass 1: gap shifts. Normal: the mean gap on the contact (Polonsky–Keer);
+    // tangential: the mean displacement of the stick zone I_s, the rigid
+    // tangential displacement δ_T (A.13). Without a stick zone, the contact's.
+    double n_c = 0.0, n_s = 0.0, sum_n = 0.0, sum_sx = 0.0, sum_sy = 0.0, sum_cx = 0.0, sum_cy = 0.0,
+           sum_p = 0.0;
+#pragma omp parallel for reduction(+ : n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p) \
+    schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!(pz[k] > 0.0)) continue;
+      n_c += 1.0;
+      sum_p += pz[k];
+      sum_n += uz[k] - h[k];
+      sum_cx += ux[k];
+      sum_cy += uy[k];
+      if (bound[k] > 0.0 && norm(px[k], py[k]) < (1.0 - kOnCone) * bound[k]) {
+        n_s += 1.0;
+        sum_sx += ux[k];
+        sum_sy += uy[k];
+      }
+    }
+    if (n_c == 0.0) throw NumericalError(kSolver, it, "contact area", "the contact vanished (no point with p_N > 0)");
+    const double sn = sum_n / n_c;
+    const bool sliding = all_sliding_;
+    if (n_s == 0.0 && !sliding && capacity_ > 0.0) {
+      // Every point on the cone, yet the load is below what friction can carry:
+      // a fan of sliding directions with no stick zone to refer the slip to.
+      // Restart the tangential traction from the same fraction of p_T,max everywhere.
+      if (++restarts > 50)
+        throw NumericalError(kSolver, it, "stick zone", "the stick zone vanished again after 50 restarts");
+      const double ratio = capacity_ > 0.0 ? q0 / capacity_ : 0.0, ex = q0 > 0.0 ? load.x / q0 : 0.0,
+                   ey = q0 > 0.0 ? load.y / q0 : 0.0;
+#pragma omp parallel for schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        const double b = pz[k] > 0.0 ? bound[k] : 0.0;
+        px[k] = ratio * b * ex;
+        py[k] = ratio * b * ey;
+      }
+      conjugate_n = conjugate_t = false;
+      continue;
+    }
+    const bool stick_zone = n_s > 0.0 && !sliding;
+    const double sx = stick_zone ? sum_sx / n_s : sum_cx / n_c, sy = stick_zone ? sum_sy / n_s : sum_cy / n_c;
+    shift_n_ = sn;
+    shift_x_ = sx;
+    shift_y_ = sy;
+
+    // Pass 2: the gradient (A.13) of the shifted gap, projected on what each
+    // point may do. Stick points move freely. A point on the friction cone
+    // stays on it, its p_T only turning, unless it slides the wrong way
+    // (g_T·p_T > 0): then it is released into the stick zone.
+    double err_n = 0.0, err_t = 0.0, b_sum = 0.0, rn_new = 0.0, rt_new = 0.0, penetrating = 0.0;
+#pragma omp parallel for reduction(+ : err_n, err_t, b_sum, rn_new, rt_new, penetrating) schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double gn = uz[k] - h[k] - sn;
+      double ax = 0.0, ay = 0.0, an = 0.0;
+      if (!(pz[k] > 0.0)) {
+        state[k] = kOpen;
+        penetrating += gn < 0.0 ? 1.0 : 0.0;
+      } else {
+        const double gx = ux[k] - sx, gy = uy[k] - sy;
+        const double b = bound[k], r = norm(px[k], py[k]);
+        err_n += pz[k] * std::abs(gn);
+        err_t += b * norm(gx, gy) + px[k] * gx + py[k] * gy;  // (A.14), the slip direction checked
+        b_sum += b;
+        an = gn;
+        if (!(b > 0.0)) {  // frictionless point: p_T stays 0
+          state[k] = kSlip;
+        } else if (r >= (1.0 - kOnCone) * b) {
+          const double nx = px[k] / r, ny = py[k] / r, along = gx * nx + gy * ny;
+          const bool release = along > 0.0 && !sliding;  // in full sliding p_T is fixed
+          state[k] = release ? kReleased : kSlip;
+          ax = release ? gx : (sliding ? 0.0 : gx - along * nx);
+          ay = release ? gy : (sliding ? 0.0 : gy - along * ny);
+        } else {
+          state[k] = kStick;
+          ax = gx;
+          ay = gy;
+        }
+      }
+      d_.x[k] = ax;
+      d_.y[k] = ay;
+      d_.z[k] = an;
+      rn_new += an * an;
+      rt_new += ax * ax + ay * ay;
+    }
+    const double error_n = err_n / (sum_p * h_rms_);
+    const double error_t = (sliding || !(b_sum > 0.0)) ? 0.0 : err_t / (b_sum * h_rms_);
+    const double error = error_n + error_t;
+    if (!std::isfinite(error)) throw NumericalError(kSolver, it, "cost (A.14)", "not finite (NaN in u or p)");
+    if (it == 0) first_error = error;
+    history_.push_back(error);
+    if (history_.size() > kHistory) history_.erase(history_.begin());
+
+    // A subproblem is solved (loosely while its bound is still far from the
+    // law's): compare its bound with the law's, and start the next one.
+    const double subproblem_tolerance = settled ? opt.tolerance : std::max(opt.tolerance, 1e-2 * bound_change);
+    if (error < subproblem_tolerance && penetrating == 0.0) {
+      if (!settled) {
+        double change = 0.0, total = 0.0;
+#pragma omp parallel for reduction(+ : change, total) schedule(static)
+        for (std::size_t k = 0; k < n; ++k) {
+          const double b = law.max_tangential(pz[k]);
+          change += std::abs(b - bound[k]);
+          total += b;
+        }
+        change = total > 0.0 ? change / total : 0.0;
+        // A subproblem whose bound cannot carry the load while the law's can
+        // is not a solution of the law: move on to the law's bound.
+        const bool short_of_load = overloaded_ && q0 <= total / nn * (1.0 + 1e-9);
+        if (change > opt.tolerance || short_of_load) {
+          if (change < 0.5 * best_change) {
+            best_change = change;
+            stalled = 0;
+          } else if (++stalled >= kStalledUpdates && !short_of_load) {
+            // The bound cycles (Tresca with ν < 0.5: edge points that gain
+            // σ_m,T on entering the contact lift their neighbours off, see
+            // the header): keep the last one and solve it to the tolerance.
+            settled = true;
+          }
+          if (!settled) {
+#pragma omp parallel for schedule(static)
+            for (std::size_t k = 0; k < n; ++k) {
+              const double b = law.max_tangential(pz[k]);
+              if (state[k] == kSlip && bound[k] > 0.0) {  // sliding points stay on the cone
+                px[k] *= b / bound[k];
+                py[k] *= b / bound[k];
+              }
+              bound[k] = b;
+            }
+            bound_change = change;
+            project_tangential(load.x, load.y, it, true);
+            conjugate_n = conjugate_t = false;
+            ++bound_updates_;
+            continue;
+          }
+        }
+      }
+      if (error < opt.tolerance) {
+        double law_capacity = 0.0;
+#pragma omp parallel for reduction(+ : law_capacity) schedule(static)
+        for (std::size_t k = 0; k < n; ++k) law_capacity += law.max_tangential(pz[k]);
+        law_capacity /= nn;
+        if (overloaded_ && q0 <= law_capacity * (1.0 + 1e-9))
+          throw NumericalError(kSolver, it, "mean tangential traction",
+                               fmt::format("the last friction bound carries {:g} Pa of the {:g} Pa imposed while the "
+                                           "law carries {:g} Pa (its contact edges kept changing)",
+                                           capacity_, q0, law_capacity));
+        capacity_ = law_capacity;
+        if (overloaded_)  // the law's bound cannot carry the load either
+          throw InputError(fmt::format(
+              "frictional contact: the tangential load ‖⟨p_T⟩‖ = {:g} Pa exceeds what {} friction can carry on "
+              "this contact, ⟨p_T,max⟩ = σ_m,T A/A0 = {:g} Pa: the contact slides as a whole (gross sliding); "
+              "allowed: ‖⟨p_T⟩‖ ≤ {:g} Pa",
+              q0, law_.to_string(), capacity_, capacity_));
+        return finish(it, error, error_n, error_t, load);
+      }
+    }
+
+    // Search directions (Algorithm 1, line 8), one conjugate sequence for the
+    // normal and one for the tangential traction: t = d + β t_old, with zero
+    // sum (the imposed means stay imposed); at sliding points p_T only turns.
+    std::swap(t_old_, t_);
+    double *tx = t_.x.data(), *ty = t_.y.data(), *tz = t_.z.data();
+    const double *tx_old = t_old_.x.data(), *ty_old = t_old_.y.data(), *tz_old = t_old_.z.data();
+    double turn_curvature = 0.0;
+    auto build_normal = [&](double beta) {
+      double sum = 0.0;
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        tz[k] = state[k] == kOpen ? 0.0 : dz[k] + beta * tz_old[k];
+        sum += tz[k];
+      }
+      const double shift = sum / n_c;
+      double slope = 0.0;  // Σ ∂J/∂p_N t_N   (Algorithm 1, line 13)
+#pragma omp parallel for reduction(+ : slope) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        if (state[k] == kOpen) continue;
+        tz[k] -= shift;
+        slope += dz[k] * tz[k];
+      }
+      return slope;
+    };
+    auto build_tangential = [&](double beta) {
+      double sum_x = 0.0, sum_y = 0.0, n_free = 0.0;
+#pragma omp parallel for reduction(+ : sum_x, sum_y, n_free) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        double ax = 0.0, ay = 0.0;
+        if (state[k] == kStick || state[k] == kReleased) {
+          ax = dx[k] + beta * tx_old[k];
+          ay = dy[k] + beta * ty_old[k];
+          n_free += 1.0;
+        } else if (state[k] == kSlip && !sliding) {
+          const double r = norm(px[k], py[k]);
+          if (r > 0.0) {  // keep the turn only
+            const double nx = px[k] / r, ny = py[k] / r;
+            ax = dx[k] + beta * tx_old[k];
+            ay = dy[k] + beta * ty_old[k];
+            const double along = ax * nx + ay * ny;
+            ax -= along * nx;
+            ay -= along * ny;
+          }
+        }
+        tx[k] = ax;
+        ty[k] = ay;
+        sum_x += ax;
+        sum_y += ay;
+      }
+      const bool shift = n_free > 0.0 && !sliding;
+      const double cx = shift ? sum_x / n_free : 0.0, cy = shift ? sum_y / n_free : 0.0;
+      double slope = 0.0, curvature = 0.0;  // Σ ∂J/∂p_T·t_T
+#pragma omp parallel for reduction(+ : slope, curvature) schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        const double gx = ux[k] - sx, gy = uy[k] - sy;
+        if (state[k] == kStick || state[k] == kReleased) {
+          tx[k] -= cx;
+          ty[k] -= cy;
+        } else if (state[k] == kSlip && (tx[k] != 0.0 || ty[k] != 0.0)) {
+          // Turning on the circle ‖p_T‖ = p_T,max adds the curvature of the
+          // constraint, its multiplier ‖g_T‖/p_T,max, to the model's t·Ft.
+          const double r = norm(px[k], py[k]);
+          const double speed = std::max(-(gx * px[k] + gy * py[k]) / r, 0.0);
+          curvature += speed / r * (tx[k] * tx[k] + ty[k] * ty[k]);
+        }
+        if (state[k] != kOpen) slope += gx * tx[k] + gy * ty[k];
+      }
+      turn_curvature = curvature;
+      return slope;
+    };
+    // A block whose residual grew (the other one moved it through the
+    // coupling) restarts from its gradient.
+    const double beta_n = conjugate_n && rn_old > 0.0 && rn_new < kBetaMax * rn_old ? rn_new / rn_old : 0.0;
+    const double beta_t = conjugate_t && rt_old > 0.0 && rt_new < kBetaMax * rt_old ? rt_new / rt_old : 0.0;
+    double slope_n = build_normal(beta_n);
+    if (!(slope_n > 0.0) && beta_n != 0.0) slope_n = build_normal(0.0);  // not a descent direction: restart
+    double slope_t = build_tangential(beta_t);
+    if (!(slope_t > 0.0) && beta_t != 0.0) slope_t = build_tangential(0.0);
+    if (!(slope_n > 0.0)) slope_n = 0.0;  // no descent along this block: no step on it
+    if (!(slope_t > 0.0)) slope_t = 0.0;
+    rn_old = rn_new;
+    rt_old = rt_new;
+
+    // Step lengths: the minimum of the quadratic model along τ_N t_N + τ_T t_T,
+    //   [t_N·Ft_N  t_N·Ft_T] [τ_N]   [Σ ∂J/∂p_N t_N]
+    //   [t_T·Ft_N  t_T·Ft_T] [τ_T] = [Σ ∂J/∂p_T·t_T],
+    // the forms by Parseval from the spectra of t (decoupled for ν = 0.5).
+    BlockForm form = quadratic_form(t_);
+    form.tt += turn_curvature;
+    double tau_n = 0.0, tau_t = 0.0;
+    const double det = form.nn * form.tt - form.nt * form.nt;
+    if (form.tt > 0.0 && form.nn > 0.0 && det > 1e-14 * form.nn * form.tt) {
+      tau_n = (form.tt * slope_n - form.nt * slope_t) / det;
+      tau_t = (form.nn * slope_t - form.nt * slope_n) / det;
+      if (tau_n < 0.0 || tau_t < 0.0)  // the coupling would reverse one: one step along t (line 13)
+        tau_n = tau_t = (slope_n + slope_t) / (form.nn + 2.0 * form.nt + form.tt);
+    } else if (form.nn > 0.0) {
+      tau_n = slope_n / form.nn;
+    } else if (form.tt > 0.0) {
+      tau_t = slope_t / form.tt;
+    } else if (slope_n == 0.0) {
+      // No descent direction (a contact of one point) while points outside
+      // still penetrate: admit them with a cell's own stiffness.
+      tau_n = 1.0 / self_compliance_;
+    }
+    if (!std::isfinite(tau_n) || !std::isfinite(tau_t) || tau_n < 0.0 || tau_t < 0.0)
+      throw NumericalError(kSolver, it, "step length",
+                           fmt::format("τ_N = {}, τ_T = {} (t·Ft: NN {}, TT {}, NT {})", tau_n, tau_t, form.nn,
+                                       form.tt, form.nt));
+
+    // Descend (line 14): p_N ≥ 0 and re-admit penetrating points (Polonsky–
+    // Keer); sliding points stay on the cone, turning towards −g_T.
+    double overlap = 0.0, new_sum = 0.0;
+#pragma omp parallel for reduction(+ : overlap, new_sum) schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      if (state[k] == kOpen) {
+        const double gn = uz[k] - h[k] - sn;
+        const bool readmit = gn < 0.0;
+        pz[k] = readmit ? -tau_n * gn : 0.0;
+        px[k] = py[k] = 0.0;
+        overlap += readmit ? 1.0 : 0.0;
+        new_sum += pz[k];
+        continue;
+      }
+      pz[k] = std::max(pz[k] - tau_n * tz[k], 0.0);
+      if (pz[k] == 0.0) bound[k] = 0.0;  // friction lost in this subproblem is not regained in it
+      double ax = px[k] - tau_t * tx[k], ay = py[k] - tau_t * ty[k];
+      const double r0 = norm(px[k], py[k]);
+      if (state[k] == kSlip && r0 > 0.0) {
+        // The outward push of the slip, taken out again by the projection
+        // below, keeps the turn towards −g_T: small where the point slides fast.
+        const double nx = px[k] / r0, ny = py[k] / r0;
+        const double along = (ux[k] - sx) * nx + (uy[k] - sy) * ny;
+        ax -= tau_t * along * nx;
+        ay -= tau_t * along * ny;
+      }
+      const double b = pz[k] > 0.0 ? bound[k] : 0.0, r = norm(ax, ay);
+      const double s = !(b > 0.0) ? 0.0 : (state[k] == kSlip && r > 0.0 ? b / r : 1.0);
+      px[k] = s * ax;
+      py[k] = s * ay;
+      new_sum += pz[k];
+    }
+    if (!(new_sum > 0.0)) throw NumericalError(kSolver, it, "normal traction", "all pressures vanished");
+    const double alpha = load.normal * nn / new_sum;  // impose ⟨p_N⟩ = p_N,0   (A.8c)
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) pz[k] *= alpha;
+    // Into the friction cone, with ⟨p_T⟩ = p_T,0 (line 15).
+    project_tangential(load.x, load.y, it, true);
+    conjugate_n = overlap == 0.0;
+    conjugate_t = overlap == 0.0;  // releases do not restart it (as points leaving the contact in PK)
+  }
+  throw NumericalError(kSolver, opt.max_iterations, "cost (A.14)",
+                       fmt::format("no convergence to {:g} in {} iterations (ε = {:.3g} at the first iteration, "
+                                   "{} updates of the friction bound); last {} errors: {:.3g}",
+                                   opt.tolerance, opt.max_iterations, first_error, bound_updates_, history_.size(),
+                                   fmt::join(history_, ", ")));
+}
+
+FrictionalResult FrictionalContact::finish(int iterations, double error, double error_n, double error_t,
+                                           const MeanTraction& load) {
+  const std::size_t n = h_.size();
+  const double nn = static_cast<double>(n);
+  double sum_x = 0.0, sum_y = 0.0, sum_z = 0.0, contact = 0.0, stick = 0.0, work = 0.0, unsettled = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double pn = p_.z[k];
+    const double b = pn > 0.0 ? bound_[k] : 0.0;
+    const double law_b = law_.max_tangential(pn);
+    unsettled += std::abs(b - law_b) > 1e-6 * std::max(b, law_b) ? 1.0 : 0.0;
+    const bool in = pn > 0.0;
+    const bool sticks = in && b > 0.0 && norm(p_.x[k], p_.y[k]) < (1.0 - kOnCone) * b;
+    gap_[k] = in ? 0.0 : u_.z[k] - h_[k] - shift_n_;
+    slip_.x[k] = sticks ? 0.0 : u_.x[k] - shift_x_;
+    slip_.y[k] = sticks ? 0.0 : u_.y[k] - shift_y_;
+    slip_.z[k] = 0.0;
+    map_[k] = static_cast<double>(!in ? ContactState::Open : sticks ? ContactState::Stick : ContactState::Slip);
+    sum_x += p_.x[k];
+    sum_y += p_.y[k];
+    sum_z += pn;
+    contact += in ? 1.0 : 0.0;
+    stick += sticks ? 1.0 : 0.0;
+    work += p_.x[k] * u_.x[k] + p_.y[k] * u_.y[k] + pn * u_.z[k];
+  }
+  FrictionalResult r;
+  r.iterations = iterations;
+  r.bound_updates = bound_updates_;
+  r.unsettled_points = static_cast<long>(unsettled);
+  r.error = error;
+  r.normal_error = error_n;
+  r.tangential_error = error_t;
+  r.mean_traction = {sum_z / nn, sum_x / nn, sum_y / nn};
+  r.contact_fraction = contact / nn;
+  r.stick_fraction = stick / nn;
+  r.slip_fraction = (contact - stick) / nn;
+  r.full_sliding = load.normal > 0.0 && contact > 0.0 && stick == 0.0 && norm(load.x, load.y) > 0.0;
+  r.interference = h_max_ + shift_n_;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  r.tangential_displacement_x = r.full_sliding ? nan : shift_x_;
+  r.tangential_displacement_y = r.full_sliding ? nan : shift_y_;
+  r.elastic_energy = 0.5 * work * grid().cell_area();
+  r.frictional_force_ratio = r.mean_traction.normal > 0.0
+                                 ? norm(r.mean_traction.x, r.mean_traction.y) / r.mean_traction.normal
+                                 : 0.0;
+  return r;
+}
+
+}  // namespace wearscale::bem
