@@ -149,6 +149,34 @@ TEST(Resume, AKilledRunResumesToTheResultsOfAnUninterruptedRunBitForBit) {
   fs::remove_all(dir);
 }
 
+// A nano/dem junction run (one DEM junction, one thread) killed after a
+// checkpoint resumes from the saved DEM state to the same fit, bit for bit.
+TEST(Resume, AKilledDemJunctionRunResumesFromItsDemStateBitForBit) {
+  const auto dir = work / "dem";
+  const std::string junction = std::string(WEARSCALE_SOURCE_DIR) + "/cases/junction_sio2.toml";
+  const std::string args = "run '" + junction +
+                           "' -j 1 --set scale.nano.length=12 --set scale.nano.height=6 --set scale.nano.velocity=50"
+                           " --set scale.nano.contact_ratios=[1.0] --set scale.nano.pressures=[1e9]"
+                           " --set scale.nano.cache=false --set run.checkpoint_steps=100";
+  ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
+
+  const pid_t pid = spawn_cli(args + " --out part", dir);
+  ASSERT_GT(pid, 0);
+  int status = 0;
+  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
+      << "the run ended before its first checkpoint: " << slurp(dir / "cli.stderr");
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run had finished before it could be killed";
+
+  const auto r = run_cli(args + " --resume part", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("resumes at step"));
+  EXPECT_EQ(results_of(dir / "part" / "summary.json"), results_of(dir / "reference" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "part" / "checkpoint.h5")) << "a completed run keeps no checkpoint";
+  fs::remove_all(dir);
+}
+
 TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
   const auto dir = work / "sigint";
   ASSERT_EQ(run_cli("run '" + pin_on_disc + "'" + reduced + " --out reference", dir).status, 0);

@@ -253,7 +253,7 @@ class NanoDem final : public Scale {
           s.pressure = p;
           specs.push_back(s);
         }
-      const auto results = run_all(specs, i.pair());
+      const auto results = run_all(specs, i.pair(), ctx);
 
       std::vector<dem::JunctionPoint> points;
       for (const auto& r : results) {
@@ -342,7 +342,8 @@ class NanoDem final : public Scale {
 
   // Runs (or reads) every junction, on jobs_ threads; each run is computed
   // once per process and once per cache.
-  std::vector<Run> run_all(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair) const {
+  std::vector<Run> run_all(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair,
+                           RunContext& ctx) const {
     std::vector<std::string> keys;
     for (const auto& s : specs) keys.push_back(run_key(s));
     std::vector<std::shared_future<JunctionStrengthResult>> futures(specs.size());
@@ -356,7 +357,7 @@ class NanoDem final : public Scale {
         if (!claim.mine) continue;  // another run of this process computes it
         try {
           bool fresh = false;
-          claim.mine->set_value(compute(specs[k], keys[k], pair, fresh));
+          claim.mine->set_value(compute(specs[k], keys[k], pair, ctx, fresh));
           computed[k] = fresh ? 1 : 0;
         } catch (...) {
           JunctionRuns::instance().forget(keys[k]);
@@ -377,7 +378,7 @@ class NanoDem final : public Scale {
   }
 
   JunctionStrengthResult compute(const JunctionStrengthSpec& spec, const std::string& key, const std::string& pair,
-                                 bool& fresh) const {
+                                 RunContext& ctx, bool& fresh) const {
     const fs::path entry = cache_dir_ / (key + ".json");
     if (cache_) {
       std::error_code ec;
@@ -391,7 +392,22 @@ class NanoDem final : public Scale {
       }
     }
     log::info("nano/dem: {} junction D/L = {:g} at p_N = {:.3g} GPa ...", pair, spec.contact_ratio, spec.pressure / 1e9);
-    auto result = dem::run_junction_strength(spec);
+    // Checkpointed as its own owner in the run's checkpoint (several junctions
+    // run side by side; the checkpointer is shared, hence the lock).
+    const std::string owner = "nano/dem/" + key;
+    dem::JunctionCheckpoints checkpoints;
+    {
+      std::lock_guard lock(checkpoint_mutex_);
+      checkpoints.from = ctx.checkpoints().restored(owner);
+    }
+    if (checkpoints.from != nullptr)
+      log::info("nano/dem: {} D/L = {:g} at p_N = {:.3g} GPa resumes at step {}", pair, spec.contact_ratio,
+                spec.pressure / 1e9, checkpoints.from->step);
+    checkpoints.at_sample = [&](long step, const std::function<CheckpointState()>& make) {
+      std::lock_guard lock(checkpoint_mutex_);
+      ctx.checkpoints().at_step(owner, step, make);
+    };
+    auto result = dem::run_junction_strength(spec, {}, checkpoints);
     fresh = true;
     log::info("nano/dem: {} D/L = {:g}, p_N = {:.3g} GPa: peak p_T {:.3g} GPa, steady {:.3g} GPa, A/A0 {:.2f} → {:.2f} ({})",
               pair, spec.contact_ratio, spec.pressure / 1e9, result.peak_tangential / 1e9,
@@ -463,6 +479,7 @@ class NanoDem final : public Scale {
   double scaling_exponent_ = 0.5, restitution_ = 0.9;
   bool clamp_poisson_ = true, cache_ = true;
   fs::path cache_dir_;
+  mutable std::mutex checkpoint_mutex_;  // junction runs save checkpoints from several threads
   int jobs_ = 1;
 };
 

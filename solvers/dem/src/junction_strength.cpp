@@ -123,7 +123,8 @@ double contact_ratio_at(const Simulation& sim, double z_mid, double d0) {
   return static_cast<double>(std::count(covered.begin(), covered.end(), 1)) / static_cast<double>(bins);
 }
 
-JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, const JunctionStrengthObserver& observe) {
+JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, const JunctionStrengthObserver& observe,
+                                             const JunctionCheckpoints& checkpoints) {
   check(spec);
   const auto& cell = spec.cell;
   const double d0 = cell.d0;
@@ -222,7 +223,43 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   std::vector<Vec3> window_positions;
   double window_sliding = 0.0, steady_sum = 0.0, normal_sum = 0.0;
   long steady_count = 0, slide_count = 0;
-  for (long step = 0; step < planned;) {
+  long step = 0;
+  // The run's state: the DEM system and the measurements so far.
+  auto save = [&] {
+    CheckpointState st;
+    sim.save_state(st);
+    std::vector<double> h;
+    for (const auto& x : out.history)
+      h.insert(h.end(), {x.time, x.sliding, x.tangential_force, x.normal_force, x.kinetic_energy});
+    st.put("junction.history", h);
+    std::vector<double> w;
+    for (const Vec3& x : window_positions) w.insert(w.end(), {x.x, x.y, x.z});
+    st.put("junction.window_positions", w);
+    st.put("junction.tallies", std::vector<double>{double(step), out.loaded_contact_ratio, out.peak_tangential,
+                                                   window_sliding, steady_sum, normal_sum, double(steady_count),
+                                                   double(slide_count)});
+    return st;
+  };
+  if (checkpoints.from != nullptr) {
+    const CheckpointState& st = *checkpoints.from;
+    sim.restore_state(st);
+    const auto& t = st.array("junction.tallies");
+    const auto& h = st.array("junction.history");
+    const auto& w = st.array("junction.window_positions");
+    if (t.size() != 8 || h.size() % 5 != 0 || w.size() % 3 != 0 || sim.particles().size() != out.particles)
+      throw InputError(fmt::format("{}: not the state of this junction run", st.origin));
+    step = static_cast<long>(t[0]);
+    out.loaded_contact_ratio = t[1];
+    out.peak_tangential = t[2];
+    window_sliding = t[3];
+    steady_sum = t[4];
+    normal_sum = t[5];
+    steady_count = static_cast<long>(t[6]);
+    slide_count = static_cast<long>(t[7]);
+    for (std::size_t k = 0; k < h.size(); k += 5) out.history.push_back({h[k], h[k + 1], h[k + 2], h[k + 3], h[k + 4]});
+    for (std::size_t k = 0; k < w.size(); k += 3) window_positions.push_back({w[k], w[k + 1], w[k + 2]});
+  }
+  while (step < planned) {
     if (step == settle_steps) {
       out.loaded_contact_ratio = contact_ratio_at(sim, mid_plane(), d0);
       sim.wall(top_wall).velocity.x = spec.velocity;  // start sliding
@@ -253,6 +290,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
       window_sliding = s.sliding;
     }
     if (observe) observe(sim, s, step, planned);
+    if (checkpoints.at_sample && step < planned) checkpoints.at_sample(step, save);
   }
   if (settle_steps == 0 && out.loaded_contact_ratio == 0.0) out.loaded_contact_ratio = out.initial_contact_ratio;
   out.steps = planned;

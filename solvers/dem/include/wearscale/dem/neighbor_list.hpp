@@ -5,8 +5,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/dem/box.hpp"
 #include "wearscale/dem/particles.hpp"
 
@@ -45,6 +47,13 @@ class NeighborList {
   long builds() const { return builds_; }
   /// Forgets all pairs and histories.
   void clear();
+
+  /// The pairs, their histories and the positions at the last build, under
+  /// `prefix` in a checkpoint, bit for bit (a restored list is the one saved,
+  /// not a rebuild, so a resumed run sums its forces in the same order).
+  void save(CheckpointState& out, const std::string& prefix) const;
+  /// InputError naming the entry when the checkpoint does not fit `particles`.
+  void restore(const CheckpointState& in, const std::string& prefix, std::size_t particles);
 
  private:
   void sort_and_keep_history(std::size_t n);

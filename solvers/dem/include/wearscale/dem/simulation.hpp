@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/dem/box.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
 #include "wearscale/dem/hooke_law.hpp"
@@ -63,6 +64,17 @@ class Simulation {
   /// Forces and torques at the current positions (also updates the virial);
   /// tangential histories are not advanced (as in LAMMPS' setup).
   void compute_forces();
+
+  /// The dynamic state for a checkpoint, bit for bit: every particle array,
+  /// the box, the walls and their motion, the neighbour list with its
+  /// tangential histories, the clock and the time step. The force law and
+  /// the neighbour settings are the system's set-up, not state: a run is
+  /// resumed by setting the system up as before, then restore_state().
+  void save_state(CheckpointState& out) const;
+  /// Continues from a saved state: the next step() is the one the saved run
+  /// would have taken (same result bit for bit with the same thread count).
+  /// InputError naming the entry if the checkpoint is not a DEM state.
+  void restore_state(const CheckpointState& in);
 
   /// Per-particle virial W_i = ½ Σ_j r_ij ⊗ f_ij (only with set_track_virial).
   const std::vector<SymTensor>& virial() const { return virial_; }

@@ -1,0 +1,231 @@
+// Checkpoints of a DEM system: its dynamic state as named arrays of doubles
+// (integers and flags are stored exactly: all are far below 2^53).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/dem/neighbor_list.hpp"
+#include "wearscale/dem/simulation.hpp"
+
+namespace wearscale::dem {
+
+namespace {
+
+constexpr const char* kFormat = "wearscale-dem-state-1";
+
+std::vector<double> flatten(const std::vector<Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const Vec3& x : v) out.insert(out.end(), {x.x, x.y, x.z});
+  return out;
+}
+
+template <class T>
+std::vector<double> as_doubles(const std::vector<T>& v) {
+  return {v.begin(), v.end()};
+}
+
+// The entry `name`, which must hold `count` values.
+const std::vector<double>& sized(const CheckpointState& in, const std::string& name, std::size_t count) {
+  const auto& a = in.array(name);
+  if (a.size() != count)
+    throw InputError(fmt::format("{}: DEM state entry '{}' holds {} values, expected {}: not the state of this system",
+                                 in.origin, name, a.size(), count));
+  return a;
+}
+
+void unflatten(const CheckpointState& in, const std::string& name, std::vector<Vec3>& out) {
+  const auto& a = sized(in, name, 3 * out.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {a[3 * i], a[3 * i + 1], a[3 * i + 2]};
+}
+
+template <class T>
+void from_doubles(const CheckpointState& in, const std::string& name, std::vector<T>& out) {
+  const auto& a = sized(in, name, out.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(a[i]);
+}
+
+Vec3 vec(const CheckpointState& in, const std::string& name) {
+  const auto& a = sized(in, name, 3);
+  return {a[0], a[1], a[2]};
+}
+
+void put(CheckpointState& out, const std::string& name, const Vec3& v) {
+  const double a[3] = {v.x, v.y, v.z};
+  out.put(name, a);
+}
+
+}  // namespace
+
+void NeighborList::save(CheckpointState& out, const std::string& prefix) const {
+  out.put(prefix + "offsets", as_doubles(offset_));
+  out.put(prefix + "neighbors", as_doubles(neighbor_));
+  out.put(prefix + "shifts", as_doubles(shift_));
+  out.put(prefix + "history", history_);
+  out.put(prefix + "built_at", flatten(built_at_));
+  out.put(prefix + "half_skin", half_skin_);
+  out.put(prefix + "builds", static_cast<double>(builds_));
+}
+
+void NeighborList::restore(const CheckpointState& in, const std::string& prefix, std::size_t particles) {
+  const std::size_t pairs = in.array(prefix + "neighbors").size();
+  const bool built = !in.array(prefix + "offsets").empty();
+  offset_.resize(built ? particles + 1 : 0);
+  neighbor_.resize(pairs);
+  shift_.resize(pairs);
+  history_ = sized(in, prefix + "history", 3 * pairs);
+  built_at_.resize(in.array(prefix + "built_at").size() / 3);
+  from_doubles(in, prefix + "offsets", offset_);
+  from_doubles(in, prefix + "neighbors", neighbor_);
+  from_doubles(in, prefix + "shifts", shift_);
+  unflatten(in, prefix + "built_at", built_at_);
+  if (built && (offset_.back() != pairs || built_at_.size() != particles))
+    throw InputError(fmt::format("{}: the DEM neighbour list in '{}' does not fit {} particles", in.origin, prefix,
+                                 particles));
+  for (std::uint32_t j : neighbor_)
+    if (j >= particles)
+      throw InputError(fmt::format("{}: the DEM neighbour list in '{}' names particle {} of {}", in.origin, prefix, j,
+                                   particles));
+  half_skin_ = in.scalar(prefix + "half_skin");
+  builds_ = static_cast<long>(in.scalar(prefix + "builds"));
+  old_offset_.clear();
+  old_neighbor_.clear();
+  old_history_.clear();
+}
+
+void Simulation::save_state(CheckpointState& out) const {
+  const Particles& p = particles_;
+  out.put_text("dem.format", kFormat);
+  out.put("dem.position", flatten(p.position));
+  out.put("dem.velocity", flatten(p.velocity));
+  out.put("dem.omega", flatten(p.omega));
+  out.put("dem.force", flatten(p.force));
+  out.put("dem.torque", flatten(p.torque));
+  out.put("dem.radius", p.radius);
+  out.put("dem.mass", p.mass);
+  out.put("dem.inv_mass", p.inv_mass);
+  out.put("dem.inv_inertia", p.inv_inertia);
+  out.put("dem.id", as_doubles(p.id));
+  out.put("dem.material", as_doubles(p.material));
+  out.put("dem.body", as_doubles(p.body));
+  out.put("dem.wall", as_doubles(p.wall));
+  std::vector<double> image;
+  image.reserve(3 * p.size());
+  for (const auto& im : p.image) image.insert(image.end(), im.begin(), im.end());
+  out.put("dem.image", image);
+
+  put(out, "dem.box.lo", box_.lo);
+  put(out, "dem.box.hi", box_.hi);
+  out.put("dem.box.periodic", std::vector<double>{double(box_.periodic[0]), double(box_.periodic[1]),
+                                                  double(box_.periodic[2])});
+
+  out.put("dem.walls", static_cast<double>(walls_.size()));
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const Wall& wall = walls_[w];
+    const WallMotion& m = wall.motion;
+    const std::string k = fmt::format("dem.wall{}.", w);
+    out.put(k + "members", as_doubles(wall.members));
+    out.put(k + "motion", std::vector<double>{double(static_cast<int>(m.kind)), m.velocity.x, m.velocity.y,
+                                              m.velocity.z, double(m.axis), m.pressure, m.area, double(m.outward),
+                                              m.mass, m.damping});
+    out.put(k + "mass", wall.mass);
+    put(out, k + "velocity", wall.velocity);
+    put(out, k + "force", wall.force);
+    put(out, k + "displacement", wall.displacement);
+  }
+
+  neighbors_.save(out, "dem.list.");
+  out.put("dem.clock", std::vector<double>{double(step_), double(since_build_), time_, dt_, double(forces_valid_),
+                                           global_damping_});
+  if (track_virial_) {
+    std::vector<double> v;
+    v.reserve(6 * virial_.size());
+    for (const auto& t : virial_) v.insert(v.end(), t.begin(), t.end());
+    out.put("dem.virial", v);
+  }
+}
+
+void Simulation::restore_state(const CheckpointState& in) {
+  if (!in.has("dem.format") || in.text("dem.format") != kFormat)
+    throw InputError(fmt::format("{}: not a DEM state of this version (expected format '{}')", in.origin, kFormat));
+  const std::size_t n = in.array("dem.radius").size();
+  Particles& p = particles_;
+  for (auto* v : {&p.position, &p.velocity, &p.omega, &p.force, &p.torque}) v->resize(n);
+  for (auto* v : {&p.radius, &p.mass, &p.inv_mass, &p.inv_inertia}) v->resize(n);
+  p.id.resize(n);
+  p.material.resize(n);
+  p.body.resize(n);
+  p.wall.resize(n);
+  p.image.resize(n);
+  unflatten(in, "dem.position", p.position);
+  unflatten(in, "dem.velocity", p.velocity);
+  unflatten(in, "dem.omega", p.omega);
+  unflatten(in, "dem.force", p.force);
+  unflatten(in, "dem.torque", p.torque);
+  p.radius = in.array("dem.radius");
+  p.mass = sized(in, "dem.mass", n);
+  p.inv_mass = sized(in, "dem.inv_mass", n);
+  p.inv_inertia = sized(in, "dem.inv_inertia", n);
+  from_doubles(in, "dem.id", p.id);
+  from_doubles(in, "dem.material", p.material);
+  from_doubles(in, "dem.body", p.body);
+  from_doubles(in, "dem.wall", p.wall);
+  const auto& image = sized(in, "dem.image", 3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t a = 0; a < 3; ++a) p.image[i][a] = static_cast<std::int32_t>(image[3 * i + a]);
+
+  box_.lo = vec(in, "dem.box.lo");
+  box_.hi = vec(in, "dem.box.hi");
+  const auto& periodic = sized(in, "dem.box.periodic", 3);
+  for (std::size_t a = 0; a < 3; ++a) box_.periodic[a] = periodic[a] != 0.0;
+
+  const auto walls = static_cast<std::size_t>(in.scalar("dem.walls"));
+  walls_.assign(walls, Wall{});
+  for (std::size_t w = 0; w < walls; ++w) {
+    Wall& wall = walls_[w];
+    const std::string k = fmt::format("dem.wall{}.", w);
+    const auto& members = in.array(k + "members");
+    wall.members.assign(members.begin(), members.end());
+    for (std::size_t i : wall.members)
+      if (i >= n) throw InputError(fmt::format("{}: DEM wall {} names particle {} of {}", in.origin, w, i, n));
+    const auto& m = sized(in, k + "motion", 10);
+    wall.motion.kind = static_cast<WallMotion::Kind>(static_cast<int>(m[0]));
+    wall.motion.velocity = {m[1], m[2], m[3]};
+    wall.motion.axis = static_cast<int>(m[4]);
+    wall.motion.pressure = m[5];
+    wall.motion.area = m[6];
+    wall.motion.outward = static_cast<int>(m[7]);
+    wall.motion.mass = m[8];
+    wall.motion.damping = m[9];
+    wall.mass = in.scalar(k + "mass");
+    wall.velocity = vec(in, k + "velocity");
+    wall.force = vec(in, k + "force");
+    wall.displacement = vec(in, k + "displacement");
+  }
+
+  neighbors_.restore(in, "dem.list.", n);
+  const auto& clock = sized(in, "dem.clock", 6);
+  step_ = static_cast<long>(clock[0]);
+  since_build_ = static_cast<long>(clock[1]);
+  time_ = clock[2];
+  dt_ = clock[3];
+  global_damping_ = clock[5];
+  shift_table_ = NeighborList::shift_vectors(box_);
+  if (neighbors_.offsets().empty()) {
+    forces_valid_ = false;  // saved before the first step: the list is built then
+  } else {
+    prepare_pairs();  // per-pair parameters and thread buffers for the restored list
+    forces_valid_ = clock[4] != 0.0;
+  }
+  if (track_virial_) {
+    virial_.assign(n, SymTensor{});
+    if (in.has("dem.virial")) {
+      const auto& v = sized(in, "dem.virial", 6 * n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t c = 0; c < 6; ++c) virial_[i][c] = v[6 * i + c];
+    }
+  }
+}
+
+}  // namespace wearscale::dem
