@@ -201,6 +201,25 @@ TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
   fs::remove_all(dir);
 }
 
+// A DEM study (`wearscale dem junction`) stops on SIGINT within a chunk of
+// steps, with status 130, and leaves no unfinished dump behind.
+TEST(Resume, SigintStopsADemStudyCleanly) {
+  const auto dir = work / "dem-sigint";
+  const std::string junction = std::string(WEARSCALE_SOURCE_DIR) + "/cases/dem_sheared_junction.toml";
+  const pid_t pid = spawn_cli("dem junction '" + junction + "' --out stopped", dir);
+  ASSERT_GT(pid, 0);
+  int status = 0;
+  ASSERT_TRUE(wait_until([&] { return has_partial_file(dir / "stopped", ".junction.dump.partial-"); }, pid, status))
+      << slurp(dir / "cli.stderr");
+  ::kill(pid, SIGINT);
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must not kill the process outright";
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
+  EXPECT_THAT(slurp(dir / "cli.stderr"), HasSubstr("interrupted by SIGINT"));
+  EXPECT_FALSE(has_partial_file(dir / "stopped", ".")) << "the unfinished dump is removed";
+  fs::remove_all(dir);
+}
+
 TEST(Resume, AKilledSweepRerunsOnlyItsUnfinishedRuns) {
   const auto dir = work / "sweep";
   std::string sweep_case = slurp(pin_on_disc);

@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
 
 namespace wearscale::dem {
 
@@ -430,6 +431,9 @@ void Simulation::step() {
 
 void Simulation::run(long steps, const std::function<void(long)>& observe) {
   for (long s = 0; s < steps; ++s) {
+    // SIGINT/SIGTERM: at the start of a call, so that a study running in
+    // chunks stops between them (where it checkpoints), and every 1024 steps.
+    if (s % 1024 == 0) throw_if_interrupted(fmt::format("dem (step {})", step_));
     step();
     if (observe) observe(step_);
   }

@@ -55,7 +55,9 @@ class Simulation {
   /// One velocity-Verlet step (6.1). Throws NumericalError when a velocity
   /// becomes non-finite or a particle jumps further than the skin in a step.
   void step();
-  /// `steps` steps; `observe(step)` after each when given.
+  /// `steps` steps; `observe(step)` after each when given. Throws
+  /// Interrupted when SIGINT/SIGTERM arrived (checked at the start of the
+  /// call and every 1024 steps).
   void run(long steps, const std::function<void(long)>& observe = {});
 
   long step_count() const { return step_; }
