@@ -2,8 +2,13 @@
 //                          [--nu NU] [--s S] [--no-strengths] [--set KEY=VALUE]... [--out DIR] [--json]
 // wearscale dem junction   [CASE.toml] --material SiO2 --D 20e-9 --d0 6e-9 [--velocity V] [--pressure P]
 //                          [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
-// The coarse-grained DEM of thesis ch. 6: patch tests measuring E, ν, σ_m,N,
-// σ_m,T beside their targets (§6.2), and the sheared junction of §6.3.
+// wearscale dem rough-shear [CASE.toml] --material SiO2 --d0 3e-9 [--length L] [--roughness SA_OVER_L]
+//                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
+// wearscale dem trapped-particles [CASE.toml] --material SiO2 --n 3 --D 18e-9 --d0 3e-9 [--length L]
+//                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
+// The coarse-grained DEM of thesis ch. 6-7: patch tests measuring E, ν, σ_m,N,
+// σ_m,T beside their targets (§6.2), the sheared junction of §6.3, sheared
+// rough surfaces (§7.2) and loose particles trapped between flat surfaces (§7.3).
 #include <iostream>
 
 #include <fmt/format.h>
@@ -71,7 +76,7 @@ void common(CLI::App* cmd, DemArgs& a) {
 }  // namespace
 
 Command add_dem(CLI::App& app) {
-  auto* dem = app.add_subcommand("dem", "Coarse-grained cohesive DEM (thesis ch. 6): patch tests and sheared junctions");
+  auto* dem = app.add_subcommand("dem", "Coarse-grained cohesive DEM (thesis ch. 6-7): patch tests, sheared junctions, rough surfaces, trapped particles");
   dem->require_subcommand(1);
 
   auto* patch = dem->add_subcommand(
@@ -101,8 +106,51 @@ Command add_dem(CLI::App& app) {
   flag(junction, *j, "--slide", "dem.junction.sliding_distance", "sliding distance (default 1.5 D)");
   flag(junction, *j, "--seed", "dem.junction.seed", "seed of the amorphous sample");
 
-  return [dem, patch, p, junction, j]() {
+  auto* rough = dem->add_subcommand(
+      "rough-shear", "Shear two rough surfaces under a normal pressure (§7.2): worn particles, F_T history, Sa evolution");
+  auto rs = std::make_shared<DemArgs>();
+  rs->flags.reserve(16);
+  common(rough, *rs);
+  flag(rough, *rs, "--material", "dem.material", "Si, SiO2 or a [materials.define] name");
+  flag(rough, *rs, "--d0", "dem.rough_shear.d0", "mode of the particle diameters");
+  flag(rough, *rs, "--length", "dem.rough_shear.length", "cell length L (thesis: 25, 50, 100 d0)");
+  flag(rough, *rs, "--roughness", "dem.rough_shear.roughness", "initial Sa / L (thesis: 0.01, 0.02, 0.04)");
+  flag(rough, *rs, "--velocity", "dem.rough_shear.velocity", "sliding velocity of the top wall");
+  flag(rough, *rs, "--pressure", "dem.rough_shear.pressure", "normal pressure on the top wall");
+  flag(rough, *rs, "--slide", "dem.rough_shear.sliding_distance", "sliding distance (default L)");
+  flag(rough, *rs, "--seed", "dem.rough_shear.seed", "seed of the amorphous sample and the profiles");
+
+  auto* trapped = dem->add_subcommand(
+      "trapped-particles",
+      "Shear n loose particles trapped between flat surfaces (§7.3): rolling particles or a shear band");
+  auto tp = std::make_shared<DemArgs>();
+  tp->flags.reserve(16);
+  common(trapped, *tp);
+  flag(trapped, *tp, "--material", "dem.material", "Si, SiO2 or a [materials.define] name");
+  flag(trapped, *tp, "--n", "dem.trapped_particles.count", "number of loose particles (thesis: 2 to 4)");
+  flag(trapped, *tp, "--D", "dem.trapped_particles.diameter", "diameter of the loose particles (= the gap)");
+  flag(trapped, *tp, "--d0", "dem.trapped_particles.d0", "mode of the particle diameters");
+  flag(trapped, *tp, "--length", "dem.trapped_particles.length", "cell length L (default 3 n D)");
+  flag(trapped, *tp, "--velocity", "dem.trapped_particles.velocity", "sliding velocity of the top wall");
+  flag(trapped, *tp, "--pressure", "dem.trapped_particles.pressure", "normal pressure on the top wall");
+  flag(trapped, *tp, "--slide", "dem.trapped_particles.sliding_distance", "sliding distance (default L)");
+  flag(trapped, *tp, "--seed", "dem.trapped_particles.seed", "seed of the amorphous sample");
+
+  return [dem, patch, p, junction, j, rough, rs, trapped, tp]() {
     std::filesystem::path out;
+    // The wear studies of ch. 7: the study, then the force-history plot.
+    using Study = nlohmann::json (*)(const Config&, const std::filesystem::path&);
+    auto wear_study = [&](const DemArgs& a, const std::string& default_out, const std::string& name, Study run) {
+      const Config cfg = build_config(a, default_out, out);
+      nlohmann::json summary = run(cfg, out);
+      if (auto png = coupling::plot_junction_force(out / (name + "_history.csv"), out / (name + "_force.png"),
+                                                   summary["verdict"].get<std::string>()))
+        summary["files"].push_back(png->string());
+      return finish(a, summary, cfg, out, name);
+    };
+    if (dem->got_subcommand(rough)) return wear_study(*rs, "out/dem-rough-shear", "rough_shear", dem::run_rough_shear_study);
+    if (dem->got_subcommand(trapped))
+      return wear_study(*tp, "out/dem-trapped-particles", "trapped_particles", dem::run_trapped_particles_study);
     if (dem->got_subcommand(patch)) {
       if (p->no_strengths) p->overrides.emplace_back("dem.patch_test.strengths=false");
       const Config cfg = build_config(*p, "out/dem-patch-test", out);

@@ -1,6 +1,7 @@
 #include "wearscale/dem/dem_study.hpp"
 
 #include <cmath>
+#include <string_view>
 #include <fmt/format.h>
 
 #include "wearscale/core/csv.hpp"
@@ -10,8 +11,10 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/dem/dump_writer.hpp"
 #include "wearscale/dem/patch_test.hpp"
+#include "wearscale/dem/rough_shear.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
 #include "wearscale/materials/material.hpp"
 
 namespace wearscale::dem {
@@ -22,6 +25,84 @@ void report(nlohmann::json& results, const std::string& name, double v, const st
             const std::string& what) {
   results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
 }
+
+// The keys both wear studies share (the sliding cell), read from `c`; the
+// cell size is read by each study. Every value is range-checked here.
+void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cell) {
+  cell.material = dem_material(root);
+  cell.d0 = c.number("d0", Range::positive(), units::length);
+  cell.largest = c.number_or("largest", 1.25 * cell.d0, Range::at_least(cell.d0), units::length);
+  cell.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
+  cell.pressure = c.number_or("pressure", 0.5e9, Range::closed(0.0, cell.material.tensile_strength), units::pressure);
+  cell.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
+  cell.settle_distance = c.number_or("settle_distance", cell.d0, Range::non_negative(), units::length);
+  cell.wall_damping = c.number_or("wall_damping", 0.0, Range::closed(0.0, 1.0));
+  cell.wall_thickness = c.number_or("wall_thickness", 1.5, Range::closed(1.0, 10.0));
+  cell.record_every = c.integer_or("record_every", 200, Range::at_least(1));
+  cell.seed = static_cast<std::uint64_t>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
+  cell.relax_tolerance = c.number_or("relax_tolerance", 1e-4, Range::open(0.0, 1e-2));
+  cell.max_relax_steps = c.integer_or("max_relax_steps", 20000, Range::at_least(0));
+}
+
+// The cell size L × W × H: W at least twice the neighbour cutoff, L at least
+// `min_length`, H at least `min_height`.
+Vec3 read_cell_box(const Config& c, const SlidingCellSpec& cell, double default_length, double min_length,
+                   double default_height, double min_height) {
+  const double d_l = cell.largest;
+  Vec3 box;
+  box.x = c.number_or("length", default_length, Range::at_least(min_length), units::length);
+  box.y = c.number_or("depth", 3.5 * cell.d0, Range::at_least(2.8 * d_l), units::length);
+  box.z = c.number_or("height", default_height, Range::at_least(min_height), units::length);
+  return box;
+}
+
+// The history of a wear study as CSV (sliding distance and forces in the
+// columns plot_junction_force reads) and as an HDF5 table; returns the
+// open HDF5 file for the results.
+std::vector<std::string> write_sliding_history(const std::vector<SlidingSample>& history, const std::filesystem::path& csv,
+                                               H5Writer& h5, const std::string& title) {
+  std::vector<double> t, s, ft, fn, ke, worn, sa_b, sa_t;
+  for (const auto& h : history) {
+    t.push_back(h.time);
+    s.push_back(h.sliding);
+    ft.push_back(h.tangential_force);
+    fn.push_back(h.normal_force);
+    ke.push_back(h.kinetic_energy);
+    worn.push_back(h.worn);
+    sa_b.push_back(h.roughness_bottom);
+    sa_t.push_back(h.roughness_top);
+  }
+  write_csv(csv,
+            {"time_s", "sliding_m", "tangential_force_N", "normal_force_N", "kinetic_energy_J", "worn",
+             "roughness_bottom_m", "roughness_top_m"},
+            {t, s, ft, fn, ke, worn, sa_b, sa_t}, {title});
+  h5.write_table("/history",
+                 {"time", "sliding", "tangential_force", "normal_force", "kinetic_energy", "worn", "roughness_bottom",
+                  "roughness_top"},
+                 {t, s, ft, fn, ke, worn, sa_b, sa_t}, {"s", "m", "N", "N", "J", "1", "m", "m"});
+  return {csv.string(), h5.final_path().string()};
+}
+
+// Snapshots for OVITO every `every` steps (and the first and last), with
+// the worn flag as an extra column.
+struct SlidingDumps {
+  DumpWriter writer;
+  long every;
+  std::unique_ptr<Progress> bar;
+  void operator()(const SlidingCell& cell, long step, long planned, const std::string& name) {
+    if (!bar) {
+      bar = std::make_unique<Progress>(name, static_cast<double>(planned));
+      write(cell);
+    }
+    bar->update(static_cast<double>(step));
+    if (every > 0 && (step % every < cell_record_every || step == planned)) write(cell);
+  }
+  void write(const SlidingCell& cell) {
+    const auto worn = cell.worn_flags();
+    writer.write(cell.simulation(), {{"worn", worn}});
+  }
+  long cell_record_every = 1;
+};
 
 }  // namespace
 
@@ -193,6 +274,132 @@ nlohmann::json run_junction_study(const Config& root, const std::filesystem::pat
   h5.commit();
   return {{"results", results}, {"verdict", r.verdict()},
           {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
+}
+
+nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::path& out) {
+  RoughShearSpec spec;
+  const Config c = root.section("dem.rough_shear");
+  read_sliding_cell(root, c, spec.cell);
+  const double d0 = spec.cell.d0;
+  spec.cell.box = read_cell_box(c, spec.cell, 25.0 * d0, 10.0 * d0, 14.0 * d0, 2.0 * (spec.cell.wall_thickness + 2.0) * d0);
+  spec.roughness = c.number_or("roughness", 0.02, Range::closed(0.0, 0.1));
+  spec.hurst = c.number_or("hurst", 0.8, Range::open_closed(0.0, 1.0));
+  spec.shortest_wavelength = c.number_or("shortest_wavelength", 4.0, Range::at_least(2.0));
+  spec.cell.sliding_distance = c.number_or("sliding_distance", spec.cell.box.x, Range::positive(), units::length);
+  const long dump_every = c.integer_or("dump_every", 2000, Range::at_least(0));
+  root.reject_unknown_keys();
+
+  log::info("DEM sheared rough surfaces (§7.2): {} L = {:.3g} m, Sa = {:g} L, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa",
+            spec.cell.material.name, spec.cell.box.x, spec.roughness, d0, spec.cell.velocity, spec.cell.pressure);
+  std::filesystem::create_directories(out);
+  SlidingDumps dumps{DumpWriter(out / "rough_shear.dump"), dump_every, nullptr, spec.cell.record_every};
+  RoughShearResult r;
+  try {
+    r = run_rough_shear(spec, [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
+      dumps(cell, step, planned, "sheared rough surfaces");
+    });
+  } catch (const InputError& e) {  // the profiles need more height than given: name the key
+    if (std::string_view(e.what()).find("cell height") == std::string_view::npos) throw;
+    throw c.error("height", e.what());
+  }
+  dumps.bar.reset();
+  dumps.writer.commit();
+
+  const auto& first = r.history.front();
+  const auto& last = r.history.back();
+  const double sa_initial = 0.5 * (first.roughness_bottom + first.roughness_top);
+  const double sa_final = 0.5 * (last.roughness_bottom + last.roughness_top);
+  H5Writer h5(out / "rough_shear.h5");
+  auto files = write_sliding_history(
+      r.history, out / "rough_shear_history.csv", h5,
+      fmt::format("sheared rough {} surfaces (§7.2): L = {:.3g} m, Sa = {:g} L, d0 = {:.3g} m, p_N = {:.3g} Pa; {}",
+                  spec.cell.material.name, spec.cell.box.x, spec.roughness, d0, spec.cell.pressure, r.regime));
+  h5.set_attribute("/", "case_toml", root.to_toml());
+  nlohmann::json results = nlohmann::json::object();
+  auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+    report(results, name, v, unit, what);
+    h5.write_scalar("/results/" + name, v, unit);
+  };
+  put("mean_pressure", r.mean_pressure, "Pa", "mean measured p_N over the second half of the slide");
+  put("pressure_ratio", spec.cell.pressure > 0.0 ? r.mean_pressure / spec.cell.pressure : 0.0, "1",
+      "measured over imposed p_N (1: the wall holds the load)");
+  put("friction", r.friction, "1", "mean F_T / mean F_N over the second half");
+  put("mean_tangential_force", r.mean_tangential_force, "N", "mean F_T over the second half");
+  put("peak_tangential_force", r.peak_tangential_force, "N", "peak F_T");
+  put("worn", static_cast<double>(r.worn), "1", "worn particles at the end (> half of the initial neighbours lost)");
+  put("worn_fraction", r.worn_fraction, "1", "of the mobile particles");
+  put("imposed_roughness", r.imposed_roughness, "m", "Sa of the carved profiles");
+  put("initial_roughness", sa_initial, "m", "measured Sa of the surfaces before sliding (mean of both)");
+  put("final_roughness", sa_final, "m", "measured Sa at the end (unworn particles, mean of both)");
+  put("roughness_ratio", sa_initial > 0.0 ? sa_final / sa_initial : 0.0, "1", "final over initial Sa");
+  put("wear_particle", static_cast<double>(r.wear_particle), "1", "particles of the largest cluster of worn particles");
+  put("wear_particle_residual", r.wear_particle_residual, "1", "its motion not explained by a rigid body (0: rigid)");
+  put("rolling", r.regime == "rolling wear particles" ? 1.0 : 0.0, "1", r.regime);
+  put("d_star", r.d_star, "m", "critical junction size 32γG/σ_m,T² (6.65)");
+  put("particles", static_cast<double>(r.particles), "1", "particles");
+  put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
+  h5.commit();
+  files.push_back(dumps.writer.final_path().string());
+  return {{"results", results}, {"verdict", r.regime}, {"files", files}};
+}
+
+nlohmann::json run_trapped_particles_study(const Config& root, const std::filesystem::path& out) {
+  TrappedParticlesSpec spec;
+  const Config c = root.section("dem.trapped_particles");
+  read_sliding_cell(root, c, spec.cell);
+  const double d0 = spec.cell.d0;
+  spec.count = static_cast<int>(c.integer_or("count", 3, Range::closed(1, 16)));
+  spec.diameter = c.number("diameter", Range::at_least(3.0 * d0), units::length);
+  spec.clearance = c.number_or("clearance", 0.25, Range::closed_open(0.0, 1.0));
+  spec.fit_from = c.number_or("fit_from", 0.0, Range::closed_open(0.0, 1.0));
+  const double min_height = spec.diameter + 2.0 * (spec.cell.wall_thickness + 2.0) * d0;
+  const double min_length = spec.count * (spec.diameter + d0);
+  spec.cell.box = read_cell_box(c, spec.cell, 3.0 * spec.count * spec.diameter, min_length, min_height + 2.0 * d0,
+                                min_height);
+  spec.cell.sliding_distance = c.number_or("sliding_distance", spec.cell.box.x, Range::positive(), units::length);
+  const long dump_every = c.integer_or("dump_every", 2000, Range::at_least(0));
+  root.reject_unknown_keys();
+
+  log::info("DEM trapped particles (§7.3): {} n = {}, D = {:.3g} m, L = {:.3g} m, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa",
+            spec.cell.material.name, spec.count, spec.diameter, spec.cell.box.x, d0, spec.cell.velocity, spec.cell.pressure);
+  std::filesystem::create_directories(out);
+  SlidingDumps dumps{DumpWriter(out / "trapped_particles.dump"), dump_every, nullptr, spec.cell.record_every};
+  const auto r = run_trapped_particles(spec, [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
+    dumps(cell, step, planned, "trapped particles");
+  });
+  dumps.bar.reset();
+  dumps.writer.commit();
+
+  H5Writer h5(out / "trapped_particles.h5");
+  auto files = write_sliding_history(
+      r.history, out / "trapped_particles_history.csv", h5,
+      fmt::format("{} {} particles of D = {:.3g} m trapped between flat surfaces (§7.3), d0 = {:.3g} m, p_N = {:.3g} Pa; {}",
+                  spec.count, spec.cell.material.name, spec.diameter, d0, spec.cell.pressure, r.regime()));
+  h5.set_attribute("/", "case_toml", root.to_toml());
+  nlohmann::json results = nlohmann::json::object();
+  auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+    report(results, name, v, unit, what);
+    h5.write_scalar("/results/" + name, v, unit);
+  };
+  double loose = 0.0;
+  for (auto n : r.loose_particles) loose += static_cast<double>(n) / static_cast<double>(r.loose_particles.size());
+  put("rolling", r.rolling ? 1.0 : 0.0, "1", r.regime());
+  put("mean_residual", r.mean_residual, "1", "loose particles' motion not explained by rigid bodies (0: rigid)");
+  put("friction", r.friction, "1", "mean F_T / mean F_N over the second half");
+  put("mean_pressure", r.mean_pressure, "Pa", "mean measured p_N over the second half of the slide");
+  put("pressure_ratio", spec.cell.pressure > 0.0 ? r.mean_pressure / spec.cell.pressure : 0.0, "1",
+      "measured over imposed p_N (1: the wall holds the load)");
+  put("mean_tangential_force", r.mean_tangential_force, "N", "mean F_T over the second half");
+  put("peak_tangential_force", r.peak_tangential_force, "N", "peak F_T");
+  put("worn_first_body", static_cast<double>(r.worn_first_body), "1", "worn particles of the two surfaces");
+  put("band_thickness", r.band_thickness, "m", "first-body material worn: its volume / (φ L W)");
+  put("loose_particles", loose, "1", "DEM particles per loose particle");
+  put("d_star", r.d_star, "m", "critical junction size 32γG/σ_m,T² (6.65)");
+  put("particles", static_cast<double>(r.particles), "1", "particles");
+  put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
+  h5.commit();
+  files.push_back(dumps.writer.final_path().string());
+  return {{"results", results}, {"verdict", r.regime()}, {"files", files}};
 }
 
 }  // namespace wearscale::dem

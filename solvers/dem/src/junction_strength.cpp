@@ -6,6 +6,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
+#include "wearscale/dem/rigid_fit.hpp"
 #include "wearscale/dem/shapes.hpp"
 #include "wearscale/dem/simulation.hpp"
 
@@ -45,20 +46,6 @@ void check(const JunctionStrengthSpec& s) {
   if (!(s.sliding_distance > 0.0)) refuse("sliding distance (in L)", s.sliding_distance, "> 0");
   if (!(s.steady_from >= 0.0 && s.steady_from < 1.0)) refuse("steady window start (fraction of the slide)", s.steady_from, "[0, 1)");
   if (s.record_every < 1) refuse("record_every", static_cast<double>(s.record_every), "≥ 1");
-}
-
-// Unwrapped x–z coordinates of a set of particles.
-std::vector<Vec3> unwrapped(const Simulation& sim, const std::vector<std::size_t>& set) {
-  const auto& p = sim.particles();
-  const Vec3 l = sim.box().length();
-  std::vector<Vec3> x;
-  x.reserve(set.size());
-  for (std::size_t i : set) {
-    Vec3 v = p.position[i];
-    for (int a = 0; a < 2; ++a) v[a] += p.image[i][static_cast<std::size_t>(a)] * l[a];
-    x.push_back(v);
-  }
-  return x;
 }
 
 struct Rigid2D {
@@ -286,7 +273,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
       }
     }
     if (step >= window_start && window_positions.empty()) {
-      window_positions = unwrapped(sim, junction);
+      window_positions = unwrapped_positions(sim, junction);
       window_sliding = s.sliding;
     }
     if (observe) observe(sim, s, step, planned);
@@ -300,7 +287,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
 
   // Rolling without slip between a fixed and a moving surface a gap g apart
   // turns the junction by slide/g: rolling_rate ≈ 1.
-  const auto fit = rigid_fit_xz(window_positions, unwrapped(sim, junction));
+  const auto fit = rigid_fit_xz(window_positions, unwrapped_positions(sim, junction));
   const double slid = sim.wall(top_wall).displacement.x - window_sliding;
   const double current_gap = gap + sim.wall(top_wall).displacement.z;
   out.rigid_residual = fit.residual;

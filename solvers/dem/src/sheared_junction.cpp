@@ -1,6 +1,5 @@
 #include "wearscale/dem/sheared_junction.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -10,6 +9,7 @@
 #include "wearscale/dem/amorphous_sample.hpp"
 #include "wearscale/dem/bonds.hpp"
 #include "wearscale/dem/clusters.hpp"
+#include "wearscale/dem/rigid_fit.hpp"
 #include "wearscale/dem/shapes.hpp"
 #include "wearscale/dem/simulation.hpp"
 
@@ -40,54 +40,6 @@ void check(const ShearedJunctionSpec& s) {
         "sheared junction: each surface is {:.3g} m thick, less than its wall ({} d0) plus one particle; "
         "allowed: box height ≥ H + 2 ({} + 1) d0 = {:.3g} m",
         solid, s.wall_thickness, s.wall_thickness, height + 2.0 * (s.wall_thickness + 1.0) * s.d0));
-}
-
-// Unwrapped coordinates (periodic images added back).
-Vec3 unwrapped(const Simulation& sim, std::size_t i) {
-  const auto& p = sim.particles();
-  const Vec3 l = sim.box().length();
-  Vec3 x = p.position[i];
-  for (int a = 0; a < 3; ++a) x[a] += p.image[i][static_cast<std::size_t>(a)] * l[a];
-  return x;
-}
-
-std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<std::size_t>& set) {
-  std::vector<Vec3> x;
-  x.reserve(set.size());
-  for (std::size_t i : set) x.push_back(unwrapped(sim, i));
-  return x;
-}
-
-struct RigidFit {
-  double residual = 0.0;  // RMS misfit of the best rigid motion / RMS displacement
-  double angle_y = 0.0;   // its rotation about y [rad]
-};
-
-// The rigid motion that best maps positions a onto b (Kabsch: SVD of the
-// covariance, Eigen) and how much of the displacement it leaves unexplained.
-RigidFit rigid_fit(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  const auto n = a.size();
-  Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < n; ++k) {
-    ca += Eigen::Vector3d(a[k].x, a[k].y, a[k].z);
-    cb += Eigen::Vector3d(b[k].x, b[k].y, b[k].z);
-  }
-  ca /= static_cast<double>(n);
-  cb /= static_cast<double>(n);
-  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-  for (std::size_t k = 0; k < n; ++k)
-    h += (Eigen::Vector3d(a[k].x, a[k].y, a[k].z) - ca) * (Eigen::Vector3d(b[k].x, b[k].y, b[k].z) - cb).transpose();
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  const Eigen::Matrix3d r = svd.matrixV() * d * svd.matrixU().transpose();
-  double misfit = 0.0, moved = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Eigen::Vector3d pa(a[k].x, a[k].y, a[k].z), pb(b[k].x, b[k].y, b[k].z);
-    misfit += (r * (pa - ca) + cb - pb).squaredNorm();
-    moved += (pb - cb - (pa - ca)).squaredNorm();
-  }
-  return {moved > 0.0 ? std::sqrt(misfit / moved) : 0.0, std::atan2(r(0, 2), r(0, 0))};
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #pragma once
 // The DEM studies a user runs from the command line (`wearscale dem ...`),
 // configured by the [dem] table of a case (flags map onto its keys): the
-// patch tests of §6.2 and the sheared junction of §6.3. Each validates every
-// key before it starts, writes its outputs under `out`, and returns a summary
-// {results: {name: {value, unit, description}}, files: [...]}.
+// patch tests of §6.2, the sheared junction of §6.3, the sheared rough
+// surfaces of §7.2 and the loose particles trapped between flat surfaces of
+// §7.3. Each validates every key before it starts, writes its outputs under
+// `out`, and returns a summary {results: {name: {value, unit, description}},
+// files: [...]}.
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -25,5 +27,16 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
 /// [dem.junction]: diameter, d0, largest, velocity, pressure, ...
 /// Writes the force history (CSV, HDF5) and OVITO-readable snapshots.
 nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out);
+
+/// [dem.rough_shear] (§7.2): d0, largest, length, depth, height, roughness
+/// (Sa/L), hurst, velocity, pressure, sliding_distance, ...
+/// Writes the history (forces, worn count, Sa; CSV, HDF5) and OVITO-readable
+/// snapshots with a worn column.
+nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::path& out);
+
+/// [dem.trapped_particles] (§7.3): count, diameter, d0, largest, length,
+/// depth, height, velocity, pressure, sliding_distance, ...
+/// Writes the history (CSV, HDF5) and OVITO-readable snapshots with a worn column.
+nlohmann::json run_trapped_particles_study(const Config& root, const std::filesystem::path& out);
 
 }  // namespace wearscale::dem

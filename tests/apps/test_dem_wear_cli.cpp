@@ -1,0 +1,62 @@
+// `wearscale dem rough-shear|trapped-particles` (thesis §7.2-7.3): bad input →
+// status 2 naming the file, the key, the value and the allowed range, and no
+// output written. (The runs themselves are the case regressions of
+// cases/dem_rough_shear.toml and cases/dem_trapped_particles.toml.)
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_dem_wear_cli_" + std::to_string(::getpid()));
+const std::string source = WEARSCALE_SOURCE_DIR;
+}  // namespace
+
+TEST(DemWearCli, RoughShearRefusesBadKeysWithTheAllowedRange) {
+  fs::create_directories(work);
+  const std::string rough = "dem rough-shear '" + source + "/cases/dem_rough_shear.toml' --out bad_rs";
+  {
+    std::ofstream bad(work / "too_rough.toml");
+    bad << "[dem]\nmaterial = \"SiO2\"\n[dem.rough_shear]\nd0 = \"3 nm\"\nroughness = 0.5\n";
+  }
+  auto r = run_cli("dem rough-shear too_rough.toml --out bad_rs", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("too_rough.toml"));
+  EXPECT_THAT(r.err, HasSubstr("dem.rough_shear.roughness"));
+  EXPECT_THAT(r.err, HasSubstr("0.5"));
+  EXPECT_THAT(r.err, HasSubstr("[0, 0.1]"));
+  r = run_cli(rough + " --set 'dem.rough_shear.depth=\"5 nm\"'", work);  // < 2.8 d_l = 10.5 nm
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.rough_shear.depth"));
+  r = run_cli(rough + " --set dem.rough_shear.hurts=0.7", work);  // a typo is not a default
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("hurst"));
+  EXPECT_FALSE(fs::exists(work / "bad_rs" / "rough_shear.dump"));
+  EXPECT_FALSE(fs::exists(work / "bad_rs" / "rough_shear_history.csv"));
+}
+
+TEST(DemWearCli, TrappedParticlesRefusesParticlesThatDoNotFit) {
+  fs::create_directories(work);
+  const std::string trapped = "dem trapped-particles '" + source + "/cases/dem_trapped_particles.toml' --out bad_tp";
+  auto r = run_cli(trapped + " --n 12", work);  // 12 (D + d0) = 396 nm > L = 300 nm
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.trapped_particles.length"));
+  r = run_cli(trapped + " --n 0", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.trapped_particles.count"));
+  r = run_cli(trapped + " --D '6 nm'", work);  // < 3 d0
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.trapped_particles.diameter"));
+  r = run_cli(trapped + " --pressure '20 GPa'", work);  // above σ_m,N
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.trapped_particles.pressure"));
+  EXPECT_FALSE(fs::exists(work / "bad_tp" / "trapped_particles.dump"));
+  fs::remove_all(work);
+}
