@@ -9,15 +9,24 @@
 
 namespace wearscale::coupling {
 
-namespace {
-// Runs a gnuplot script that writes `png`; the PNG appears only if gnuplot succeeded.
-std::optional<std::filesystem::path> render(const std::string& script, const std::filesystem::path& png) {
+
+bool plotting_available() {
+  static const bool available = [] {
+    const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+    if (!found) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
+    return found;
+  }();
+  return available;
+}
+
+std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png, int width,
+                                                 int height) {
   if (!plotting_available()) return std::nullopt;
   const auto partial = partial_path(png);
   const auto script_file = partial_path(png.parent_path() / (png.stem().string() + ".gp"));
   write_file_atomically(script_file,
-                        fmt::format("set terminal pngcairo size 1000,700 font 'sans,11'\nset output '{}'\n{}",
-                                    partial.string(), script));
+                        fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
+                                    width, height, partial.string(), script));
   const int status = std::system(fmt::format("gnuplot '{}' 2>/dev/null", script_file.string()).c_str());
   std::filesystem::remove(script_file);
   if (status != 0 || !std::filesystem::exists(partial)) {
@@ -28,16 +37,6 @@ std::optional<std::filesystem::path> render(const std::string& script, const std
   }
   commit_file(partial, png);
   return png;
-}
-}  // namespace
-
-bool plotting_available() {
-  static const bool available = [] {
-    const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-    if (!found) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
-    return found;
-  }();
-  return available;
 }
 
 std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
@@ -58,7 +57,7 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
       "set ylabel 'worn volume [µm³]'\nset xlabel 'sliding distance s [m]'\nset autoscale y\n"
       "plot {}\nunset multiplot\n",
       title, mu, wear);
-  return render(script, png);
+  return render_plot(script, png);
 }
 
 std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
@@ -73,12 +72,12 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::files
       "     '{0}' using (h($1)):(column('mu_final')) with linespoints pt 5 lw 2 title 'model: final μ', \\\n"
       "     [0:6] 0.337 + 0.070*x with lines dt 2 lw 2 title 'experiments: μ ≈ 0.337 + 0.070 h (9.1)'\n",
       table_csv.string());
-  return render(script, png);
+  return render_plot(script, png);
 }
 
 std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::path& history_csv,
                                                          const std::filesystem::path& png, const std::string& title) {
-  return render(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
+  return render_plot(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
                             "set title '{}'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
                             "set grid\nplot '{}' every ::1 using ($2*1e9):($3*1e9) with lines lw 2 title 'tangential F_T', "
                             "'' every ::1 using ($2*1e9):($4*1e9) with lines lw 1 title 'normal F_N'\n",
@@ -101,7 +100,7 @@ std::optional<std::filesystem::path> plot_junction_strength(const std::filesyste
     plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
   }
   plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";
-  return render(fmt::format("set datafile separator ','\nmax(a, b) = a > b ? a : b\nset key outside right top\n"
+  return render_plot(fmt::format("set datafile separator ','\nmax(a, b) = a > b ? a : b\nset key outside right top\n"
                             "set offsets 0, graph 0.05, graph 0.05, 0\nset title '{}'\nset xlabel 'normal pressure p_N [GPa]'\n"
                             "set ylabel 'peak tangential stress p_T [GPa]'\nset grid\nset xrange [0:*]\nset yrange [0:*]\n"
                             "set label 1 'lines: (7.9)-(7.10) with {:.3g} GPa, p_{{crit}} = {:.3g} GPa' at graph 0.35, graph 0.05\n"

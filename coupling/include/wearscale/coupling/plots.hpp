@@ -11,6 +11,12 @@ namespace wearscale::coupling {
 /// Whether `gnuplot` is on the PATH (checked once).
 bool plotting_available();
 
+/// Runs a gnuplot `script` (without terminal and output lines) that draws
+/// `png`, written atomically: the PNG appears only if gnuplot succeeded
+/// (a warning otherwise; nothing without gnuplot).
+std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png,
+                                                 int width = 1000, int height = 700);
+
 /// One curve set per run: label and its friction.csv (distance, friction, pin and disc wear).
 struct FrictionCurve {
   std::string label;
