@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   add(app::add_contact);
   add(app::add_strength_table);
   add(app::add_dem);
+  add(app::add_wearmap);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,353 @@
+// wearscale wearmap rough [--n N] [--seeds S] [--hurst H] [--ql QL] [--qs QS] [--loads MIN:MAX] [--n-loads K]
+//                         [--dstar-over-l MIN:MAX] [--n-dstar K] [--nu NU] [--tensile-strength R] [--spot F]
+//                         [--invalid-diameter F] [--per-particle] [--naive] [--naive-pixels K] [--out DIR] [--json]
+// The numerical wear maps of rough contacts (thesis ch. 5, Fig. 5.6–5.7):
+// number of particles and wear volume over (p̃_N, d*/L), mean and standard
+// deviation over S random surfaces, with the invalid region flagged.
+// DIR/wearmap_rough.h5, wearmap_rough.csv (per pixel), wearmap_rough_particles.csv
+// (per-pixel particle lists), wearmap_rough_curves.csv and PNGs (gnuplot).
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/csv.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/core/progress.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/wear/rough_wear_map.hpp"
+
+namespace wearscale::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RoughArgs {
+  std::size_t n = 512, seeds = 5, n_loads = 20, n_dstar = 20, naive_pixels = 0, naive_max_solves = 0;
+  double hurst = 0.8, ql = 8.0, qs = 0.0, nu = 0.3, tensile = 1.0, spot = 0.05, invalid = 0.25;
+  std::string loads = "0.01:0.3", dstar = "0.01:0.2", out = "out/wearmap";
+  bool per_particle = false, naive = false, json = false;
+};
+
+std::pair<double, double> range(const std::string& flag, const std::string& text) {
+  const auto colon = text.find(':');
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    std::size_t a = 0, b = 0;
+    const std::string lo = text.substr(0, colon), hi = text.substr(colon + 1);
+    const double min = std::stod(lo, &a), max = std::stod(hi, &b);
+    if (a != lo.size() || b != hi.size()) throw std::invalid_argument("trailing text");
+    if (!(min > 0.0 && min < max && std::isfinite(max))) throw std::invalid_argument("order");
+    return {min, max};
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("{} = '{}' is not allowed; allowed: MIN:MAX with 0 < MIN < MAX", flag, text));
+  }
+}
+
+std::vector<double> linear(std::pair<double, double> r, std::size_t k) {
+  std::vector<double> v(k);
+  for (std::size_t i = 0; i < k; ++i)
+    v[i] = k == 1 ? r.first : r.first + (r.second - r.first) * static_cast<double>(i) / static_cast<double>(k - 1);
+  return v;
+}
+
+std::vector<double> geometric(std::pair<double, double> r, std::size_t k) {
+  std::vector<double> v(k);
+  for (std::size_t i = 0; i < k; ++i)
+    v[i] = k == 1 ? r.first : r.first * std::pow(r.second / r.first, static_cast<double>(i) / static_cast<double>(k - 1));
+  return v;
+}
+
+// Fig. 5.6: one map (column `col` of the pixel CSV) over (p̃_N, d*/L), invalid pixels crossed.
+std::string map_script(const fs::path& csv, int col, const std::string& title, bool log_scale,
+                       const std::vector<double>& loads, const std::vector<double>& dstars) {
+  const std::size_t nl = loads.size(), nd = dstars.size();
+  const double ps = 60.0 / static_cast<double>(std::max(nl, nd));
+  const double dx = nl > 1 ? 0.5 * (loads.back() - loads.front()) / double(nl - 1) : 0.5 * loads.front();
+  const double fy = nd > 1 ? std::pow(dstars.back() / dstars.front(), 0.5 / double(nd - 1)) : 1.5;
+  return fmt::format(
+      "set datafile separator ','\nset title '{}'\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
+      "set ylabel 'd*/L (4.35), crossed: invalid' noenhanced\nset logscale y\nset xrange [{}:{}]\n"
+      "set yrange [{}:{}]\n{}set palette rgb 33,13,10\nset key off\n"
+      "plot '{}' skip 2 using 1:2:({}) with points pt 5 ps {:.3g} lc palette, \\\n"
+      "  '' skip 2 using 1:($9 > 0.5 ? NaN : $2) with points pt 2 ps {:.3g} lc rgb 'black'\n",
+      title, loads.front() - dx, loads.back() + dx, dstars.front() / fy, dstars.back() * fy,
+      log_scale ? "set logscale cb\n" : "", csv.string(),
+      log_scale ? fmt::format("${} > 0 ? ${} : NaN", col, col) : fmt::format("${}", col), ps, 0.6 * ps);
+}
+
+// Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid points cut.
+std::string curves_script(const fs::path& csv, std::size_t nd, bool volume) {
+  const std::size_t step = std::max<std::size_t>(1, nd / 5);
+  const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid
+  return fmt::format(
+      "set datafile separator ','\nset title '{}'\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
+      "set ylabel '{}'\n{}set key top left noenhanced\n"
+      "plot for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+5*k) > 0.5 ? column({}+5*k) : NaN):"
+      "(column({}+5*k)) with yerrorlines title columnhead({}+5*k)\n",
+      volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a)",
+      volume ? "wear volume / L^3" : "number of particles", volume ? "set logscale y\n" : "", nd - 1, step,
+      csv.string(), off, off + 1, off);
+}
+
+nlohmann::json result(double value, const char* unit, const std::string& description) {
+  return {{"value", value}, {"unit", unit}, {"description", description}};
+}
+
+int run_rough(const RoughArgs& a) {
+  wear::RoughWearMapSpec spec;
+  spec.surface.n = a.n;
+  spec.surface.hurst = a.hurst;
+  spec.surface.k_l = a.ql;
+  spec.surface.k_s = a.qs > 0.0 ? a.qs : static_cast<double>(a.n) / 8.0;
+  spec.surface.poisson = a.nu;
+  spec.seeds.clear();
+  for (std::size_t s = 1; s <= a.seeds; ++s) spec.seeds.push_back(s);
+  spec.loads = linear(range("--loads", a.loads), a.n_loads);
+  spec.critical_diameters = geometric(range("--dstar-over-l", a.dstar), a.n_dstar);
+  spec.tensile_strength = a.tensile;
+  spec.spot = a.spot;
+  spec.invalid_diameter = a.invalid;
+  spec.options.cumulative = !a.per_particle;
+  spec.options.method = a.naive ? wear::EnergyReleaseMethod::Naive : wear::EnergyReleaseMethod::Fast;
+  wear::validate(spec);
+  const fs::path out(a.out);
+
+  const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
+  Progress bar("wearmap rough", static_cast<double>(spec.seeds.size() * nl), "contacts");
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto map = wear::rough_wear_map(spec, [&](std::size_t done, std::size_t) { bar.update(double(done)); });
+  bar.finish();
+  const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // The naive baseline on a few pixels (first seed, loads spread over the axis, middle d*), against the fast
+  // model on the same pixels. The naive run stops after --naive-max-solves solves; its time per pixel is then
+  // extrapolated as (time per solve) × (the solves it needs: every candidate the fast run evaluated or bounded,
+  // i.e. examined and not blocked by a recorded particle, plus one update per particle).
+  nlohmann::json baseline;
+  if (a.naive_pixels > 0) {
+    wear::RoughContactSeries series(spec.surface, spec.seeds.front());
+    const double nu = spec.surface.poisson;
+    wear::ShearedJunctions j{1.0, 1.0 / (2.0 * (1.0 + nu)), nu, spec.tensile_strength, spec.spot};
+    const double dstar = spec.critical_diameters[nd / 2];
+    double setup_s = 0.0, fast_s = 0.0, naive_s = 0.0, naive_est = 0.0;
+    std::size_t naive_solves = 0, examined = 0, pixels = 0, truncated = 0;
+    bool same = true;
+    const std::size_t k = std::min(a.naive_pixels, nl);
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::size_t l = k == 1 ? nl / 2 : i * (nl - 1) / (k - 1);
+      const auto cmap = series.at_load(spec.loads[l]);
+      const auto s0 = std::chrono::steady_clock::now();
+      const wear::DetachmentModel model(cmap, j);
+      const auto t1 = std::chrono::steady_clock::now();
+      wear::DetachmentOptions fast = spec.options, slow = spec.options;
+      fast.method = wear::EnergyReleaseMethod::Fast;
+      slow.method = wear::EnergyReleaseMethod::Naive;
+      slow.max_solves = a.naive_max_solves;
+      const auto rf = model.detach(dstar, fast);
+      const auto t2 = std::chrono::steady_clock::now();
+      const auto rn = model.detach(dstar, slow);
+      const auto t3 = std::chrono::steady_clock::now();
+      setup_s += std::chrono::duration<double>(t1 - s0).count();
+      fast_s += std::chrono::duration<double>(t2 - t1).count();
+      const double ns = std::chrono::duration<double>(t3 - t2).count();
+      naive_s += ns;
+      naive_solves += rn.solves;
+      examined += rf.examined - rf.blocked;
+      if (rn.truncated) {
+        ++truncated;
+        naive_est += ns / static_cast<double>(std::max<std::size_t>(rn.solves, 1)) *
+                     static_cast<double>(rf.examined - rf.blocked + rf.particles.size());
+      } else {
+        naive_est += ns;
+        same = same && rf.particles.size() == rn.particles.size();
+      }
+      ++pixels;
+    }
+    baseline = {{"pixels", pixels},
+                {"critical_diameter", dstar},
+                {"setup_seconds_per_pixel", setup_s / double(pixels)},
+                {"fast_seconds_per_pixel", fast_s / double(pixels)},
+                {"naive_seconds_per_pixel", naive_est / double(pixels)},
+                {"naive_measured_seconds", naive_s},
+                {"naive_truncated_pixels", truncated},
+                {"ratio", naive_est / fast_s},
+                {"naive_solves", naive_solves},
+                {"naive_solves_needed", examined},
+                {"same_particle_counts", same}};
+  }
+
+  // Outputs: built under partial names, committed together at the end.
+  fs::create_directories(out);
+  const fs::path h5 = out / "wearmap_rough.h5", csv = out / "wearmap_rough.csv",
+                 pcsv = out / "wearmap_rough_particles.csv", ccsv = out / "wearmap_rough_curves.csv";
+  std::vector<double> load, dstar, cm, cs, vm, vs, lm, fr, valid;
+  for (const auto& p : map.pixels) {
+    load.push_back(p.load), dstar.push_back(p.critical_diameter), cm.push_back(p.count_mean);
+    cs.push_back(p.count_sd), vm.push_back(p.volume_mean), vs.push_back(p.volume_sd);
+    lm.push_back(p.largest_mean), fr.push_back(p.contact_fraction), valid.push_back(p.valid ? 1.0 : 0.0);
+  }
+  const std::vector<std::string> names = {"p_N_tilde", "dstar_over_L", "count_mean", "count_sd", "volume_mean",
+                                          "volume_sd", "largest_diameter_mean", "contact_fraction", "valid"};
+  const std::vector<std::span<const double>> columns = {load, dstar, cm, cs, vm, vs, lm, fr, valid};
+  std::vector<double> ps, pl, pd, px, py, pdia;
+  for (const auto& p : map.particles) {
+    ps.push_back(double(p.seed)), pl.push_back(spec.loads[p.load_index]);
+    pd.push_back(spec.critical_diameters[p.dstar_index]), px.push_back(p.x), py.push_back(p.y);
+    pdia.push_back(p.diameter);
+  }
+  const std::vector<std::string> pnames = {"seed", "p_N_tilde", "dstar_over_L", "x_over_L", "y_over_L",
+                                           "diameter_over_L"};
+  const std::vector<std::span<const double>> pcols = {ps, pl, pd, px, py, pdia};
+  {
+    H5Writer w(h5);
+    w.write_series("/axes/p_N_tilde", spec.loads);
+    w.write_series("/axes/dstar_over_L", spec.critical_diameters);
+    w.write_table("/pixels", names, columns);
+    w.write_table("/particles", pnames, pcols);
+    const Grid2D g(nl, nd, 1.0, 1.0);
+    auto field = [&](const std::vector<double>& v, const std::string& path) {
+      RealField f(g);
+      for (std::size_t k = 0; k < v.size(); ++k) f[k] = v[k];
+      w.write_field(path, f);
+    };
+    field(cm, "/maps/count_mean"), field(cs, "/maps/count_sd"), field(vm, "/maps/volume_mean");
+    field(vs, "/maps/volume_sd"), field(valid, "/maps/valid");
+    w.set_attribute("/", "description", "numerical wear maps of rough contacts (thesis ch. 5, Fig. 5.6); rows p_N_tilde, "
+                                        "columns dstar_over_L; lengths in units of L, volumes in L^3");
+    w.set_attribute("/", "hurst", spec.surface.hurst);
+    w.set_attribute("/", "q_l", spec.surface.k_l);
+    w.set_attribute("/", "q_s", spec.surface.k_s);
+    w.set_attribute("/", "n", double(spec.surface.n));
+    w.set_attribute("/", "seeds", double(spec.seeds.size()));
+    w.set_attribute("/", "poisson", spec.surface.poisson);
+    w.set_attribute("/", "tensile_strength_over_sigma_j", spec.tensile_strength);
+    w.set_attribute("/", "energy_balance", spec.options.cumulative ? "cumulative" : "per particle");
+    w.commit();
+  }
+  write_csv(csv, names, columns, {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
+                                  "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
+  write_csv(pcsv, pnames, pcols, {"every detached particle of every seed and pixel; lengths / L"});
+  {
+    std::vector<std::string> cn = {"p_N_tilde"};
+    std::vector<std::vector<double>> cv(1 + 5 * nd, std::vector<double>(nl));
+    for (std::size_t l = 0; l < nl; ++l) cv[0][l] = spec.loads[l];
+    for (std::size_t d = 0; d < nd; ++d) {
+      const std::string tag = fmt::format("{:.4g}", spec.critical_diameters[d]);
+      for (const char* c : {"count_", "count_sd_", "volume_", "volume_sd_", "valid_"}) cn.push_back(c + tag);
+      for (std::size_t l = 0; l < nl; ++l) {
+        const auto& p = map.pixel(l, d);
+        cv[1 + 5 * d][l] = p.count_mean, cv[2 + 5 * d][l] = p.count_sd, cv[3 + 5 * d][l] = p.volume_mean;
+        cv[4 + 5 * d][l] = p.volume_sd, cv[5 + 5 * d][l] = p.valid ? 1.0 : 0.0;
+      }
+    }
+    std::vector<std::span<const double>> spans(cv.begin(), cv.end());
+    write_csv(ccsv, cn, spans, {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3"});
+  }
+  nlohmann::json files = {h5.string(), csv.string(), pcsv.string(), ccsv.string()};
+  // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
+  const std::pair<std::string, std::string> plots[] = {
+      {map_script(csv, 3, "Number of particles (Fig. 5.6a)", false, spec.loads, spec.critical_diameters), "count"},
+      {map_script(csv, 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads, spec.critical_diameters), "volume"},
+      {curves_script(ccsv, nd, false), "curves_count"},
+      {curves_script(ccsv, nd, true), "curves_volume"}};
+  for (const auto& [script, name] : plots)
+    if (auto p = coupling::render_plot(script, out / ("wearmap_rough_" + name + ".png"), 1000, 760))
+      files.push_back(p->string());
+
+  std::size_t invalid = 0;
+  double max_count = 0.0;
+  for (const auto& p : map.pixels) {
+    invalid += p.valid ? 0 : 1;
+    max_count = std::max(max_count, p.count_mean);
+  }
+  const double pixels = static_cast<double>(nl * nd);
+  nlohmann::json results;
+  results["pixels"] = result(pixels, "", "map pixels (p̃_N × d*/L)");
+  results["invalid_fraction"] = result(double(invalid) / pixels, "", "share of pixels with particles ≥ the invalid size");
+  results["max_count"] = result(max_count, "", "largest mean number of particles on the map");
+  results["seconds"] = result(total_seconds, "s", "wall time of the map (all seeds)");
+  results["seconds_per_pixel"] =
+      result(total_seconds / (pixels * double(spec.seeds.size())), "s", "wall time per pixel and seed");
+  results["contact_seconds"] = result(map.contact_seconds, "s", "BEM contact solves");
+  results["model_setup_seconds"] = result(map.setup_seconds, "s", "crack stresses, candidates, u of the full loading");
+  results["detach_seconds"] = result(map.detach_seconds, "s", "detachment procedure over all pixels and seeds");
+  results["candidates"] = result(double(map.candidates), "", "candidate particles summed over seeds and loads");
+  results["energy_evaluations"] = result(double(map.energy_evaluations), "", "ΔE_el (5.3) evaluated in full");
+  if (!baseline.is_null()) {
+    results["naive_ratio"] = result(baseline["ratio"].get<double>(), "",
+                                    "naive (one solve per candidate) over fast time per pixel");
+    results["naive_seconds_per_pixel"] = result(baseline["naive_seconds_per_pixel"].get<double>(), "s",
+                                                "naive baseline (extrapolated on truncated pixels)");
+    results["fast_seconds_per_pixel"] = result(baseline["fast_seconds_per_pixel"].get<double>(), "s",
+                                               "fast, same pixels (the shared set-up apart)");
+    results["setup_seconds_per_pixel"] = result(baseline["setup_seconds_per_pixel"].get<double>(), "s",
+                                                "candidates, crack stresses and u of the full loading, shared by both");
+  }
+  const nlohmann::json parameters = {{"n", spec.surface.n}, {"seeds", spec.seeds.size()}, {"hurst", spec.surface.hurst},
+                                     {"q_l", spec.surface.k_l}, {"q_s", spec.surface.k_s}, {"nu", spec.surface.poisson},
+                                     {"loads", spec.loads}, {"dstar_over_L", spec.critical_diameters},
+                                     {"tensile_strength_over_sigma_j", spec.tensile_strength}, {"spot", spec.spot},
+                                     {"invalid_diameter", spec.invalid_diameter},
+                                     {"energy_balance", spec.options.cumulative ? "cumulative" : "per_particle"},
+                                     {"method", a.naive ? "naive" : "fast"}};
+  nlohmann::json summary = {{"kind", "rough"}, {"results", results}, {"parameters", parameters}, {"files", files},
+                            {"output_dir", out.string()}};
+  if (!baseline.is_null()) summary["baseline"] = baseline;
+  write_file_atomically(out / "wearmap_rough_summary.json", summary.dump(2) + "\n");
+  if (a.json) {
+    std::cout << summary.dump(2) << '\n';
+    return 0;
+  }
+  print_results(results);
+  for (const auto& f : files) log::info("wrote {}", f.get<std::string>());
+  return 0;
+}
+
+}  // namespace
+
+Command add_wearmap_rough(CLI::App& wearmap) {
+  auto a = std::make_shared<RoughArgs>();
+  auto* cmd = wearmap.add_subcommand("rough", "Numerical wear maps of rough contacts (ch. 5, Fig. 5.6–5.7): number of "
+                                              "particles and wear volume over (p̃_N, d*/L), averaged over surfaces");
+  cmd->add_option("--n", a->n, "Grid points per side (§5.3: 512)")->capture_default_str()->check(CLI::Range(16, 4096));
+  cmd->add_option("--seeds", a->seeds, "Random surfaces to average (seeds 1…S)")->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--hurst", a->hurst, "Hurst exponent H")->capture_default_str();
+  cmd->add_option("--ql", a->ql, "q_l in units of 2π/L (= q_r)")->capture_default_str();
+  cmd->add_option("--qs", a->qs, "q_s in units of 2π/L (default n/8)");
+  cmd->add_option("--loads", a->loads, "Normalized loads p̃_N (5.1), MIN:MAX, evenly spaced")->capture_default_str();
+  cmd->add_option("--n-loads", a->n_loads, "Points along p̃_N")->capture_default_str()->check(CLI::Range(1, 1000));
+  cmd->add_option("--dstar-over-l", a->dstar, "Critical diameters d*/L (4.35), MIN:MAX, geometric")
+      ->capture_default_str();
+  cmd->add_option("--n-dstar", a->n_dstar, "Points along d*/L")->capture_default_str()->check(CLI::Range(1, 1000));
+  cmd->add_option("--nu", a->nu, "Poisson's ratio ν")->capture_default_str();
+  cmd->add_option("--tensile-strength", a->tensile, "σ_m/σ_j of the crack criterion (4.25)")->capture_default_str();
+  cmd->add_option("--spot", a->spot, "Crack sites within this fraction of each micro-contact's peak edge stress "
+                                     "(1: every edge past σ_m)")->capture_default_str();
+  cmd->add_option("--invalid-diameter", a->invalid, "Pixels whose mean largest particle is ≥ this × L are invalid")
+      ->capture_default_str();
+  cmd->add_flag("--per-particle", a->per_particle, "Each particle pays for itself (default: cumulative balance)");
+  cmd->add_flag("--naive", a->naive, "Energy release by one full solve per candidate (the slow baseline)");
+  cmd->add_option("--naive-pixels", a->naive_pixels, "Also time the naive baseline against the fast model on K "
+                                                    "pixels of the first seed (middle d*)")->check(CLI::Range(0, 1000));
+  cmd->add_option("--naive-max-solves", a->naive_max_solves, "Stop each naive pixel after this many solves and "
+                                                             "extrapolate its time (0: run it through)")
+      ->capture_default_str();
+  cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
+  cmd->add_flag("--json", a->json, "Print one JSON object with the results, parameters and files");
+  return [a]() { return run_rough(*a); };
+}
+
+}  // namespace wearscale::app

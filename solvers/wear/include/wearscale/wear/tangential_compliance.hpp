@@ -1,0 +1,61 @@
+#pragma once
+// The x → x block of the Boussinesq–Cerruti operator of a half-space: the
+// surface displacement u_x caused by a tangential traction p_x (4.3)–(4.5),
+// the only block the energy release of a sheared contact needs (§4.1: the
+// normal load does not change ΔE_el, (4.19)–(4.23)).
+//
+// The micro-contact map is a window of L × L on an unbounded half-space
+// (non-periodic): the kernel is Cerruti's (4.3) integrated exactly over a
+// cell, and u = G * p is a linear convolution, evaluated by FFT on a
+// zero-padded 2n × 2n grid. (A periodic operator has no zero mode for the
+// mean shear, its kernel has zero mean, and unloading a region could raise
+// the energy; (5.3) needs u' < u everywhere, which the positive kernel gives.)
+#include <memory>
+#include <vector>
+
+#include "wearscale/core/fft.hpp"
+
+namespace wearscale::wear {
+
+class TangentialCompliance {
+ public:
+  /// Scratch of the padded grid for one solve (one per thread).
+  struct Workspace {
+    RealField padded;
+    ComplexField spectrum;
+  };
+
+  /// InputError unless G > 0, −1 < ν ≤ 0.5 and the grid has square cells.
+  TangentialCompliance(const Grid2D& grid, double shear_modulus, double poisson);
+
+  const Grid2D& grid() const { return grid_; }
+  double shear_modulus() const { return shear_modulus_; }
+  double poisson() const { return poisson_; }
+  Workspace workspace() const;
+
+  /// u_x = G * p_x on the window (one r2c and one c2r of the padded grid).
+  /// Threads may call this concurrently, each with its own workspace.
+  void displacement(const RealField& traction, RealField& u, Workspace& w) const;
+
+  /// G(di, dj): u_x at cell offset (di, dj) per unit p_x on one cell [m/Pa]:
+  /// (4.3) integrated over the cell, (1/4πG) Σ_corners ± [2(1−ν) x asinh(y/|x|) + 2 y asinh(x/|y|)].
+  double kernel(long di, long dj) const {
+    const std::size_t a = static_cast<std::size_t>(di < 0 ? -di : di), b = static_cast<std::size_t>(dj < 0 ? -dj : dj);
+    return table_[a * grid_.ny + b];
+  }
+
+  /// The cell-integrated kernel at any offset (in cells), for checks.
+  static double cell_kernel(double di, double dj, double cell, double shear_modulus, double poisson);
+
+  /// E_el = ½ ΔA Σ p_x u_x   (4.2)
+  double energy(const RealField& traction, const RealField& u) const;
+
+ private:
+  Grid2D grid_, padded_;
+  double shear_modulus_, poisson_;
+  std::shared_ptr<const FFTPlan> plan_;
+  std::vector<double> table_;                // G(|di|, |dj|), 0 ≤ di < nx, 0 ≤ dj < ny
+  std::vector<std::complex<double>> spectrum_;  // DFT of G on the padded grid, /N_padded folded in
+};
+
+}  // namespace wearscale::wear

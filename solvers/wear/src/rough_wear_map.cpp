@@ -1,0 +1,110 @@
+#include "wearscale/wear/rough_wear_map.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
+
+namespace wearscale::wear {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+void validate(const RoughWearMapSpec& s) {
+  validate(s.surface);
+  if (s.seeds.empty()) throw InputError("rough wear map: seeds is empty; allowed: at least one seed");
+  if (s.loads.empty() || s.critical_diameters.empty())
+    throw InputError("rough wear map: the p̃_N and d*/L axes need at least one value each");
+  for (std::size_t k = 0; k < s.loads.size(); ++k)
+    if (!(s.loads[k] > 0.0 && s.loads[k] < 1.0) || (k > 0 && !(s.loads[k] > s.loads[k - 1])))
+      throw InputError(fmt::format("rough wear map: p̃_N = {} (value {}) is not allowed; allowed: increasing, in (0, 1)",
+                                   s.loads[k], k + 1));
+  for (double d : s.critical_diameters)
+    if (!(d > 0.0) || !std::isfinite(d))
+      throw InputError(fmt::format("rough wear map: d*/L = {} is not allowed; allowed: > 0", d));
+  if (!(s.tensile_strength > 0.0) || !std::isfinite(s.tensile_strength))
+    throw InputError(fmt::format("rough wear map: σ_m/σ_j = {} is not allowed; allowed: > 0", s.tensile_strength));
+  if (!(s.spot >= 0.0 && s.spot <= 1.0))
+    throw InputError(fmt::format("rough wear map: spot = {} is not allowed; allowed: 0 … 1", s.spot));
+  if (!(s.invalid_diameter > 0.0 && s.invalid_diameter <= 1.0))
+    throw InputError(fmt::format("rough wear map: invalid diameter {} L is not allowed; allowed: (0, 1]",
+                                 s.invalid_diameter));
+}
+
+RoughWearMap rough_wear_map(const RoughWearMapSpec& spec, const std::function<void(std::size_t, std::size_t)>& progress) {
+  validate(spec);
+  RoughWearMap out;
+  out.spec = spec;
+  const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size(), ns = spec.seeds.size();
+  // Per (seed, load, d*): count, volume, largest diameter.
+  std::vector<double> count(ns * nl * nd), volume(count.size()), largest(count.size()), fraction(ns * nl);
+  auto at = [&](std::size_t s, std::size_t l, std::size_t d) { return (s * nl + l) * nd + d; };
+  const double nu = spec.surface.poisson;
+  ShearedJunctions junctions{1.0, 1.0 / (2.0 * (1.0 + nu)), nu, spec.tensile_strength, spec.spot};  // E = 1, σ_j = 1
+  std::vector<std::vector<WearParticle>> found(nd);
+  std::size_t done = 0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    RoughContactSeries series(spec.surface, spec.seeds[s]);
+    for (std::size_t l = 0; l < nl; ++l) {
+      throw_if_interrupted("rough wear map");
+      auto t0 = std::chrono::steady_clock::now();
+      const MicroContactMap map = series.at_load(spec.loads[l]);
+      fraction[s * nl + l] = map.contact_fraction();
+      out.contact_seconds += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      const DetachmentModel model(map, junctions);
+      out.candidates += model.candidates().size();
+      out.setup_seconds += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      DetachmentOptions opt = spec.options;
+      opt.parallel = false;  // the d* values run in parallel instead
+      std::size_t evaluations = 0, solves = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : evaluations, solves)
+      for (std::size_t d = 0; d < nd; ++d) {
+        const auto r = model.detach(spec.critical_diameters[d], opt);  // lengths in units of L = 1
+        count[at(s, l, d)] = static_cast<double>(r.particles.size());
+        volume[at(s, l, d)] = r.wear_volume;
+        largest[at(s, l, d)] = r.largest_diameter();
+        evaluations += r.energy_evaluations;
+        solves += r.solves;
+        found[d] = r.particles;
+      }
+      out.detach_seconds += seconds_since(t0);
+      out.energy_evaluations += evaluations;
+      out.solves += solves;
+      for (std::size_t d = 0; d < nd; ++d)
+        for (const auto& p : found[d]) out.particles.push_back({spec.seeds[s], l, d, p.x, p.y, p.diameter});
+      if (progress) progress(++done, ns * nl);
+    }
+  }
+  auto mean_sd = [&](const std::vector<double>& v, std::size_t l, std::size_t d, double& mean, double& sd) {
+    mean = 0.0;
+    for (std::size_t s = 0; s < ns; ++s) mean += v[at(s, l, d)];
+    mean /= static_cast<double>(ns);
+    double var = 0.0;
+    for (std::size_t s = 0; s < ns; ++s) var += (v[at(s, l, d)] - mean) * (v[at(s, l, d)] - mean);
+    sd = ns > 1 ? std::sqrt(var / static_cast<double>(ns - 1)) : 0.0;  // sample standard deviation
+  };
+  out.pixels.resize(nl * nd);
+  for (std::size_t l = 0; l < nl; ++l)
+    for (std::size_t d = 0; d < nd; ++d) {
+      WearMapPixel& p = out.pixels[l * nd + d];
+      p.load = spec.loads[l];
+      p.critical_diameter = spec.critical_diameters[d];
+      mean_sd(count, l, d, p.count_mean, p.count_sd);
+      mean_sd(volume, l, d, p.volume_mean, p.volume_sd);
+      double unused = 0.0;
+      mean_sd(largest, l, d, p.largest_mean, unused);
+      for (std::size_t s = 0; s < ns; ++s) p.contact_fraction += fraction[s * nl + l] / static_cast<double>(ns);
+      p.valid = p.largest_mean < spec.invalid_diameter;
+    }
+  return out;
+}
+
+}  // namespace wearscale::wear

@@ -1,0 +1,137 @@
+// `wearscale wearmap analytic2d|analytic3d`: the analytic wear maps of thesis
+// Fig. 3.7 and Fig. 4.6 as HDF5 + CSV (+ PNG); bad flags → status 2.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const fs::path work = fs::temp_directory_path() / ("wearscale_wearmap_cli_" + std::to_string(::getpid()));
+
+// Rows of the map CSV (after the '#' comments and the header): x, y, region, then the layers.
+std::vector<std::vector<double>> read_rows(const fs::path& csv, std::string& header) {
+  std::ifstream in(csv);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header.empty()) {
+      header = line;
+      continue;
+    }
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST(WearmapCli, Analytic3dWritesTheMapOfFigure46AtMostInteraction) {
+  const auto r = run_cli("wearmap analytic3d --interaction max --n 41 --out m3 --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["results"]["C_inter"]["value"].get<double>(), 2.0 / 3.0, 1e-15);
+  // Adjacent contacts (d = l) detach one particle from d = d*/(1 + π/4) (4.48).
+  EXPECT_NEAR(j["results"]["least_d_one_separated"]["value"].get<double>(),
+              1.0 / (1.0 + std::numbers::pi / 4), 1e-12);
+  for (const char* f : {"wearmap_analytic3d.h5", "wearmap_analytic3d.csv"}) EXPECT_TRUE(fs::exists(work / "m3" / f)) << f;
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    ASSERT_TRUE(fs::exists(work / "m3" / "wearmap_analytic3d.png"));
+    EXPECT_GT(fs::file_size(work / "m3" / "wearmap_analytic3d.png"), 10000u);
+  }
+
+  // Every CSV row sits on the right side of the lines R = 1 of (4.48), and its R columns are (4.48).
+  std::string header;
+  const auto rows = read_rows(work / "m3" / "wearmap_analytic3d.csv", header);
+  EXPECT_EQ(header, "d_over_l,dstar_over_l,region,R_one_separated,R_two_separated,R_combined");
+  ASSERT_EQ(rows.size(), 41u * 41u);
+  const double a = 3.0 * std::numbers::pi / 8.0 * 2.0 / 3.0;
+  for (const auto& row : rows) {
+    const double x = row[0], y = row[1];
+    const double r1 = (1 + a * x) * x / y, r2 = (2 + a * x) * x / y / 2, rc = (2 + a * x) * x / y * x * x / ((1 + x) * (1 + x));
+    EXPECT_NEAR(row[3], r1, 1e-8 * r1);  // the CSV keeps 10 digits of x, y and R
+    EXPECT_NEAR(row[4], r2, 1e-8 * r2);
+    EXPECT_NEAR(row[5], rc, 1e-8 * rc);
+    EXPECT_EQ(row[2], rc >= 1 ? 3 : r2 >= 1 ? 2 : r1 >= 1 ? 1 : 0) << x << " " << y;
+  }
+
+  // The HDF5 file holds the same map.
+  wearscale::H5Reader h5(work / "m3" / "wearmap_analytic3d.h5");
+  EXPECT_EQ(h5.read_series("/axes/d_over_l").size(), 41u);
+  EXPECT_EQ(h5.shape("/region"), (std::vector<std::size_t>{41, 41}));
+  const auto region = h5.read_field("/region");
+  for (std::size_t k = 0; k < rows.size(); ++k) ASSERT_EQ(region[k], rows[k][2]) << k;
+  EXPECT_NEAR(h5.number_attribute("/", "C_inter"), 2.0 / 3.0, 1e-15);
+}
+
+TEST(WearmapCli, Analytic3dTakesPoissonRatioAndAngle) {
+  const auto r = run_cli("wearmap analytic3d --nu 0.3 --theta 1.5707963267948966 --n 8 --out m3nu --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(nlohmann::json::parse(r.out)["results"]["C_inter"]["value"].get<double>(), 0.7 / 1.7, 1e-12);  // (4.49)
+}
+
+TEST(WearmapCli, Analytic2dWritesTheMapOfFigure37) {
+  const auto r = run_cli("wearmap analytic2d --dr-over-dstar 0:4 --da-over-dstar 0:10 --n 40 --out m2", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("fraction_combined"));
+  std::string header;
+  const auto rows = read_rows(work / "m2" / "wearmap_analytic2d.csv", header);
+  EXPECT_EQ(header, "dr_over_dstar,da_over_dstar,region,R_sep,R_comb,kappa,kappa_min");
+  ASSERT_EQ(rows.size(), 1600u);  // 40 × 40 centres: none on a line (d_r = (2k+1)/20, d_a = (2j+1)/8)
+  for (const auto& row : rows) {
+    const double dr = row[0], da = row[1];
+    EXPECT_EQ(row[2], da < dr ? -1 : dr < 1 ? 0 : da <= dr * dr ? 2 : 1) << dr << " " << da;  // (3.25), (3.27)
+  }
+  EXPECT_TRUE(fs::exists(work / "m2" / "wearmap_analytic2d.h5"));
+}
+
+struct BadWearmap {
+  std::string name, args, expected;
+};
+void PrintTo(const BadWearmap& b, std::ostream* os) { *os << b.name; }
+
+class WearmapCliBadInput : public ::testing::TestWithParam<BadWearmap> {};
+
+TEST_P(WearmapCliBadInput, ExitsWithStatus2AndNamesTheFlag) {
+  const auto& p = GetParam();
+  const auto out = work / ("bad-" + p.name);
+  const auto r = run_cli("wearmap " + p.args + " --out '" + out.string() + "'", work);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(p.expected));
+  EXPECT_FALSE(fs::exists(out / "wearmap_analytic3d.h5"));
+  EXPECT_FALSE(fs::exists(out / "wearmap_analytic2d.h5"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, WearmapCliBadInput,
+    ::testing::Values(
+        BadWearmap{"overlapping_contacts", "analytic3d --d-over-l 0:1.5", "--d-over-l = '0:1.5' is not allowed; allowed: 0 ≤ MIN < MAX ≤ 1"},
+        BadWearmap{"reversed_range", "analytic3d --dstar-over-l 2:1", "--dstar-over-l = '2:1'"},
+        BadWearmap{"not_a_range", "analytic2d --dr-over-dstar 3", "--dr-over-dstar = '3' is not a range"},
+        BadWearmap{"negative_size", "analytic2d --da-over-dstar -1:2", "allowed: 0 ≤ MIN < MAX"},
+        BadWearmap{"poisson", "analytic3d --nu 0.7", "--nu = 0.7 is not allowed; allowed: −1 < ν ≤ 0.5"},
+        BadWearmap{"interaction", "analytic3d --interaction medium", "--interaction"},
+        BadWearmap{"interaction_and_nu", "analytic3d --interaction max --nu 0.3", "excludes"},
+        BadWearmap{"too_many_points", "analytic2d --n 5000", "--n"},
+        BadWearmap{"no_kind", "", "wearmap"}),
+    [](const auto& p) { return p.param.name; });
+
+TEST(WearmapCli, AnOutputFolderThatIsAFileIsBadInput) {
+  const auto r = run_cli("wearmap analytic2d --n 4 --out /dev/null", work);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("--out = '/dev/null'"));
+}
