@@ -71,6 +71,12 @@ double critical_diameter(const CohesiveMaterial& m) {
   return 4.0 * m.surface_energy * m.young / (m.tensile_strength * m.tensile_strength);  // (6.35)
 }
 
+double critical_junction_size(const CohesiveMaterial& m) {
+  const double shear_modulus = m.young / (2.0 * (1.0 + m.poisson));
+  return materials::geometric_factor(materials::JunctionGeometry::DemCylinder, m.poisson) * m.surface_energy *
+         shear_modulus / (m.shear_strength * m.shear_strength);  // (6.65)
+}
+
 double minimum_diameter(const CohesiveMaterial& m) {
   return 4.0 * m.surface_energy / m.tensile_strength;  // (6.62)
 }

@@ -66,10 +66,9 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const RoughShearObs
 RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSample& sample,
                                  const RoughShearObserver& observe) {
   check(spec);
-  const auto& m = spec.cell.material;
   const double d0 = spec.cell.d0;
   RoughShearResult out;
-  out.d_star = 32.0 * m.surface_energy * m.young / (2.0 * (1.0 + m.poisson)) / (m.shear_strength * m.shear_strength);  // (6.65)
+  out.d_star = critical_junction_size(spec.cell.material);
   out.relaxation_steps = sample.relaxation.repulsion_steps + sample.relaxation.cohesion_steps;
 
   // Two independent self-affine profiles over the relaxed length, the top one

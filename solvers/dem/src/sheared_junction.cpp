@@ -48,7 +48,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
   check(spec);
   ShearedJunctionResult out;
   const auto& m = spec.material;
-  out.d_star = 32.0 * m.surface_energy * m.young / (2.0 * (1.0 + m.poisson)) / (m.shear_strength * m.shear_strength);  // (6.65)
+  out.d_star = critical_junction_size(m);
 
   // The relaxed amorphous box (§6.2.2), then carved (§6.3).
   AmorphousSpec sample;

@@ -41,10 +41,9 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
 TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const AmorphousSample& sample,
                                              const TrappedParticlesObserver& observe) {
   check(spec);
-  const auto& m = spec.cell.material;
   const double d0 = spec.cell.d0;
   TrappedParticlesResult out;
-  out.d_star = 32.0 * m.surface_energy * m.young / (2.0 * (1.0 + m.poisson)) / (m.shear_strength * m.shear_strength);  // (6.65)
+  out.d_star = critical_junction_size(spec.cell.material);
   out.relaxation_steps = sample.relaxation.repulsion_steps + sample.relaxation.cohesion_steps;
 
   // The gap of height D across the middle of the relaxed box: the surfaces

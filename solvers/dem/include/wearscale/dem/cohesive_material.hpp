@@ -40,6 +40,9 @@ void require_modelled(const CohesiveMaterial& m);
 double critical_diameter(const CohesiveMaterial& m);
 /// d_min = 4γ/σ_m,N  (6.62): the largest fracture separation δ_f.
 double minimum_diameter(const CohesiveMaterial& m);
+/// d* = 32γG/σ_m,T²  (6.65): the junction size above which a sheared DEM
+/// junction detaches a particle (materials::critical_size, DemCylinder).
+double critical_junction_size(const CohesiveMaterial& m);
 
 /// The interface between two materials, for pairs of particles of different
 /// materials: springs in series for E (harmonic mean), the weaker strengths,
