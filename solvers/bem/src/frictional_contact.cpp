@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/errors.hpp"
 
 namespace wearscale::bem {
@@ -46,16 +47,12 @@ FrictionalContact::FrictionalContact(const RealField& surface, double young, dou
   const Grid2D& g = surface.grid();
   check_material(young, poisson);
   if (g.nx < 2 || g.ny < 2) throw InputError("frictional contact: the grid needs at least 2×2 points");
-  double mean = 0.0, max = -INFINITY;
+  double max = -INFINITY;
   for (double v : h_) {
     if (!std::isfinite(v)) throw InputError("frictional contact: the surface has a NaN or infinite height");
-    mean += v;
     max = std::max(max, v);
   }
-  mean /= static_cast<double>(h_.size());
-  double var = 0.0;
-  for (double v : h_) var += (v - mean) * (v - mean);
-  h_rms_ = std::sqrt(var / static_cast<double>(h_.size()));
+  h_rms_ = h_rms(h_);  // the scale of the convergence measure
   if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
   h_max_ = max;
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/roots.hpp"
 
@@ -47,16 +48,12 @@ NormalContact::NormalContact(const RealField& surface, double e_star)
 void NormalContact::set_surface(const RealField& surface) {
   if (!(surface.grid() == h_.grid())) throw std::invalid_argument("NormalContact::set_surface: grid changed");
   h_ = surface;
-  double mean = 0.0, max = -std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
   for (double v : h_) {
     if (!std::isfinite(v)) throw InputError("normal contact: the surface has a NaN or infinite height");
-    mean += v;
     max = std::max(max, v);
   }
-  mean /= static_cast<double>(h_.size());
-  double var = 0.0;
-  for (double v : h_) var += (v - mean) * (v - mean);
-  h_rms_ = std::sqrt(var / static_cast<double>(h_.size()));
+  h_rms_ = h_rms(h_);  // the scale of the convergence measure
   if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
   h_max_ = max;
 }
