@@ -42,6 +42,21 @@ std::string value_text(const nlohmann::json& j) { return j.is_string() ? j.get<s
 // resolved cases (JSON), or "" if they cannot be compared that way.
 }  // namespace
 
+CheckpointPolicy checkpoint_policy(const Config& root) {
+  const Config r = root.section("run");
+  CheckpointPolicy policy;
+  policy.interval = r.number_or("checkpoint_interval", 600.0, Range::non_negative(), units::time);
+  policy.every_steps = r.integer_or("checkpoint_steps", 0, Range::non_negative());
+  return policy;
+}
+
+std::string case_fingerprint(const nlohmann::json& parameters) {
+  nlohmann::json p = parameters;
+  if (p.is_object())
+    for (const char* key : {"run", "output", "sweep"}) p.erase(key);
+  return p.dump();
+}
+
 std::string describe_case_difference(const std::string& was, const std::string& now) {
   try {
     const auto a = nlohmann::json::parse(was).flatten(), b = nlohmann::json::parse(now).flatten();

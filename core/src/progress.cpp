@@ -41,7 +41,13 @@ Progress::~Progress() { finish(); }
 
 double Progress::rate() const {
   const double s = std::chrono::duration<double>(clock::now() - start_).count();
-  return s > 0 ? done_ / s : 0.0;
+  return s > 0 ? (done_ - base_) / s : 0.0;
+}
+
+void Progress::start_at(double done) {
+  base_ = done;
+  done_ = done;
+  start_ = clock::now();
 }
 
 double Progress::eta_seconds() const {

@@ -101,14 +101,6 @@ struct PreparedRun {
   bool complete = false;                   // resumed, but it had finished: its outputs stand
 };
 
-// The resolved case without what does not change the results (how often to
-// checkpoint, where to write, the sweep around a run).
-std::string fingerprint_of(nlohmann::json parameters) {
-  if (parameters.is_object())
-    for (const char* key : {"run", "output", "sweep"}) parameters.erase(key);
-  return parameters.dump();
-}
-
 PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out) {
   PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false};
   Config& cfg = run.cfg;
@@ -118,16 +110,15 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
   cfg.mark_used("sweep");  // read by run_case
   // [run]: how the run is carried out, not what it computes.
+  run.policy = checkpoint_policy(cfg);
   const Config r = cfg.section("run");
-  run.policy.interval = r.number_or("checkpoint_interval", 600.0, Range::non_negative(), units::time);
-  run.policy.every_steps = r.integer_or("checkpoint_steps", 0, Range::non_negative());
   run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
                                                                                                 : PlanRigor::Measure;
   run.pipeline = build_pipeline(cfg);
   cfg.reject_unknown_keys();
   run.summary.scales = run.pipeline.ids();
   run.summary.parameters = cfg.to_json();
-  run.fingerprint = fingerprint_of(run.summary.parameters);
+  run.fingerprint = case_fingerprint(run.summary.parameters);
   return run;
 }
 
@@ -160,7 +151,7 @@ void find_resume_point(PreparedRun& run) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a wearscale summary ({})", summary_file.string(), e.what()));
   }
-  const std::string was = fingerprint_of(j.value("parameters", nlohmann::json::object()));
+  const std::string was = case_fingerprint(j.value("parameters", nlohmann::json::object()));
   if (was != run.fingerprint) {
     const std::string diff = describe_case_difference(was, run.fingerprint);
     throw InputError(fmt::format("{}: this run completed with other parameters{}; resume with the case file and --set "

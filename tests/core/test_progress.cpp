@@ -35,3 +35,17 @@ TEST(Progress, ReportsRateAndEta) {
   EXPECT_THAT(p.line(), ::testing::HasSubstr("50%"));
   EXPECT_THAT(p.line(), ::testing::HasSubstr("ETA"));
 }
+
+// A resumed run starts its reporter at the work done before the stop: shown
+// as done, but not counted in the rate (which would overstate it).
+TEST(Progress, AResumedRunCountsOnlyItsOwnWorkInTheRate) {
+  auto p = Progress::silent(100);
+  p.start_at(60);
+  EXPECT_THAT(p.line(), ::testing::HasSubstr("60%"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  p.update(60);
+  EXPECT_EQ(p.rate(), 0.0);  // nothing done since the start
+  p.update(70);
+  EXPECT_GT(p.rate(), 0.0);
+  EXPECT_LT(p.rate(), 10.0 / 0.02);  // 10 steps in at least 20 ms, not 70
+}

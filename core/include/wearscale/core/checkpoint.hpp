@@ -19,6 +19,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include "wearscale/core/config.hpp"
+
 namespace wearscale {
 
 /// When to save: by wall-clock time, by solver steps, or both (whichever
@@ -95,6 +99,15 @@ class Checkpointer {
   long saves_ = 0;
   double seconds_saving_ = 0.0;
 };
+
+/// The [run] keys checkpoint_interval (s, default 600) and checkpoint_steps
+/// (default 0), range-checked.
+CheckpointPolicy checkpoint_policy(const Config& root);
+
+/// The fingerprint of a resolved case (JSON): the case without what does not
+/// change its results ([run]: how often to checkpoint; [output]: where to
+/// write; [sweep]: the sweep around a run), as JSON text.
+std::string case_fingerprint(const nlohmann::json& parameters);
 
 /// "key 'scale.macro.grid' was 64, is now 128": the first difference between
 /// two resolved cases given as JSON text, or "" if they are equal or not JSON.

@@ -20,6 +20,9 @@ class Progress {
 
   /// Reports `done` units finished (absolute, not an increment). Redraws at most ~5 times a second.
   void update(double done);
+  /// Work done before this reporter started (a resumed run): counted as
+  /// done, not in the rate.
+  void start_at(double done);
   /// Clears the line; called by the destructor if needed.
   void finish();
 
@@ -36,7 +39,7 @@ class Progress {
   Progress(std::string label, double total, std::string unit, bool enabled);
   using clock = std::chrono::steady_clock;
   std::string label_, unit_;
-  double total_, done_ = 0.0;
+  double total_, done_ = 0.0, base_ = 0.0;
   bool enabled_, drawn_ = false;
   clock::time_point start_, last_draw_;
 };
