@@ -156,3 +156,43 @@ TEST(DumpWriter, RefusesAColumnOfTheWrongLength) {
   }
   fs::remove_all(path.parent_path());
 }
+
+// A run resumed from a checkpoint continues the file its killed predecessor
+// was writing: cut back to the frames the checkpoint recorded, then appended
+// to, it holds exactly the frames an uninterrupted run writes.
+TEST(DumpWriter, AResumedWriterContinuesTheFileFromTheCheckpointedPosition) {
+  const auto straight = scratch("straight.dump"), resumed = scratch("resumed.dump");
+  const Particles p = three();
+  {
+    DumpWriter w(straight);
+    for (long step = 0; step < 3; ++step) w.write(step, 0.0, p, box_xy_periodic());
+    w.commit();
+  }
+  DumpPosition at;
+  {
+    DumpWriter killed(resumed);
+    killed.write(0, 0.0, p, box_xy_periodic());
+    killed.write(1, 0.0, p, box_xy_periodic());
+    at = killed.position();                          // the checkpoint, after frame 1
+    killed.write(7, 0.0, p, box_xy_periodic());      // written after it: dropped on resume
+  }  // destroyed uncommitted, as by an interrupt: the file a checkpoint refers to stays
+  EXPECT_EQ(at.frames, 2u);
+  EXPECT_TRUE(fs::exists(resumed.parent_path() / at.partial));
+  EXPECT_FALSE(fs::exists(resumed));
+  // The killed run was another process: its temporary file bears its pid.
+  const std::string other = ".resumed.dump.partial-1";
+  fs::rename(resumed.parent_path() / at.partial, resumed.parent_path() / other);
+  at.partial = other;
+
+  DumpWriter w(resumed);
+  ASSERT_TRUE(w.resume(at));
+  EXPECT_EQ(w.frames(), 2u);
+  w.write(2, 0.0, p, box_xy_periodic());
+  w.commit();
+  EXPECT_EQ(lines_of(resumed), lines_of(straight));
+
+  // Nothing to continue: an empty file, and the caller is told.
+  DumpWriter fresh(scratch("fresh.dump"));
+  EXPECT_FALSE(fresh.resume({".gone.partial-1", 100, 1}));
+  EXPECT_EQ(fresh.frames(), 0u);
+}

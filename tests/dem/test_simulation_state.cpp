@@ -105,7 +105,7 @@ TEST(SimulationState, AJunctionRunResumedFromItsCheckpointGivesTheSameResult) {
   CheckpointState saved;
   long saved_at = 0;
   struct Stop {};
-  JunctionCheckpoints stop_after_sliding_starts;
+  RunCheckpoints stop_after_sliding_starts;
   stop_after_sliding_starts.at_sample = [&](long step, const std::function<CheckpointState()>& make) {
     if (static_cast<double>(step) < 0.5 * static_cast<double>(straight.steps)) return;
     saved = make();
@@ -115,7 +115,7 @@ TEST(SimulationState, AJunctionRunResumedFromItsCheckpointGivesTheSameResult) {
   EXPECT_THROW(run_junction_strength(spec, {}, stop_after_sliding_starts), Stop);
   ASSERT_GT(saved_at, 0);
 
-  JunctionCheckpoints resume;
+  RunCheckpoints resume;
   resume.from = &saved;
   const JunctionStrengthResult resumed = run_junction_strength(spec, {}, resume);
   EXPECT_EQ(resumed.peak_tangential, straight.peak_tangential);

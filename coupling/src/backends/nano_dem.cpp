@@ -395,7 +395,7 @@ class NanoDem final : public Scale {
     // Checkpointed as its own owner in the run's checkpoint (several junctions
     // run side by side; the checkpointer is shared, hence the lock).
     const std::string owner = "nano/dem/" + key;
-    dem::JunctionCheckpoints checkpoints;
+    dem::RunCheckpoints checkpoints;
     {
       std::lock_guard lock(checkpoint_mutex_);
       checkpoints.from = ctx.checkpoints().restored(owner);

@@ -94,8 +94,33 @@ DumpWriter::DumpWriter(std::filesystem::path final_path, DumpFormat format)
 DumpWriter::~DumpWriter() {
   if (committed_) return;
   if (file_) std::fclose(file_);
+  if (keep_partial_) return;
   std::error_code ec;
   std::filesystem::remove(partial_, ec);
+}
+
+DumpPosition DumpWriter::position() {
+  if (committed_) throw std::logic_error("DumpWriter: position() after commit()");
+  if (std::fflush(file_) != 0)
+    throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+  keep_partial_ = true;
+  return {partial_.filename().string(), std::filesystem::file_size(partial_), frames_};
+}
+
+bool DumpWriter::resume(const DumpPosition& at) {
+  if (committed_) throw std::logic_error("DumpWriter: resume() after commit()");
+  const auto previous = partial_.parent_path() / at.partial;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(previous, ec);
+  if (ec || size < at.bytes || at.partial.empty() || previous == partial_) return false;
+  std::fclose(file_);
+  file_ = nullptr;
+  std::filesystem::rename(previous, partial_);
+  std::filesystem::resize_file(partial_, at.bytes);
+  file_ = std::fopen(partial_.c_str(), "ab");
+  if (!file_) throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+  frames_ = at.frames;
+  return true;
 }
 
 void DumpWriter::write(long step, double time, const Particles& p, const Box& box,

@@ -111,7 +111,7 @@ double contact_ratio_at(const Simulation& sim, double z_mid, double d0) {
 }
 
 JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, const JunctionStrengthObserver& observe,
-                                             const JunctionCheckpoints& checkpoints) {
+                                             const RunCheckpoints& checkpoints) {
   check(spec);
   const auto& cell = spec.cell;
   const double d0 = cell.d0;
@@ -215,13 +215,8 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   auto save = [&] {
     CheckpointState st;
     sim.save_state(st);
-    std::vector<double> h;
-    for (const auto& x : out.history)
-      h.insert(h.end(), {x.time, x.sliding, x.tangential_force, x.normal_force, x.kinetic_energy});
-    st.put("junction.history", h);
-    std::vector<double> w;
-    for (const Vec3& x : window_positions) w.insert(w.end(), {x.x, x.y, x.z});
-    st.put("junction.window_positions", w);
+    put_samples(st, "junction.history", out.history);
+    put_points(st, "junction.window_positions", window_positions);
     st.put("junction.tallies", std::vector<double>{double(step), out.loaded_contact_ratio, out.peak_tangential,
                                                    window_sliding, steady_sum, normal_sum, double(steady_count),
                                                    double(slide_count)});
@@ -230,10 +225,8 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   if (checkpoints.from != nullptr) {
     const CheckpointState& st = *checkpoints.from;
     sim.restore_state(st);
-    const auto& t = st.array("junction.tallies");
-    const auto& h = st.array("junction.history");
-    const auto& w = st.array("junction.window_positions");
-    if (t.size() != 8 || h.size() % 5 != 0 || w.size() % 3 != 0 || sim.particles().size() != out.particles)
+    const auto& t = tallies(st, "junction.tallies", 8);
+    if (sim.particles().size() != out.particles)
       throw InputError(fmt::format("{}: not the state of this junction run", st.origin));
     step = static_cast<long>(t[0]);
     out.loaded_contact_ratio = t[1];
@@ -243,8 +236,8 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
     normal_sum = t[5];
     steady_count = static_cast<long>(t[6]);
     slide_count = static_cast<long>(t[7]);
-    for (std::size_t k = 0; k < h.size(); k += 5) out.history.push_back({h[k], h[k + 1], h[k + 2], h[k + 3], h[k + 4]});
-    for (std::size_t k = 0; k < w.size(); k += 3) window_positions.push_back({w[k], w[k + 1], w[k + 2]});
+    out.history = samples<JunctionSample>(st, "junction.history");
+    window_positions = points(st, "junction.window_positions");
   }
   while (step < planned) {
     if (step == settle_steps) {
@@ -277,7 +270,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
       window_sliding = s.sliding;
     }
     if (observe) observe(sim, s, step, planned);
-    if (checkpoints.at_sample && step < planned) checkpoints.at_sample(step, save);
+    if (step < planned) checkpoints.offer(step, save);
   }
   if (settle_steps == 0 && out.loaded_contact_ratio == 0.0) out.loaded_contact_ratio = out.initial_contact_ratio;
   out.steps = planned;

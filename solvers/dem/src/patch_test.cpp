@@ -155,7 +155,42 @@ SymTensor inner_stress(const Loading& l) {
   return virial_stress(l.sim, l.inner, l.inner_volume * (1.0 + axial_strain(l)));
 }
 
-void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTestProgress& progress) {
+// The three tests run one after the other; a checkpoint holds which one
+// runs, what the finished ones measured, the DEM system of the running one
+// and its loop tallies.
+enum Phase { elastic_phase = 0, tension_phase = 1, shear_phase = 2 };
+
+CheckpointState patch_state(Phase phase, const PatchTestResult& r, const Simulation& sim, std::vector<double> loop) {
+  CheckpointState st;
+  sim.save_state(st);
+  st.put("patch_test.phase", static_cast<double>(phase));
+  st.put("patch_test.measured",
+         std::vector<double>{double(r.particles), double(r.elastic_steps), r.elastic_converged ? 1.0 : 0.0, r.c11,
+                             r.c12, r.young, r.poisson, r.tensile_strength.value_or(std::nan("")),
+                             double(r.strength_steps)});
+  st.put("patch_test.loop", loop);
+  return st;
+}
+
+Phase restore_measured(const CheckpointState& st, PatchTestResult& r) {
+  const double phase = st.scalar("patch_test.phase");
+  if (phase != 0.0 && phase != 1.0 && phase != 2.0)
+    throw InputError(fmt::format("{}: patch-test phase {}: not the state of a patch test", st.origin, phase));
+  const auto& m = tallies(st, "patch_test.measured", 9);
+  r.particles = static_cast<std::size_t>(m[0]);
+  r.elastic_steps = static_cast<long>(m[1]);
+  r.elastic_converged = m[2] != 0.0;
+  r.c11 = m[3];
+  r.c12 = m[4];
+  r.young = m[5];
+  r.poisson = m[6];
+  if (!std::isnan(m[7])) r.tensile_strength = m[7];
+  r.strength_steps = static_cast<long>(m[8]);
+  return static_cast<Phase>(static_cast<int>(phase));
+}
+
+void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTestProgress& progress,
+                  const RunCheckpoints& checkpoints, const CheckpointState* from) {
   const double pressure = spec.load * spec.material.young;
   auto l = prepare(spec, build(spec), WallMotion::pressed(load_axis, pressure, 1.0, +1), spec.elastic_damping);
   r.particles = l.sim.particles().size();
@@ -164,6 +199,12 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
   const long chunk = 500;
   double previous = 0.0;
   long steps = 0;
+  if (from != nullptr) {
+    l.sim.restore_state(*from);
+    const auto& t = tallies(*from, "patch_test.loop", 2);
+    steps = static_cast<long>(t[0]);
+    previous = t[1];
+  }
   while (steps < spec.max_elastic_steps) {
     l.sim.run(chunk);
     steps += chunk;
@@ -174,6 +215,7 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
       break;
     }
     previous = now;
+    checkpoints.offer(steps, [&] { return patch_state(elastic_phase, r, l.sim, {double(steps), previous}); });
   }
   r.elastic_steps = steps;
   l.sim.compute_forces();
@@ -188,8 +230,9 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
 
 // Pulls (axis 1) or shears (axis 0) the top wall at the strain rate; the peak
 // of the stress component `component` in the middle of the sample.
-double strength_test(const PatchTestSpec& spec, int direction, int component, long& steps,
-                     const PatchTestProgress& progress, const std::string& name) {
+double strength_test(const PatchTestSpec& spec, int direction, int component, PatchTestResult& r,
+                     const PatchTestProgress& progress, const std::string& name, const RunCheckpoints& checkpoints,
+                     Phase phase, const CheckpointState* from) {
   Sample s = build(spec);
   CohesiveLaw probe({spec.material});
   const double dt = spec.time_step * probe.critical_time_step(s.particles);
@@ -201,6 +244,12 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, lo
   const long planned = static_cast<long>(max_strain / spec.strain_rate);
   double peak = 0.0;
   long done = 0;
+  if (from != nullptr) {
+    l.sim.restore_state(*from);
+    const auto& t = tallies(*from, "patch_test.loop", 2);
+    done = static_cast<long>(t[0]);
+    peak = t[1];
+  }
   const long chunk = 100;
   while (done < planned) {
     l.sim.run(chunk);
@@ -209,14 +258,17 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, lo
     peak = std::max(peak, stress);
     if (progress) progress(name, done, planned);
     if (peak > 0.0 && stress < 0.3 * peak) break;  // failed
+    checkpoints.offer(r.elastic_steps + r.strength_steps + done,
+                      [&] { return patch_state(phase, r, l.sim, {double(done), peak}); });
   }
-  steps += done;
+  r.strength_steps += done;
   return peak;
 }
 
 }  // namespace
 
-PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress) {
+PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress,
+                               const RunCheckpoints& checkpoints) {
   require_modelled(spec.material);
   if (!(spec.d0 > 0.0)) throw InputError(fmt::format("patch test: d0 = {}; allowed: > 0", spec.d0));
   if (!(spec.length >= 6.0)) throw InputError(fmt::format("patch test: L = {} d0; allowed: ≥ 6", spec.length));
@@ -229,10 +281,15 @@ PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgres
   const double size = std::max(1.0, spec.d0 / r.d_c);
   r.target_tensile = spec.material.tensile_strength * std::pow(size, -spec.material.scaling_exponent);  // (6.63)
   r.target_shear = spec.material.shear_strength * std::pow(size, -spec.material.scaling_exponent);
-  elastic_test(spec, r, progress);
+  const CheckpointState* from = checkpoints.from;
+  const Phase resumed = from != nullptr ? restore_measured(*from, r) : elastic_phase;
+  auto from_if = [&](Phase phase) { return resumed == phase ? from : nullptr; };
+  if (resumed == elastic_phase) elastic_test(spec, r, progress, checkpoints, from_if(elastic_phase));
   if (spec.strengths) {
-    r.tensile_strength = strength_test(spec, load_axis, 1, r.strength_steps, progress, "tension");
-    r.shear_strength = strength_test(spec, 0, 3, r.strength_steps, progress, "shear");
+    if (resumed <= tension_phase)
+      r.tensile_strength = strength_test(spec, load_axis, 1, r, progress, "tension", checkpoints, tension_phase,
+                                         from_if(tension_phase));
+    r.shear_strength = strength_test(spec, 0, 3, r, progress, "shear", checkpoints, shear_phase, from_if(shear_phase));
   }
   return r;
 }

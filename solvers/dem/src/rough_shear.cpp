@@ -58,13 +58,14 @@ std::vector<std::size_t> largest_worn_cluster(const SlidingCell& cell) {
 
 }  // namespace
 
-RoughShearResult run_rough_shear(const RoughShearSpec& spec, const RoughShearObserver& observe) {
+RoughShearResult run_rough_shear(const RoughShearSpec& spec, const RoughShearObserver& observe,
+                                 const RunCheckpoints& checkpoints) {
   check(spec);
-  return run_rough_shear(spec, make_cell_sample(spec.cell), observe);
+  return run_rough_shear(spec, make_cell_sample(spec.cell), observe, checkpoints);
 }
 
 RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSample& sample,
-                                 const RoughShearObserver& observe) {
+                                 const RoughShearObserver& observe, const RunCheckpoints& checkpoints) {
   check(spec);
   const double d0 = spec.cell.d0;
   RoughShearResult out;
@@ -118,11 +119,37 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
   const long planned = cell.planned_steps();
   const long every = spec.cell.record_every;
   const long window_start = planned - std::max((planned - cell.settle_steps()) / 5, every);
-  out.history.push_back(cell.advance(0));
   std::vector<std::size_t> wear_particle;
   std::vector<Vec3> window_positions;
   bool window_open = false;
+  long done = 0;
+  // The run's state: the DEM system and the measurements so far.
+  auto save = [&] {
+    CheckpointState st;
+    cell.simulation().save_state(st);
+    put_samples(st, "rough_shear.history", out.history);
+    put_indices(st, "rough_shear.wear_particle", wear_particle);
+    put_points(st, "rough_shear.window_positions", window_positions);
+    st.put("rough_shear.tallies", std::vector<double>{double(done), out.peak_tangential_force, window_open ? 1.0 : 0.0});
+    return st;
+  };
+  if (checkpoints.from != nullptr) {
+    const CheckpointState& st = *checkpoints.from;
+    cell.simulation().restore_state(st);
+    const auto& t = tallies(st, "rough_shear.tallies", 3);
+    done = static_cast<long>(t[0]);
+    out.peak_tangential_force = t[1];
+    window_open = t[2] != 0.0;
+    out.history = samples<SlidingSample>(st, "rough_shear.history");
+    wear_particle = indices(st, "rough_shear.wear_particle");
+    window_positions = points(st, "rough_shear.window_positions");
+    if (window_positions.size() != wear_particle.size())
+      throw InputError(fmt::format("{}: not the state of this rough-shear run", st.origin));
+  } else {
+    out.history.push_back(cell.advance(0));
+  }
   cell.run([&](const SlidingSample& s, long step, long) {
+    done = step;
     out.history.push_back(s);
     out.peak_tangential_force = std::max(out.peak_tangential_force, s.tangential_force);
     if (step >= window_start && !window_open && step < planned) {
@@ -131,7 +158,8 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
       window_open = true;
     }
     if (observe) observe(cell, s, step, planned);
-  });
+    if (step < planned) checkpoints.offer(step, save);
+  }, done);
   out.steps = planned;
 
   double sum_t = 0.0, sum_n = 0.0;

@@ -44,7 +44,8 @@ void check(const ShearedJunctionSpec& s) {
 
 }  // namespace
 
-ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, const JunctionObserver& observe) {
+ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, const JunctionObserver& observe,
+                                           const RunCheckpoints& checkpoints) {
   check(spec);
   ShearedJunctionResult out;
   const auto& m = spec.material;
@@ -138,7 +139,27 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
     s.kinetic_energy = sim.kinetic_energy();
     return s;
   };
-  for (long step = 0; step < planned;) {
+  long step = 0;
+  // The run's state: the DEM system and the measurements so far.
+  auto save = [&] {
+    CheckpointState st;
+    sim.save_state(st);
+    put_samples(st, "junction.history", out.history);
+    put_points(st, "junction.window_positions", window_positions);
+    st.put("junction.tallies", std::vector<double>{double(step), out.peak_tangential_force, window_sliding});
+    return st;
+  };
+  if (checkpoints.from != nullptr) {
+    const CheckpointState& st = *checkpoints.from;
+    sim.restore_state(st);
+    const auto& t = tallies(st, "junction.tallies", 3);
+    step = static_cast<long>(t[0]);
+    out.peak_tangential_force = t[1];
+    window_sliding = t[2];
+    out.history = samples<JunctionSample>(st, "junction.history");
+    window_positions = points(st, "junction.window_positions");
+  }
+  while (step < planned) {
     const long chunk = std::min(spec.record_every, planned - step);
     sim.run(chunk);
     step += chunk;
@@ -150,6 +171,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
       window_sliding = s.sliding;
     }
     if (observe) observe(sim, s, step, planned);
+    if (step < planned) checkpoints.offer(step, save);
   }
   out.steps = planned;
   const auto fit = rigid_fit(window_positions, unwrapped_positions(sim, junction_set));

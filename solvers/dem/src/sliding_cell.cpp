@@ -84,7 +84,6 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   bottom_wall_ = sim_->add_wall(std::move(bottom), WallMotion::fixed());
   top_wall_ = sim_->add_wall(std::move(top), pressed);
   tags_ = std::make_unique<WornParticles>(sim_->particles(), sim_->box(), bond_);
-
 }
 
 std::vector<double> SlidingCell::worn_flags() const {
@@ -122,9 +121,9 @@ SlidingSample SlidingCell::advance(long steps) {
   return s;
 }
 
-void SlidingCell::run(const std::function<void(const SlidingSample&, long step, long planned)>& each) {
+void SlidingCell::run(const std::function<void(const SlidingSample&, long step, long planned)>& each, long from) {
   const long planned = planned_steps();
-  for (long step = 0; step < planned;) {
+  for (long step = from; step < planned;) {
     const long chunk = std::min(spec_.record_every, step < settle_ ? settle_ - step : planned - step);
     const auto s = advance(chunk);
     step += chunk;

@@ -33,13 +33,15 @@ void check(const TrappedParticlesSpec& s) {
 
 }  // namespace
 
-TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const TrappedParticlesObserver& observe) {
+TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const TrappedParticlesObserver& observe,
+                                             const RunCheckpoints& checkpoints) {
   check(spec);
-  return run_trapped_particles(spec, make_cell_sample(spec.cell), observe);
+  return run_trapped_particles(spec, make_cell_sample(spec.cell), observe, checkpoints);
 }
 
 TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const AmorphousSample& sample,
-                                             const TrappedParticlesObserver& observe) {
+                                             const TrappedParticlesObserver& observe,
+                                             const RunCheckpoints& checkpoints) {
   check(spec);
   const double d0 = spec.cell.d0;
   TrappedParticlesResult out;
@@ -101,17 +103,52 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
     throw InputError(fmt::format("trapped particles: fit_from = {} leaves no record interval ({} steps) to fit; "
                                  "allowed: a smaller fit_from or record_every",
                                  spec.fit_from, every));
-  out.history.push_back(cell.advance(0));
   std::vector<std::vector<Vec3>> window_positions;
-  if (window_start == 0)
-    for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.simulation(), l));
+  long done = 0;
+  // The run's state: the DEM system and the measurements so far (the window
+  // positions of every loose particle, one after the other).
+  auto save = [&] {
+    CheckpointState st;
+    cell.simulation().save_state(st);
+    put_samples(st, "trapped_particles.history", out.history);
+    std::vector<Vec3> window;
+    for (const auto& w : window_positions) window.insert(window.end(), w.begin(), w.end());
+    put_points(st, "trapped_particles.window_positions", window);
+    st.put("trapped_particles.tallies", std::vector<double>{double(done), out.peak_tangential_force});
+    return st;
+  };
+  if (checkpoints.from != nullptr) {
+    const CheckpointState& st = *checkpoints.from;
+    cell.simulation().restore_state(st);
+    const auto& t = tallies(st, "trapped_particles.tallies", 2);
+    done = static_cast<long>(t[0]);
+    out.peak_tangential_force = t[1];
+    out.history = samples<SlidingSample>(st, "trapped_particles.history");
+    const auto window = points(st, "trapped_particles.window_positions");
+    std::size_t at = 0;
+    if (!window.empty())
+      for (const auto& l : loose) {
+        if (at + l.size() > window.size()) break;
+        window_positions.emplace_back(window.begin() + static_cast<std::ptrdiff_t>(at),
+                                      window.begin() + static_cast<std::ptrdiff_t>(at + l.size()));
+        at += l.size();
+      }
+    if (at != window.size() || (!window.empty() && window_positions.size() != loose.size()))
+      throw InputError(fmt::format("{}: not the state of this trapped-particles run", st.origin));
+  } else {
+    out.history.push_back(cell.advance(0));
+    if (window_start == 0)
+      for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.simulation(), l));
+  }
   cell.run([&](const SlidingSample& s, long step, long) {
+    done = step;
     out.history.push_back(s);
     out.peak_tangential_force = std::max(out.peak_tangential_force, s.tangential_force);
     if (step >= window_start && step < planned && window_positions.empty())
       for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.simulation(), l));
     if (observe) observe(cell, s, step, planned);
-  });
+    if (step < planned) checkpoints.offer(step, save);
+  }, done);
   out.steps = planned;
 
   double sum_t = 0.0, sum_n = 0.0;

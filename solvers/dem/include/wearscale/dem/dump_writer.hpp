@@ -3,7 +3,10 @@
 // LAMMPS dump text (`ITEM: ATOMS id type x y z radius vx vy vz fx fy fz body
 // wall ...`) or extended XYZ. Like every wearscale output, the file is
 // written under a temporary name and appears under its own name only once
-// committed; a writer destroyed before commit() leaves nothing.
+// committed; a writer destroyed before commit() leaves nothing, unless a
+// checkpoint has recorded its position: then its temporary file stays, for
+// the resumed run to continue.
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <span>
@@ -26,6 +29,14 @@ enum class DumpFormat {
   extended_xyz,  ///< extended XYZ (Lattice, Origin, pbc, Properties)
 };
 
+/// How far a writer has got: its temporary file (a name in the folder of the
+/// final file), and the bytes and frames written to it.
+struct DumpPosition {
+  std::string partial;
+  std::uintmax_t bytes = 0;
+  std::size_t frames = 0;
+};
+
 class DumpWriter {
  public:
   explicit DumpWriter(std::filesystem::path final_path, DumpFormat format = DumpFormat::lammps);
@@ -41,6 +52,14 @@ class DumpWriter {
   void write(const Simulation& sim, const std::vector<DumpColumn>& extra = {});
 
   std::size_t frames() const { return frames_; }
+  /// Where the file stands now, for a checkpoint. From now on the
+  /// temporary file is kept if the writer is destroyed uncommitted.
+  DumpPosition position();
+  /// Continues the file of a killed or interrupted run from `at` (what its
+  /// checkpoint recorded): its temporary file becomes this writer's, cut back
+  /// to `at.bytes` (frames written after the checkpoint are dropped). False,
+  /// and an empty file, if that file is gone or shorter than `at.bytes`.
+  bool resume(const DumpPosition& at);
   /// Closes the file and moves it to its final name.
   void commit();
   const std::filesystem::path& final_path() const { return final_; }
@@ -51,6 +70,7 @@ class DumpWriter {
   std::FILE* file_ = nullptr;
   std::size_t frames_ = 0;
   bool committed_ = false;
+  bool keep_partial_ = false;  // a checkpoint refers to it
 };
 
 }  // namespace wearscale::dem

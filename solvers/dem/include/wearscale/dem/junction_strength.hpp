@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/cohesive_material.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
 
@@ -82,18 +82,9 @@ struct JunctionStrengthResult {
 /// Called after each sample (progress, dumps).
 using JunctionStrengthObserver = std::function<void(const Simulation&, const JunctionSample&, long step, long planned)>;
 
-/// Checkpoints of a junction run: `at_sample(step, make)` is called after
-/// each sample (make() gives the run's state: the DEM system and what has
-/// been measured so far); a run started `from` such a state continues where
-/// it stopped and gives the same result bit for bit (same thread count).
-struct JunctionCheckpoints {
-  std::function<void(long step, const std::function<CheckpointState()>& make)> at_sample;
-  const CheckpointState* from = nullptr;
-};
-
 JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec,
                                              const JunctionStrengthObserver& observe = {},
-                                             const JunctionCheckpoints& checkpoints = {});
+                                             const RunCheckpoints& checkpoints = {});
 
 /// The measured contact ratio: the fraction of the cell length covered by
 /// the diameters of mobile particles centred within d0/2 of `z_mid`.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
 
 namespace wearscale::dem {
 
@@ -50,6 +51,9 @@ struct PatchTestResult {
 /// Observer of long runs: (phase, step, steps planned).
 using PatchTestProgress = std::function<void(const std::string&, long, long)>;
 
-PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress = {});
+/// `checkpoints` offers the state after every chunk of steps (the step it
+/// gives counts the steps of all three tests) and resumes from one.
+PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress = {},
+                               const RunCheckpoints& checkpoints = {});
 
 }  // namespace wearscale::dem

@@ -53,9 +53,10 @@ struct RoughShearResult {
 using RoughShearObserver = std::function<void(const SlidingCell&, const SlidingSample&, long step, long planned)>;
 
 /// Builds the relaxed amorphous box (make_cell_sample) and runs the study.
-RoughShearResult run_rough_shear(const RoughShearSpec& spec, const RoughShearObserver& observe = {});
+RoughShearResult run_rough_shear(const RoughShearSpec& spec, const RoughShearObserver& observe = {},
+                                 const RunCheckpoints& checkpoints = {});
 /// The study on a given relaxed box (the same box for several runs).
 RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSample& sample,
-                                 const RoughShearObserver& observe = {});
+                                 const RoughShearObserver& observe = {}, const RunCheckpoints& checkpoints = {});
 
 }  // namespace wearscale::dem

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/vec3.hpp"
 
 namespace wearscale::dem {
@@ -73,6 +74,8 @@ struct ShearedJunctionResult {
 /// Called every record_every steps with the simulation (dumps, progress).
 using JunctionObserver = std::function<void(const Simulation&, const JunctionSample&, long step, long planned)>;
 
-ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, const JunctionObserver& observe = {});
+/// `checkpoints` offers the state after every sample and resumes from one.
+ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, const JunctionObserver& observe = {},
+                                           const RunCheckpoints& checkpoints = {});
 
 }  // namespace wearscale::dem

@@ -13,6 +13,7 @@
 
 #include "wearscale/dem/amorphous_sample.hpp"
 #include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/worn_particles.hpp"
 
@@ -77,8 +78,9 @@ class SlidingCell {
   SlidingSample advance(long steps);
   /// The whole run: loading at rest (settle_steps()), then sliding, sampled
   /// every record_every steps (and at the end of the loading); `each` is
-  /// called with every sample, the steps done and the steps planned.
-  void run(const std::function<void(const SlidingSample&, long step, long planned)>& each);
+  /// called with every sample, the steps done and the steps planned. A run
+  /// resumed from a checkpoint continues after step `from` (its state restored).
+  void run(const std::function<void(const SlidingSample&, long step, long planned)>& each, long from = 0);
   long settle_steps() const { return settle_; }
   /// Loading and sliding steps.
   long planned_steps() const { return settle_ + slide_; }

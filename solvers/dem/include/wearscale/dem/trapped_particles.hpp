@@ -59,9 +59,11 @@ struct TrappedParticlesResult {
 using TrappedParticlesObserver = std::function<void(const SlidingCell&, const SlidingSample&, long step, long planned)>;
 
 /// Builds the relaxed amorphous box (make_cell_sample) and runs the study.
-TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const TrappedParticlesObserver& observe = {});
+TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const TrappedParticlesObserver& observe = {},
+                                             const RunCheckpoints& checkpoints = {});
 /// The study on a given relaxed box (the same box for several pressures).
 TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, const AmorphousSample& sample,
-                                             const TrappedParticlesObserver& observe = {});
+                                             const TrappedParticlesObserver& observe = {},
+                                             const RunCheckpoints& checkpoints = {});
 
 }  // namespace wearscale::dem

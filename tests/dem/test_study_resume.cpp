@@ -1,0 +1,168 @@
+// The DEM studies a user runs on their own (`wearscale dem ...`) can be
+// resumed (#10): each offers its state after every sample, and a run set up
+// afresh from that state ends bit for bit as the run that never stopped -
+// the sheared junction (§6.3), sheared rough surfaces (§7.2), trapped
+// particles (§7.3) and the three patch tests (§6.2), from a state taken in
+// each of them. A state of another study is refused, naming the entry.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "input_error_of.hpp"
+#include "wearscale/dem/patch_test.hpp"
+#include "wearscale/dem/rough_shear.hpp"
+#include "wearscale/dem/sheared_junction.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
+#include "wearscale/materials/material.hpp"
+
+using namespace wearscale;
+using namespace wearscale::dem;
+
+namespace {
+constexpr double d0 = 6e-9;  // coarse: a few hundred particles, a second per run
+
+// Keeps every state offered (the run goes on: it is the uninterrupted
+// reference); resume(f) continues from the state a fraction f of the way.
+struct Capture {
+  std::vector<CheckpointState> states;
+  RunCheckpoints hooks() {
+    RunCheckpoints h;
+    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
+    return h;
+  }
+  RunCheckpoints resume(double fraction) const {
+    RunCheckpoints h;
+    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
+    return h;
+  }
+};
+
+SlidingCellSpec coarse_cell() {
+  SlidingCellSpec c;
+  c.material = cohesive_material(materials::silica(), 0.5);  // Table 6.5, s = ½
+  c.d0 = d0;
+  c.velocity = 100.0;
+  c.pressure = 0.5e9;
+  c.sliding_distance = 2 * d0;
+  c.settle_distance = 0.5 * d0;  // the checkpoint falls after sliding starts
+  return c;
+}
+
+void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<SlidingSample>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].time, b[k].time) << "sample " << k;
+    EXPECT_EQ(a[k].tangential_force, b[k].tangential_force) << "sample " << k;
+    EXPECT_EQ(a[k].normal_force, b[k].normal_force) << "sample " << k;
+    EXPECT_EQ(a[k].kinetic_energy, b[k].kinetic_energy) << "sample " << k;
+    EXPECT_EQ(a[k].worn, b[k].worn) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_bottom, b[k].roughness_bottom) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_top, b[k].roughness_top) << "sample " << k;
+  }
+}
+}  // namespace
+
+TEST(StudyResume, AShearedJunctionResumedMidSlideEndsBitForBitAsTheUninterruptedRun) {
+  ShearedJunctionSpec s;
+  s.material = cohesive_material(materials::silica(), 0.5);
+  s.diameter = 20e-9;
+  s.d0 = d0;
+  s.velocity = 50.0;
+  s.sliding_distance = d0;
+  Capture capture;
+  const auto straight = run_sheared_junction(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  const auto resumed = run_sheared_junction(s, {}, capture.resume(0.5));
+  EXPECT_EQ(resumed.peak_tangential_force, straight.peak_tangential_force);
+  EXPECT_EQ(resumed.rigid_residual, straight.rigid_residual);
+  EXPECT_EQ(resumed.rolling_rate, straight.rolling_rate);
+  EXPECT_EQ(resumed.detached_cluster, straight.detached_cluster);
+  EXPECT_EQ(resumed.detached_diameter, straight.detached_diameter);
+  ASSERT_EQ(resumed.history.size(), straight.history.size());
+  for (std::size_t k = 0; k < straight.history.size(); ++k) {
+    EXPECT_EQ(resumed.history[k].tangential_force, straight.history[k].tangential_force) << "sample " << k;
+    EXPECT_EQ(resumed.history[k].normal_force, straight.history[k].normal_force) << "sample " << k;
+  }
+}
+
+TEST(StudyResume, ShearedRoughSurfacesResumedInTheWindowEndBitForBitAsTheUninterruptedRun) {
+  RoughShearSpec s;
+  s.cell = coarse_cell();
+  s.cell.box = {10 * d0, 3.5 * d0, 10 * d0};
+  s.roughness = 0.04;
+  Capture capture;
+  const auto straight = run_rough_shear(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  // The last sample before the end lies in the rigid-fit window (the last
+  // fifth of the slide): its state carries the window's first positions.
+  const auto resumed = run_rough_shear(s, {}, capture.resume(1.0));
+  expect_same_history(resumed.history, straight.history);
+  EXPECT_EQ(resumed.peak_tangential_force, straight.peak_tangential_force);
+  EXPECT_EQ(resumed.friction, straight.friction);
+  EXPECT_EQ(resumed.worn, straight.worn);
+  EXPECT_EQ(resumed.wear_particle, straight.wear_particle);
+  EXPECT_EQ(resumed.wear_particle_residual, straight.wear_particle_residual);
+  EXPECT_EQ(resumed.regime, straight.regime);
+
+  // The state of another study is not this one's.
+  TrappedParticlesSpec t;
+  t.cell = s.cell;
+  t.count = 1;
+  t.diameter = 3.5 * d0;
+  t.cell.box = {10 * d0, 3.5 * d0, 12 * d0};
+  EXPECT_THAT(input_error_of([&] { run_trapped_particles(t, {}, capture.resume(1.0)); }),
+              testing::AnyOf(testing::HasSubstr("trapped_particles.tallies"), testing::HasSubstr("dem.")));
+}
+
+TEST(StudyResume, TrappedParticlesResumedMidSlideEndBitForBitAsTheUninterruptedRun) {
+  TrappedParticlesSpec s;
+  s.cell = coarse_cell();
+  s.count = 2;
+  s.diameter = 3.5 * d0;
+  s.cell.box = {2 * 3 * s.diameter, 3.5 * d0, s.diameter + 9 * d0};
+  Capture capture;
+  const auto straight = run_trapped_particles(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  const auto resumed = run_trapped_particles(s, {}, capture.resume(0.5));
+  expect_same_history(resumed.history, straight.history);
+  EXPECT_EQ(resumed.loose_residual, straight.loose_residual);
+  EXPECT_EQ(resumed.friction, straight.friction);
+  EXPECT_EQ(resumed.worn_first_body, straight.worn_first_body);
+  EXPECT_EQ(resumed.band_thickness, straight.band_thickness);
+}
+
+// The patch tests run one after the other (elastic, tension, shear); a state
+// taken in any of them resumes that test and runs those after it.
+TEST(StudyResume, APatchTestResumedInEachOfItsThreeTestsEndsBitForBitAsTheUninterruptedRun) {
+  PatchTestSpec s;
+  s.material = patch_test_targets();
+  s.material.poisson = 0.1;
+  s.d0 = 90.0;  // 0.6 d_c
+  s.length = 8.0;
+  s.strain_rate = 1e-4;
+  std::map<int, CheckpointState> third_of_each;  // the state at the third sample of each test
+  std::map<int, int> seen;
+  RunCheckpoints keep;
+  keep.at_sample = [&](long, const std::function<CheckpointState()>& make) {
+    CheckpointState st = make();
+    const int phase = static_cast<int>(st.scalar("patch_test.phase"));
+    if (++seen[phase] == 3) third_of_each[phase] = std::move(st);
+  };
+  const auto straight = run_patch_test(s, {}, keep);
+  ASSERT_EQ(third_of_each.size(), 3u) << "a state from the elastic, tensile and shear tests";
+  ASSERT_TRUE(straight.tensile_strength && straight.shear_strength);
+  for (const auto& [phase, state] : third_of_each) {
+    SCOPED_TRACE("resumed in test " + std::to_string(phase));
+    RunCheckpoints from;
+    from.from = &state;
+    const auto resumed = run_patch_test(s, {}, from);
+    EXPECT_EQ(resumed.particles, straight.particles);
+    EXPECT_EQ(resumed.young, straight.young);
+    EXPECT_EQ(resumed.poisson, straight.poisson);
+    EXPECT_EQ(resumed.elastic_steps, straight.elastic_steps);
+    EXPECT_EQ(resumed.tensile_strength, straight.tensile_strength);
+    EXPECT_EQ(resumed.shear_strength, straight.shear_strength);
+    EXPECT_EQ(resumed.strength_steps, straight.strength_steps);
+  }
+}
