@@ -6,16 +6,23 @@
 //                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
 // wearscale dem trapped-particles [CASE.toml] --material SiO2 --n 3 --D 18e-9 --d0 3e-9 [--length L]
 //                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
+// Every study also takes [--resume DIR].
 // The coarse-grained DEM of thesis ch. 6-7: patch tests measuring E, ν, σ_m,N,
 // σ_m,T beside their targets (§6.2), the sheared junction of §6.3, sheared
 // rough surfaces (§7.2) and loose particles trapped between flat surfaces (§7.3).
+// Each run checkpoints into its output folder (`checkpoint.h5`, policy from
+// [run] checkpoint_interval / checkpoint_steps) and `--resume DIR` continues
+// a killed or interrupted one.
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/coupling/plots.hpp"
@@ -26,7 +33,7 @@ namespace wearscale::app {
 namespace {
 
 struct DemArgs {
-  std::string case_file, out;
+  std::string case_file, out, resume;
   std::vector<std::pair<std::string, std::string>> flags;  // key, value
   std::vector<std::string> overrides;
   bool json = false;
@@ -51,11 +58,7 @@ Config build_config(const DemArgs& a, const std::string& default_out, std::files
   return cfg;
 }
 
-int finish(const DemArgs& a, nlohmann::json summary, const Config& cfg, const std::filesystem::path& out,
-           const std::string& name) {
-  summary["parameters"] = cfg.to_json();
-  summary["output_dir"] = out.string();
-  write_file_atomically(out / (name + ".json"), summary.dump(2) + "\n");
+int report(const DemArgs& a, const nlohmann::json& summary) {
   if (a.json) {
     std::cout << summary.dump(2) << '\n';
     return 0;
@@ -71,6 +74,97 @@ void common(CLI::App* cmd, DemArgs& a) {
       ->expected(1)->take_all();
   cmd->add_option("--out", a.out, "Output folder");
   cmd->add_flag("--json", a.json, "Print one JSON object with the results and resolved parameters");
+  cmd->add_option("--resume", a.resume,
+                  "Continue the killed or interrupted run whose output folder is DIR from its checkpoint (same case "
+                  "file, flags and --set options)")
+      ->type_name("DIR");
+}
+
+// The command that continues an interrupted run: the case and every option as --set.
+std::string resume_command(const DemArgs& a, const std::string& study, const std::filesystem::path& out) {
+  std::string line = "wearscale dem " + study;
+  if (!a.case_file.empty()) line += " " + a.case_file;
+  for (const auto& [key, value] : a.flags)
+    if (!value.empty()) line += fmt::format(" --set '{}={}'", key, value);
+  for (const auto& o : a.overrides) line += fmt::format(" --set '{}'", o);
+  return line + " --resume " + out.string();
+}
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+using Study = nlohmann::json (*)(const Config&, const std::filesystem::path&, Checkpointer*);
+
+// One study, checkpointed into its output folder: fresh, or with --resume
+// from the checkpoint there (or, if that run had completed, its summary).
+// The junction and wear studies add the force-history plot.
+int run_study(const DemArgs& a, const std::string& study, const std::string& default_out, const std::string& name,
+              Study run, bool plot) {
+  std::filesystem::path out;
+  const Config cfg = build_config(a, default_out, out);
+  const CheckpointPolicy policy = checkpoint_policy(cfg);
+  const std::string fingerprint = case_fingerprint(cfg.to_json());
+  if (!a.resume.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(a.resume, ec))
+      throw InputError(fmt::format("--resume {}: no such folder; give the output folder of the run to continue",
+                                   a.resume));
+    if (!a.out.empty() && std::filesystem::weakly_canonical(a.out) != std::filesystem::weakly_canonical(a.resume))
+      throw InputError(fmt::format("--out {} and --resume {} name different folders; a resumed run writes into the "
+                                   "folder it continues",
+                                   a.out, a.resume));
+    out = a.resume;
+  }
+  Checkpointer checkpoints(out / "checkpoint.h5", fingerprint, policy);
+  if (!a.resume.empty()) {
+    std::error_code ec;
+    const auto done = out / (name + ".json");
+    if (std::filesystem::exists(checkpoints.file(), ec)) {
+      checkpoints.load();
+    } else if (std::filesystem::exists(done, ec)) {
+      nlohmann::json previous;
+      try {
+        previous = nlohmann::json::parse(slurp(done));
+      } catch (const nlohmann::json::exception& e) {
+        throw InputError(fmt::format("{}: not a wearscale summary ({})", done.string(), e.what()));
+      }
+      const std::string was = previous.value("case_fingerprint", std::string());
+      if (was != fingerprint) {
+        const std::string diff = describe_case_difference(was, fingerprint);
+        throw InputError(fmt::format("{}: this run completed with other parameters{}; resume with the case file and "
+                                     "options it was run with, or write to another folder",
+                                     done.string(), diff.empty() ? "" : " (" + diff + ")"));
+      }
+      log::info("{}: already complete", out.string());
+      return report(a, previous);
+    } else {
+      log::info("{}: no checkpoint yet: the run starts from the beginning", out.string());
+    }
+  }  // a fresh run leaves an older checkpoint there until its own first one replaces it (bad input loses nothing)
+
+  nlohmann::json summary;
+  try {
+    summary = run(cfg, out, &checkpoints);
+  } catch (const Interrupted& e) {
+    throw Interrupted(fmt::format("{}; continue with: {}", e.what(), resume_command(a, study, out)));
+  }
+  if (plot)
+    if (auto png = coupling::plot_junction_force(out / (name + "_history.csv"), out / (name + "_force.png"),
+                                                 summary["verdict"].get<std::string>()))
+      summary["files"].push_back(png->string());
+  summary["parameters"] = cfg.to_json();
+  summary["case_fingerprint"] = fingerprint;
+  summary["output_dir"] = out.string();
+  write_file_atomically(out / (name + ".json"), summary.dump(2) + "\n");
+  if (checkpoints.saves() > 0)
+    log::debug("{}: {} checkpoints written in {:.3f} s", out.string(), checkpoints.saves(), checkpoints.seconds_saving());
+  checkpoints.discard();           // complete: nothing to resume
+  remove_stale_partials(out);      // temporary files of a killed run this one did not continue
+  return report(a, summary);
 }
 
 }  // namespace
@@ -137,31 +231,16 @@ Command add_dem(CLI::App& app) {
   flag(trapped, *tp, "--seed", "dem.trapped_particles.seed", "seed of the amorphous sample");
 
   return [dem, patch, p, junction, j, rough, rs, trapped, tp]() {
-    std::filesystem::path out;
-    // The wear studies of ch. 7: the study, then the force-history plot.
-    using Study = nlohmann::json (*)(const Config&, const std::filesystem::path&);
-    auto wear_study = [&](const DemArgs& a, const std::string& default_out, const std::string& name, Study run) {
-      const Config cfg = build_config(a, default_out, out);
-      nlohmann::json summary = run(cfg, out);
-      if (auto png = coupling::plot_junction_force(out / (name + "_history.csv"), out / (name + "_force.png"),
-                                                   summary["verdict"].get<std::string>()))
-        summary["files"].push_back(png->string());
-      return finish(a, summary, cfg, out, name);
-    };
-    if (dem->got_subcommand(rough)) return wear_study(*rs, "out/dem-rough-shear", "rough_shear", dem::run_rough_shear_study);
+    if (dem->got_subcommand(rough))
+      return run_study(*rs, "rough-shear", "out/dem-rough-shear", "rough_shear", dem::run_rough_shear_study, true);
     if (dem->got_subcommand(trapped))
-      return wear_study(*tp, "out/dem-trapped-particles", "trapped_particles", dem::run_trapped_particles_study);
+      return run_study(*tp, "trapped-particles", "out/dem-trapped-particles", "trapped_particles",
+                       dem::run_trapped_particles_study, true);
     if (dem->got_subcommand(patch)) {
       if (p->no_strengths) p->overrides.emplace_back("dem.patch_test.strengths=false");
-      const Config cfg = build_config(*p, "out/dem-patch-test", out);
-      return finish(*p, dem::run_patch_test_study(cfg, out), cfg, out, "patch_test");
+      return run_study(*p, "patch-test", "out/dem-patch-test", "patch_test", dem::run_patch_test_study, false);
     }
-    const Config cfg = build_config(*j, "out/dem-junction", out);
-    auto summary = dem::run_junction_study(cfg, out);
-    if (auto png = coupling::plot_junction_force(out / "junction_history.csv", out / "junction_force.png",
-                                                 summary["verdict"].get<std::string>()))
-      summary["files"].push_back(png->string());
-    return finish(*j, summary, cfg, out, "junction");
+    return run_study(*j, "junction", "out/dem-junction", "junction", dem::run_junction_study, true);
   };
 }
 

@@ -60,10 +60,10 @@ bool wait_until(F ready, pid_t pid, int& status) {
   return false;
 }
 
-bool has_partial_file(const fs::path& dir, const std::string& prefix) {
+bool has_partial_file(const fs::path& dir, const std::string& prefix, std::uintmax_t at_least = 0) {
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().filename().string().rfind(prefix, 0) == 0) return true;
+    if (it->path().filename().string().rfind(prefix, 0) == 0 && fs::file_size(it->path(), ec) >= at_least) return true;
   return false;
 }
 
@@ -201,22 +201,107 @@ TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
   fs::remove_all(dir);
 }
 
-// A DEM study (`wearscale dem junction`) stops on SIGINT within a chunk of
-// steps, with status 130, and leaves no unfinished dump behind.
-TEST(Resume, SigintStopsADemStudyCleanly) {
-  const auto dir = work / "dem-sigint";
-  const std::string junction = std::string(WEARSCALE_SOURCE_DIR) + "/cases/dem_sheared_junction.toml";
-  const pid_t pid = spawn_cli("dem junction '" + junction + "' --out stopped", dir);
+// The DEM studies a user runs on their own, reduced to a second or two:
+// `wearscale dem STUDY ARGS` writes NAME.json, and DUMP if not empty.
+struct DemStudy {
+  std::string label, args, name, dump;
+  friend void PrintTo(const DemStudy& s, std::ostream* os) { *os << s.label; }
+};
+const std::vector<DemStudy> dem_studies = {
+    {"junction", "dem junction --material SiO2 --D 20e-9 --d0 '6 nm' --slide '6 nm' --velocity 10", "junction",
+     "junction.dump"},
+    {"rough_shear",
+     "dem rough-shear --material SiO2 --d0 '6 nm' --length '60 nm' --velocity 50 --slide '12 nm' --roughness 0.04 "
+     "--set dem.rough_shear.height='60 nm'",
+     "rough_shear", "rough_shear.dump"},
+    {"trapped_particles",
+     "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 '6 nm' --velocity 100 --slide '12 nm'",
+     "trapped_particles", "trapped_particles.dump"},
+    {"patch_test", "dem patch-test --lattice hcp --nu 0.1 --length 8 --set dem.patch_test.strain_rate=1e-4",
+     "patch_test", ""},
+};
+
+// The output of two runs of a DEM study is the same: results, history and
+// snapshots bit for bit, and no checkpoint or temporary file is left.
+void expect_same_dem_outputs(const DemStudy& study, const fs::path& a, const fs::path& b) {
+  EXPECT_EQ(results_of(a / (study.name + ".json")), results_of(b / (study.name + ".json")));
+  if (!study.dump.empty()) {
+    EXPECT_EQ(slurp(a / (study.name + "_history.csv")), slurp(b / (study.name + "_history.csv")));
+    const std::string dump = slurp(b / study.dump);
+    EXPECT_GT(dump.size(), 0u);
+    EXPECT_TRUE(slurp(a / study.dump) == dump) << "the snapshots differ";
+  }
+  EXPECT_FALSE(fs::exists(b / "checkpoint.h5")) << "a completed run keeps no checkpoint";
+  EXPECT_FALSE(has_partial_file(b, ".")) << "no temporary file is left";
+}
+
+class DemStudyResume : public ::testing::TestWithParam<DemStudy> {};
+
+// Killed with SIGKILL after its first checkpoint, the study resumes with
+// --resume to the outputs of an uninterrupted run (one thread).
+TEST_P(DemStudyResume, AKilledStudyResumesToTheOutputsOfAnUninterruptedRunBitForBit) {
+  const DemStudy& study = GetParam();
+  const auto dir = work / ("dem-kill-" + study.label);
+  const std::string args = "-j 1 " + study.args + " --set run.checkpoint_steps=200";
+  ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
+
+  const pid_t pid = spawn_cli(args + " --out part", dir);
   ASSERT_GT(pid, 0);
   int status = 0;
-  ASSERT_TRUE(wait_until([&] { return has_partial_file(dir / "stopped", ".junction.dump.partial-"); }, pid, status))
+  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
+      << "the run ended before its first checkpoint: " << slurp(dir / "cli.stderr");
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run had finished before it could be killed";
+
+  const auto r = run_cli(args + " --resume part", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("resumes at step"));
+  expect_same_dem_outputs(study, dir / "reference", dir / "part");
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryStudy, DemStudyResume, ::testing::ValuesIn(dem_studies),
+                         [](const ::testing::TestParamInfo<DemStudy>& p) { return p.param.label; });
+
+// A DEM study stops on SIGINT within a chunk of steps, with status 130, its
+// state saved and its snapshots kept for the resumed run, which then ends as
+// an uninterrupted one. Resuming it again reports it complete; resuming it
+// with other parameters is refused, naming the key.
+TEST(Resume, SigintStopsADemStudyCleanlyAndItResumes) {
+  const auto dir = work / "dem-sigint";
+  const DemStudy& study = dem_studies.front();
+  const std::string args = "-j 1 " + study.args + " --set dem.junction.sliding_distance='12 nm'";
+  ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
+  const pid_t pid = spawn_cli(args + " --out stopped", dir);
+  ASSERT_GT(pid, 0);
+  int status = 0;
+  // The first snapshot is written: the junction slides.
+  ASSERT_TRUE(wait_until([&] { return has_partial_file(dir / "stopped", ".junction.dump.partial-", 1); }, pid, status))
       << slurp(dir / "cli.stderr");
   ::kill(pid, SIGINT);
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must not kill the process outright";
   EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
-  EXPECT_THAT(slurp(dir / "cli.stderr"), HasSubstr("interrupted by SIGINT"));
-  EXPECT_FALSE(has_partial_file(dir / "stopped", ".")) << "the unfinished dump is removed";
+  const std::string err = slurp(dir / "cli.stderr");
+  EXPECT_THAT(err, HasSubstr("interrupted by SIGINT"));
+  EXPECT_THAT(err, HasSubstr("--resume stopped"));
+  const auto left = files_in(dir / "stopped");
+  ASSERT_EQ(left.size(), 2u) << "the checkpoint and the snapshots so far, nothing else";
+  EXPECT_EQ(left[1], "checkpoint.h5");
+  EXPECT_THAT(left[0], testing::StartsWith(".junction.dump.partial-"));
+
+  auto r = run_cli(args + " --resume stopped", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_dem_outputs(study, dir / "reference", dir / "stopped");
+
+  r = run_cli(args + " --resume stopped --json", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("already complete"));
+  EXPECT_EQ(nlohmann::json::parse(r.out)["results"], results_of(dir / "reference" / "junction.json"));
+  r = run_cli(args + " --set dem.junction.pressure=2e8 --resume stopped", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.junction.pressure"));
   fs::remove_all(dir);
 }
 
@@ -292,6 +377,23 @@ TEST(Resume, MistakesAreBadInput) {
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("checkpoint.h5: not an HDF5 file"));
   EXPECT_EQ(files_in(dir / "c"), std::vector<std::string>{"checkpoint.h5"});
+  // The same for a DEM study.
+  const std::string junction = dem_studies.front().args;
+  r = run_cli(junction + " --resume nowhere", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("--resume nowhere: no such folder"));
+  r = run_cli(junction + " --resume a --out b", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("name different folders"));
+  EXPECT_FALSE(fs::exists(dir / "b"));
+  r = run_cli(junction + " --resume c", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("checkpoint.h5: not an HDF5 file"));
+  EXPECT_EQ(files_in(dir / "c"), std::vector<std::string>{"checkpoint.h5"});
+  r = run_cli(junction + " --set run.checkpoint_steps=-5 --out d", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("run.checkpoint_steps"));
+  EXPECT_FALSE(fs::exists(dir / "d"));
   fs::remove_all(dir);
 }
 

@@ -85,15 +85,51 @@ std::vector<std::string> write_sliding_history(const std::vector<SlidingSample>&
 
 // Snapshots for OVITO every `every` steps (and the first and last), with
 // the worn flag as an extra column.
+// A study's hooks into the run's checkpoints (owner "dem/<study>"). With a
+// snapshot file, each checkpoint also records how far that file has got, and
+// a resumed study continues it.
+RunCheckpoints study_checkpoints(Checkpointer* checkpoints, const std::string& owner, DumpWriter* dump) {
+  RunCheckpoints hooks;
+  if (checkpoints == nullptr) return hooks;
+  hooks.from = checkpoints->restored(owner);
+  if (hooks.from != nullptr) {
+    log::info("{}: resumes at step {} from {}", owner, hooks.from->step, checkpoints->file().string());
+    if (dump != nullptr && hooks.from->has("dump.position")) {
+      const auto& at = tallies(*hooks.from, "dump.position", 2);
+      if (!dump->resume({hooks.from->text("dump.partial"), static_cast<std::uintmax_t>(at[0]),
+                         static_cast<std::size_t>(at[1])}))
+        log::warn("{}: the snapshots written before step {} are gone ({}); {} holds those from step {} on", owner,
+                  hooks.from->step, hooks.from->text("dump.partial"), dump->final_path().string(), hooks.from->step);
+    }
+  }
+  hooks.at_sample = [checkpoints, owner, dump](long step, const std::function<CheckpointState()>& make) {
+    checkpoints->at_step(owner, step, [&] {
+      CheckpointState st = make();
+      if (dump != nullptr) {
+        const auto at = dump->position();
+        st.put_text("dump.partial", at.partial);
+        st.put("dump.position", std::vector<double>{static_cast<double>(at.bytes), static_cast<double>(at.frames)});
+      }
+      return st;
+    });
+  };
+  return hooks;
+}
+
+// A progress bar that starts at the resumed step.
+std::unique_ptr<Progress> progress_bar(const std::string& name, long planned, const RunCheckpoints& hooks) {
+  auto bar = std::make_unique<Progress>(name, static_cast<double>(planned));
+  if (hooks.from != nullptr) bar->start_at(static_cast<double>(hooks.from->step));
+  return bar;
+}
+
 struct SlidingDumps {
   DumpWriter writer;
   long every;
   std::unique_ptr<Progress> bar;
-  void operator()(const SlidingCell& cell, long step, long planned, const std::string& name) {
-    if (!bar) {
-      bar = std::make_unique<Progress>(name, static_cast<double>(planned));
-      write(cell);
-    }
+  void operator()(const SlidingCell& cell, long step, long planned, const std::string& name, const RunCheckpoints& hooks) {
+    if (!bar) bar = progress_bar(name, planned, hooks);
+    if (writer.frames() == 0) write(cell);
     bar->update(static_cast<double>(step));
     if (every > 0 && (step % every < cell_record_every || step == planned)) write(cell);
   }
@@ -142,7 +178,7 @@ CohesiveMaterial dem_material(const Config& root) {
   return m;
 }
 
-nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out) {
+nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
   PatchTestSpec spec;
   spec.material = dem_material(root);
   const Config c = root.section("dem.patch_test");
@@ -165,13 +201,17 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
             spec.material.name, spec.d0, minimum_diameter(spec.material), d_c, spec.material.poisson);
   std::unique_ptr<Progress> bar;
   std::string phase;
-  const auto result = run_patch_test(spec, [&](const std::string& name, long done, long planned) {
-    if (name != phase) {
-      bar = std::make_unique<Progress>("patch test: " + name, static_cast<double>(planned));
-      phase = name;
-    }
-    bar->update(static_cast<double>(done));
-  });
+  const auto hooks = study_checkpoints(checkpoints, "dem/patch_test", nullptr);
+  const auto result = run_patch_test(
+      spec,
+      [&](const std::string& name, long done, long planned) {
+        if (name != phase) {
+          bar = std::make_unique<Progress>("patch test: " + name, static_cast<double>(planned));
+          phase = name;
+        }
+        bar->update(static_cast<double>(done));
+      },
+      hooks);
   bar.reset();
 
   const std::string stress_unit = unitless ? "1" : "Pa";
@@ -203,7 +243,7 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
   return {{"results", results}, {"files", {csv.string()}}};
 }
 
-nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out) {
+nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
   ShearedJunctionSpec spec;
   spec.material = dem_material(root);
   const Config c = root.section("dem.junction");
@@ -228,14 +268,16 @@ nlohmann::json run_junction_study(const Config& root, const std::filesystem::pat
   std::filesystem::create_directories(out);
   DumpWriter dump(out / "junction.dump");
   std::unique_ptr<Progress> bar;
-  const auto r = run_sheared_junction(spec, [&](const Simulation& sim, const JunctionSample&, long step, long planned) {
-    if (!bar) {
-      bar = std::make_unique<Progress>("sheared junction", static_cast<double>(planned));
-      dump.write(sim);
-    }
-    bar->update(static_cast<double>(step));
-    if (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)) dump.write(sim);
-  });
+  const auto hooks = study_checkpoints(checkpoints, "dem/junction", &dump);
+  const auto r = run_sheared_junction(
+      spec,
+      [&](const Simulation& sim, const JunctionSample&, long step, long planned) {
+        if (!bar) bar = progress_bar("sheared junction", planned, hooks);
+        if (dump.frames() == 0) dump.write(sim);
+        bar->update(static_cast<double>(step));
+        if (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)) dump.write(sim);
+      },
+      hooks);
   bar.reset();
   dump.commit();
 
@@ -276,7 +318,7 @@ nlohmann::json run_junction_study(const Config& root, const std::filesystem::pat
           {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
 }
 
-nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::path& out) {
+nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
   RoughShearSpec spec;
   const Config c = root.section("dem.rough_shear");
   read_sliding_cell(root, c, spec.cell);
@@ -293,11 +335,15 @@ nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::
             spec.cell.material.name, spec.cell.box.x, spec.roughness, d0, spec.cell.velocity, spec.cell.pressure);
   std::filesystem::create_directories(out);
   SlidingDumps dumps{DumpWriter(out / "rough_shear.dump"), dump_every, nullptr, spec.cell.record_every};
+  const auto hooks = study_checkpoints(checkpoints, "dem/rough_shear", &dumps.writer);
   RoughShearResult r;
   try {
-    r = run_rough_shear(spec, [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
-      dumps(cell, step, planned, "sheared rough surfaces");
-    });
+    r = run_rough_shear(
+        spec,
+        [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
+          dumps(cell, step, planned, "sheared rough surfaces", hooks);
+        },
+        hooks);
   } catch (const InputError& e) {  // the profiles need more height than given: name the key
     if (std::string_view(e.what()).find("cell height") == std::string_view::npos) throw;
     throw c.error("height", e.what());
@@ -343,7 +389,8 @@ nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::
   return {{"results", results}, {"verdict", r.regime}, {"files", files}};
 }
 
-nlohmann::json run_trapped_particles_study(const Config& root, const std::filesystem::path& out) {
+nlohmann::json run_trapped_particles_study(const Config& root, const std::filesystem::path& out,
+                                           Checkpointer* checkpoints) {
   TrappedParticlesSpec spec;
   const Config c = root.section("dem.trapped_particles");
   read_sliding_cell(root, c, spec.cell);
@@ -364,9 +411,13 @@ nlohmann::json run_trapped_particles_study(const Config& root, const std::filesy
             spec.cell.material.name, spec.count, spec.diameter, spec.cell.box.x, d0, spec.cell.velocity, spec.cell.pressure);
   std::filesystem::create_directories(out);
   SlidingDumps dumps{DumpWriter(out / "trapped_particles.dump"), dump_every, nullptr, spec.cell.record_every};
-  const auto r = run_trapped_particles(spec, [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
-    dumps(cell, step, planned, "trapped particles");
-  });
+  const auto hooks = study_checkpoints(checkpoints, "dem/trapped_particles", &dumps.writer);
+  const auto r = run_trapped_particles(
+      spec,
+      [&](const SlidingCell& cell, const SlidingSample&, long step, long planned) {
+        dumps(cell, step, planned, "trapped particles", hooks);
+      },
+      hooks);
   dumps.bar.reset();
   dumps.writer.commit();
 
