@@ -170,4 +170,18 @@ AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const Am
   return out;
 }
 
+AmorphousSample make_carving_sample(const CohesiveMaterial& material, double d0, double largest, const Vec3& box_size,
+                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps) {
+  AmorphousSpec sample;
+  sample.sizes.mode = d0;
+  sample.sizes.smallest = 0.75 * d0;
+  sample.sizes.largest = largest > 0.0 ? largest : 1.25 * d0;
+  sample.box_size = box_size;
+  sample.seed = seed;
+  RelaxationSettings relax;
+  relax.stress_tolerance = stress_tolerance;
+  relax.max_cohesion_steps = max_cohesion_steps;
+  return make_amorphous_sample(material, sample, relax);
+}
+
 }  // namespace wearscale::dem

@@ -52,16 +52,8 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
   out.d_star = critical_junction_size(m);
 
   // The relaxed amorphous box (§6.2.2), then carved (§6.3).
-  AmorphousSpec sample;
-  sample.sizes.mode = spec.d0;
-  sample.sizes.smallest = 0.75 * spec.d0;
-  sample.sizes.largest = spec.largest > 0.0 ? spec.largest : 1.25 * spec.d0;
-  sample.box_size = spec.box;
-  sample.seed = spec.seed;
-  RelaxationSettings relax;
-  relax.stress_tolerance = spec.relax_tolerance;
-  relax.max_cohesion_steps = spec.max_relax_steps;
-  auto made = make_amorphous_sample(m, sample, relax);
+  auto made = make_carving_sample(m, spec.d0, spec.largest, spec.box, spec.seed, spec.relax_tolerance,
+                                  spec.max_relax_steps);
   out.relaxation_steps = made.relaxation.repulsion_steps + made.relaxation.cohesion_steps;
   Particles particles = std::move(made.particles);
   Box box = made.box;

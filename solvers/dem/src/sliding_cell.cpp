@@ -37,16 +37,8 @@ void check(const SlidingCellSpec& s, const char* study) {
 }
 
 AmorphousSample make_cell_sample(const SlidingCellSpec& spec) {
-  AmorphousSpec sample;
-  sample.sizes.mode = spec.d0;
-  sample.sizes.smallest = 0.75 * spec.d0;
-  sample.sizes.largest = spec.largest > 0.0 ? spec.largest : 1.25 * spec.d0;
-  sample.box_size = spec.box;
-  sample.seed = spec.seed;
-  RelaxationSettings relax;
-  relax.stress_tolerance = spec.relax_tolerance;
-  relax.max_cohesion_steps = spec.max_relax_steps;
-  return make_amorphous_sample(spec.material, sample, relax);
+  return make_carving_sample(spec.material, spec.d0, spec.largest, spec.box, spec.seed, spec.relax_tolerance,
+                             spec.max_relax_steps);
 }
 
 SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& spec) : spec_(spec) {

@@ -77,4 +77,10 @@ struct AmorphousSample {
 AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const AmorphousSpec& spec,
                                       const RelaxationSettings& settings = {});
 
+/// The relaxed box the carved studies start from (§6.3, §7.2, §7.3): sizes
+/// from d_s = 0.75 d0 to d_l (0: 1.25 d0) about the mode d0, phase 2 of the
+/// relaxation ending at `stress_tolerance` (in E) or after `max_cohesion_steps`.
+AmorphousSample make_carving_sample(const CohesiveMaterial& material, double d0, double largest, const Vec3& box_size,
+                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps);
+
 }  // namespace wearscale::dem
