@@ -60,6 +60,31 @@ bool wait_until(F ready, pid_t pid, int& status) {
   return false;
 }
 
+/// Starts the program in `cwd` with `args` and sends it `signal` once
+/// `ready()` holds; `status` is its wait status. Fails if it could not be
+/// started or ended before it was ready (with its stderr).
+template <class F>
+::testing::AssertionResult stop_when(const std::string& args, const fs::path& cwd, int signal, F ready, int& status) {
+  const pid_t pid = spawn_cli(args, cwd);
+  if (pid <= 0) return ::testing::AssertionFailure() << "cannot start the program";
+  if (!wait_until(ready, pid, status))
+    return ::testing::AssertionFailure() << "the run ended before it was ready to be stopped: "
+                                         << slurp(cwd / "cli.stderr");
+  ::kill(pid, signal);
+  ::waitpid(pid, &status, 0);
+  return ::testing::AssertionSuccess();
+}
+
+/// stop_when with SIGKILL, which must have ended the program.
+template <class F>
+::testing::AssertionResult killed_when(const std::string& args, const fs::path& cwd, F ready) {
+  int status = 0;
+  auto stopped = stop_when(args, cwd, SIGKILL, ready, status);
+  if (!stopped) return stopped;
+  if (!WIFSIGNALED(status)) return ::testing::AssertionFailure() << "the run had finished before it could be killed";
+  return ::testing::AssertionSuccess();
+}
+
 bool has_partial_file(const fs::path& dir, const std::string& prefix, std::uintmax_t at_least = 0) {
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
@@ -107,14 +132,7 @@ TEST(Resume, AKilledRunResumesToTheResultsOfAnUninterruptedRunBitForBit) {
   ASSERT_EQ(run_cli("run '" + pin_on_disc + "'" + reduced + fields + " --out reference", dir).status, 0);
 
   const std::string args = "run '" + pin_on_disc + "'" + reduced + fields + " --set run.checkpoint_steps=25";
-  const pid_t pid = spawn_cli(args + " --out part", dir);
-  ASSERT_GT(pid, 0);
-  int status = 0;
-  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
-      << "the run ended before its first checkpoint: " << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run had finished before it could be killed";
+  ASSERT_TRUE(killed_when(args + " --out part", dir, [&] { return fs::exists(dir / "part" / "checkpoint.h5"); }));
   // A killed run leaves complete files or none: only the checkpoint (and maybe a temporary file).
   for (const auto& f : files_in(dir / "part"))
     EXPECT_TRUE(f == "checkpoint.h5" || f.find(".partial-") != std::string::npos) << f;
@@ -160,14 +178,7 @@ TEST(Resume, AKilledDemJunctionRunResumesFromItsDemStateBitForBit) {
                            " --set scale.nano.cache=false --set run.checkpoint_steps=100";
   ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
 
-  const pid_t pid = spawn_cli(args + " --out part", dir);
-  ASSERT_GT(pid, 0);
-  int status = 0;
-  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
-      << "the run ended before its first checkpoint: " << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run had finished before it could be killed";
+  ASSERT_TRUE(killed_when(args + " --out part", dir, [&] { return fs::exists(dir / "part" / "checkpoint.h5"); }));
 
   const auto r = run_cli(args + " --resume part", dir);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -181,13 +192,10 @@ TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
   const auto dir = work / "sigint";
   ASSERT_EQ(run_cli("run '" + pin_on_disc + "'" + reduced + " --out reference", dir).status, 0);
   const std::string args = "run '" + pin_on_disc + "'" + reduced;  // default policy: saves on SIGINT
-  const pid_t pid = spawn_cli(args + " --out stopped", dir);
-  ASSERT_GT(pid, 0);
   int status = 0;
   // run.h5 is being written: the signal handlers are in place.
-  ASSERT_TRUE(wait_until([&] { return has_partial_file(dir / "stopped", ".run.h5.partial-"); }, pid, status));
-  ::kill(pid, SIGINT);
-  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(stop_when(args + " --out stopped", dir, SIGINT,
+                        [&] { return has_partial_file(dir / "stopped", ".run.h5.partial-"); }, status));
   ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must not kill the process outright";
   EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
   const std::string err = slurp(dir / "cli.stderr");
@@ -245,14 +253,7 @@ TEST_P(DemStudyResume, AKilledStudyResumesToTheOutputsOfAnUninterruptedRunBitFor
   const std::string args = "-j 1 " + study.args + " --set run.checkpoint_steps=200";
   ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
 
-  const pid_t pid = spawn_cli(args + " --out part", dir);
-  ASSERT_GT(pid, 0);
-  int status = 0;
-  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
-      << "the run ended before its first checkpoint: " << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run had finished before it could be killed";
+  ASSERT_TRUE(killed_when(args + " --out part", dir, [&] { return fs::exists(dir / "part" / "checkpoint.h5"); }));
 
   const auto r = run_cli(args + " --resume part", dir);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -273,14 +274,10 @@ TEST(Resume, SigintStopsADemStudyCleanlyAndItResumes) {
   const DemStudy& study = dem_studies.front();
   const std::string args = "-j 1 " + study.args + " --set dem.junction.sliding_distance='12 nm'";
   ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
-  const pid_t pid = spawn_cli(args + " --out stopped", dir);
-  ASSERT_GT(pid, 0);
   int status = 0;
   // The first snapshot is written: the junction slides.
-  ASSERT_TRUE(wait_until([&] { return has_partial_file(dir / "stopped", ".junction.dump.partial-", 1); }, pid, status))
-      << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGINT);
-  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(stop_when(args + " --out stopped", dir, SIGINT,
+                        [&] { return has_partial_file(dir / "stopped", ".junction.dump.partial-", 1); }, status));
   ASSERT_TRUE(WIFEXITED(status)) << "SIGINT must not kill the process outright";
   EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
   const std::string err = slurp(dir / "cli.stderr");
@@ -314,15 +311,8 @@ TEST(Resume, AKilledSweepRerunsOnlyItsUnfinishedRuns) {
                            "--set run.fft_planning=estimate --set run.checkpoint_steps=25";
   ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
 
-  const pid_t pid = spawn_cli(args + " --out part", dir);
-  ASSERT_GT(pid, 0);
-  int status = 0;
   const auto second = dir / "part" / "thickness=1e-06";
-  ASSERT_TRUE(wait_until([&] { return fs::exists(second / "checkpoint.h5"); }, pid, status))
-      << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_TRUE(killed_when(args + " --out part", dir, [&] { return fs::exists(second / "checkpoint.h5"); }));
   const auto first = dir / "part" / "thickness=0" / "run.h5";
   ASSERT_TRUE(fs::exists(first)) << "the sweep runs its values in order, one at a time";
   const auto inode = inode_of(first);
@@ -347,14 +337,7 @@ TEST(Resume, AKilledAdaptiveRunResumesBitForBitToo) {
                            "--set scale.macro.integrator=adaptive --set run.fft_planning=estimate "
                            "--set run.checkpoint_steps=1";  // at every restart of the integrator
   ASSERT_EQ(run_cli(args + " --out reference", dir).status, 0);
-  const pid_t pid = spawn_cli(args + " --out part", dir);
-  ASSERT_GT(pid, 0);
-  int status = 0;
-  ASSERT_TRUE(wait_until([&] { return fs::exists(dir / "part" / "checkpoint.h5"); }, pid, status))
-      << slurp(dir / "cli.stderr");
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_TRUE(killed_when(args + " --out part", dir, [&] { return fs::exists(dir / "part" / "checkpoint.h5"); }));
   const auto r = run_cli(args + " --resume part", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   expect_same_series(dir / "reference" / "run.h5", dir / "part" / "run.h5");
