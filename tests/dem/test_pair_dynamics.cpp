@@ -5,6 +5,8 @@
 #include <numbers>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
@@ -132,6 +134,9 @@ TEST(PairDynamics, UnstableTimeStepIsReportedWithTheParticleAndAFix) {
     EXPECT_EQ(e.solver(), "dem");
     EXPECT_NE(what.find("particle"), std::string::npos) << what;
     EXPECT_NE(what.find("Δt_c"), std::string::npos) << what;
+    // The fix names a stable step: 0.1 Δt_c of this pair (6.6).
+    EXPECT_NEAR(sim.stable_time_step(), 0.1 * critical_step(sim), 1e-12 * critical_step(sim));
+    EXPECT_NE(what.find(fmt::format("{:.3g} here", 0.1 * critical_step(sim))), std::string::npos) << what;
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -384,8 +385,8 @@ void Simulation::integrate_first_half() {
     throw NumericalError(
         "dem", step_ + 1, fmt::format("velocity of particle {}", p.id[worst]),
         fmt::format("it moved {:.3g} in one step of {:.3g}, more than the neighbour skin {:.3g}; the "
-                    "time step is unstable (keep it a fraction of Δt_c = √(2m/k_N), e.g. 0.1 Δt_c)",
-                    std::sqrt(max_v2) * dt_, dt_, settings_.skin));
+                    "time step is unstable (keep it a fraction of Δt_c = √(2m/k_N): 0.1 Δt_c = {:.3g} here)",
+                    std::sqrt(max_v2) * dt_, dt_, settings_.skin, stable_time_step()));
   }
 }
 
@@ -411,7 +412,9 @@ void Simulation::integrate_second_half() {
         break;
       }
     throw NumericalError("dem", step_ + 1, fmt::format("velocity of particle {}", p.id[bad]),
-                         "became NaN or infinite; the time step is likely too large");
+                         fmt::format("became NaN or infinite; the time step {:.3g} is likely too large (0.1 Δt_c "
+                                     "= √(2m/k_N)/10 = {:.3g} here)",
+                                     dt_, stable_time_step()));
   }
 }
 
@@ -437,6 +440,14 @@ void Simulation::run(long steps, const std::function<void(long)>& observe) {
     step();
     if (observe) observe(step_);
   }
+}
+
+double Simulation::stable_time_step() const {
+  if (const auto* cohesive = std::get_if<CohesiveLaw>(&law_)) return 0.1 * cohesive->critical_time_step(particles_);
+  double lightest = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    if (particles_.wall[i] == no_wall) lightest = std::min(lightest, particles_.mass[i]);
+  return 0.1 * critical_time_step(lightest, std::get<HookeLaw>(law_).k_n);  // (6.6)
 }
 
 double Simulation::kinetic_energy() const {

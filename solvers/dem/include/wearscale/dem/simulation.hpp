@@ -83,6 +83,9 @@ class Simulation {
 
   /// Translational + rotational kinetic energy of the mobile particles.
   double kinetic_energy() const;
+  /// A stable time step for this system: 0.1 Δt_c (6.6) of its lightest
+  /// mobile particle against its stiffest contact (what a blow-up suggests).
+  double stable_time_step() const;
   /// Energy stored in the pair springs (normal + tangential).
   double potential_energy() const;
   /// Σ m v over all particles (walls included).
