@@ -1,26 +1,32 @@
-// wearscale wearmap analytic2d [--dr-over-dstar MIN:MAX] [--da-over-dstar MIN:MAX] [--n N] [--out DIR] [--json]
-// wearscale wearmap analytic3d [--d-over-l MIN:MAX] [--dstar-over-l MIN:MAX] [--n N]
-//                              [--interaction max|min | --nu NU --theta RAD] [--out DIR] [--json]
+// wearscale wearmap analytic2d [CASE.toml] [--dr-over-dstar MIN:MAX] [--da-over-dstar MIN:MAX] [--n N]
+//                              [--set KEY=VALUE]... [--out DIR] [--json]
+// wearscale wearmap analytic3d [CASE.toml] [--d-over-l MIN:MAX] [--dstar-over-l MIN:MAX] [--n N]
+//                              [--interaction max|min | --nu NU --theta RAD] [--set KEY=VALUE]... [--out DIR] [--json]
 // The analytic wear maps of thesis ch. 3 (Fig. 3.7) and ch. 4 (Fig. 4.6):
-// DIR/wearmap_<kind>.h5, .csv and .png (gnuplot, with the analytic lines).
-#include <charconv>
+// DIR/wearmap_<kind>.h5 (+ .xdmf sidecar for ParaView), .csv, .png (gnuplot,
+// with the analytic lines) and _summary.json. Every flag is a key of the case
+// table [wearmap.analytic2d] / [wearmap.analytic3d] (see wearmap_case.hpp).
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "wearmap_case.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/xdmf.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
@@ -33,40 +39,12 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double pi = std::numbers::pi;
 
-struct MapArgs {
-  std::string x_range, y_range, out = "out/wearmap", interaction;
-  std::size_t n = 0;
-  double nu = 0.5, theta = 0.0;
-  CLI::Option *nu_opt = nullptr, *theta_opt = nullptr;
-  bool json = false;
-};
-
-double parse_number(const std::string& flag, const std::string& text, const std::string& whole,
-                    const std::string& allowed) {
-  double v = 0.0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(v))
-    throw InputError(fmt::format("{} = '{}' is not a range; allowed: MIN:MAX with {}", flag, whole, allowed));
-  return v;
-}
-
-/// "MIN:MAX" into `axis` (with `n` points if given); InputError naming the flag
-/// unless lo ≤ MIN < MAX ≤ hi.
-void parse_range(wear::MapAxis& axis, const std::string& flag, const std::string& text, std::size_t n, double lo,
-                 double hi) {
-  const std::string allowed = std::isfinite(hi) ? fmt::format("{:g} ≤ MIN < MAX ≤ {:g}", lo, hi)
-                                                : fmt::format("{:g} ≤ MIN < MAX", lo);
-  if (n != 0) axis.n = n;
-  if (text.empty()) return;
-  const auto colon = text.find(':');
-  if (colon == std::string::npos)
-    throw InputError(fmt::format("{} = '{}' is not a range; allowed: MIN:MAX with {}", flag, text, allowed));
-  const double min = parse_number(flag, text.substr(0, colon), text, allowed);
-  const double max = parse_number(flag, text.substr(colon + 1), text, allowed);
-  if (!(min >= lo && max <= hi && min < max))
-    throw InputError(fmt::format("{} = '{}' is not allowed; allowed: {} ({})", flag, text, allowed, axis.label));
-  axis.min = min;
-  axis.max = max;
+// `axis` with the range of the case key `key` (when set) and `n` points.
+wear::MapAxis read_axis(const Config& t, const std::string& key, wear::MapAxis axis, std::size_t n,
+                        const Range& element) {
+  const auto [min, max] = read_range(t, key, {axis.min, axis.max}, element, axis.label);
+  axis.min = min, axis.max = max, axis.n = n;
+  return axis;
 }
 
 // ------------------------------------------------------------------ plot ---
@@ -137,32 +115,31 @@ nlohmann::json result(double value, const char* unit, const std::string& descrip
   return {{"value", value}, {"unit", unit}, {"description", description}};
 }
 
-int finish(const MapArgs& a, const wear::WearMap& map, nlohmann::json results, nlohmann::json parameters,
+// Writes the map (HDF5 with its XDMF sidecar, CSV, PNG) and the summary into the output folder.
+int finish(const WearmapCase& c, Config& cfg, const fs::path& out, const wear::WearMap& map, nlohmann::json results,
            const std::function<std::optional<fs::path>(const fs::path&, const fs::path&)>& plot) {
-  const fs::path out(a.out);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec || !fs::is_directory(out))
-    throw InputError(fmt::format("--out = '{}' cannot be used as an output folder ({}); allowed: a folder that can be "
-                                 "created or written", a.out, ec ? ec.message() : "not a folder"));
-  const fs::path h5 = out / fmt::format("wearmap_{}.h5", map.kind), csv = out / fmt::format("wearmap_{}.csv", map.kind),
-                 png = out / fmt::format("wearmap_{}.png", map.kind);
-  wear::write_wear_map_h5(h5, map);
+  create_output_folder(c, out);
+  const std::string stem = fmt::format("wearmap_{}", map.kind);
+  const fs::path h5 = out / (stem + ".h5"), xmf = out / (stem + ".xdmf"), csv = out / (stem + ".csv"),
+                 png = out / (stem + ".png");
+  wear::write_wear_map_h5(h5, map, cfg.to_toml());
+  // ParaView: the region codes and every R layer on the map grid (x slowest, as stored).
+  std::vector<XdmfField> fields = {{"/region", "region"}};
+  for (const auto& l : map.layers) fields.push_back({"/ratio/" + l.name, l.name});
+  write_xdmf(xmf, h5, Grid2D(map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min), fields);
   wear::write_wear_map_csv(csv, map);
-  nlohmann::json files = {h5.string(), csv.string()};
+  nlohmann::json files = {h5.string(), xmf.string(), csv.string()};
   if (const auto p = plot(csv, png)) files.push_back(p->string());
 
   const double total = static_cast<double>(map.region.size());
   for (const auto& [code, name] : map.region_names)
     results["fraction_" + name] = result(static_cast<double>(map.count(code)) / total, "",
                                          fmt::format("share of the map in region {} ({})", code, name));
-  parameters[map.x.name] = {{"min", map.x.min}, {"max", map.x.max}, {"n", map.x.n}};
-  parameters[map.y.name] = {{"min", map.y.min}, {"max", map.y.max}, {"n", map.y.n}};
-  if (a.json) {
-    std::cout << nlohmann::json{{"kind", map.kind}, {"results", results}, {"parameters", parameters}, {"files", files},
-                                {"output_dir", out.string()}}
-                     .dump(2)
-              << '\n';
+  const nlohmann::json summary = {{"kind", map.kind}, {"results", results}, {"parameters", cfg.to_json()},
+                                  {"files", files}, {"output_dir", out.string()}};
+  write_file_atomically(out / (stem + "_summary.json"), summary.dump(2) + "\n");
+  if (c.json) {
+    std::cout << summary.dump(2) << '\n';
     return 0;
   }
   print_results(results);
@@ -170,47 +147,71 @@ int finish(const MapArgs& a, const wear::WearMap& map, nlohmann::json results, n
   return 0;
 }
 
-int run_analytic2d(const MapArgs& a) {
-  auto x = wear::default_real_size_axis(), y = wear::default_apparent_size_axis();
-  const double inf = std::numeric_limits<double>::infinity();
-  parse_range(x, "--dr-over-dstar", a.x_range, a.n, 0.0, inf);
-  parse_range(y, "--da-over-dstar", a.y_range, a.n, 0.0, inf);
+// Fig. 3.7 over [wearmap.analytic2d]: dr_over_dstar, da_over_dstar = [MIN, MAX], n.
+int run_analytic2d(const WearmapCase& c) {
+  Config cfg = build_case(c);
+  const std::string k = "wearmap.analytic2d.";
+  const auto [x, y, out] = naming_flags(c, [&]() {
+    const long points = long(wear::default_real_size_axis().n);
+    const auto n = static_cast<std::size_t>(cfg.integer_or(k + "n", points, Range::closed(2, 4096)));
+    auto dr = read_axis(cfg, k + "dr_over_dstar", wear::default_real_size_axis(), n, Range::non_negative());
+    auto da = read_axis(cfg, k + "da_over_dstar", wear::default_apparent_size_axis(), n, Range::non_negative());
+    fs::path folder = output_folder(c, cfg, "out/wearmap");
+    cfg.reject_unknown_keys();
+    return std::tuple{dr, da, folder};
+  });
+  record(cfg, k + "n", fmt::format("{}", x.n));
+  record(cfg, k + "dr_over_dstar", toml_range({x.min, x.max}));
+  record(cfg, k + "da_over_dstar", toml_range({y.min, y.max}));
   const auto map = wear::analytic_map_2d(x, y);
-  return finish(a, map, nlohmann::json::object(), nlohmann::json::object(),
+  return finish(c, cfg, out, map, nlohmann::json::object(),
                 [&](const fs::path& csv, const fs::path& png) { return plot_2d(map, csv, png); });
 }
 
-int run_analytic3d(const MapArgs& a) {
-  auto x = wear::default_d_over_l_axis(), y = wear::default_dstar_over_l_axis();
-  parse_range(x, "--d-over-l", a.x_range, a.n, 0.0, 1.0);
-  parse_range(y, "--dstar-over-l", a.y_range, a.n, 0.0, std::numeric_limits<double>::infinity());
-  double nu = a.nu, theta = a.theta;
-  if (!a.interaction.empty()) {  // Fig. 4.6: ν = ½ with θ = 0 (most) or π/2 (least)
-    nu = 0.5;
-    theta = a.interaction == "max" ? 0.0 : pi / 2;
+// Fig. 4.6 over [wearmap.analytic3d]: d_over_l, dstar_over_l = [MIN, MAX], n, and interaction = "max" | "min"
+// or nu, theta.
+int run_analytic3d(const WearmapCase& c) {
+  Config cfg = build_case(c);
+  const std::string k = "wearmap.analytic3d.";
+  const auto [x, y, nu, theta, out] = naming_flags(c, [&]() {
+    const long points = long(wear::default_d_over_l_axis().n);
+    const auto n = static_cast<std::size_t>(cfg.integer_or(k + "n", points, Range::closed(2, 4096)));
+    auto d = read_axis(cfg, k + "d_over_l", wear::default_d_over_l_axis(), n, Range::closed(0.0, 1.0));
+    auto dstar = read_axis(cfg, k + "dstar_over_l", wear::default_dstar_over_l_axis(), n, Range::non_negative());
+    double poisson = cfg.number_or(k + "nu", 0.5, Range::open_closed(-1.0, 0.5));
+    double angle = cfg.number_or(k + "theta", 0.0, Range::any());
+    cfg.mark_used(k + "interaction");
+    if (cfg.has(k + "interaction")) {  // Fig. 4.6: ν = ½ with θ = 0 (most) or π/2 (least)
+      const std::string i = cfg.choice(k + "interaction", {"max", "min"});
+      for (const char* fixed : {"nu", "theta"})
+        if (cfg.has(k + fixed))
+          throw cfg.error(k + fixed, "cannot be set together with interaction (which fixes ν = 0.5 and θ)",
+                          "either interaction, or nu and theta");
+      poisson = 0.5;
+      angle = i == "max" ? 0.0 : pi / 2;
+    }
+    fs::path folder = output_folder(c, cfg, "out/wearmap");
+    cfg.reject_unknown_keys();
+    return std::tuple{d, dstar, poisson, angle, folder};
+  });
+  record(cfg, k + "n", fmt::format("{}", x.n));
+  record(cfg, k + "d_over_l", toml_range({x.min, x.max}));
+  record(cfg, k + "dstar_over_l", toml_range({y.min, y.max}));
+  if (!cfg.has(k + "interaction")) {
+    record(cfg, k + "nu", toml_number(nu));
+    record(cfg, k + "theta", toml_number(theta));
   }
-  if (!(nu > -1.0 && nu <= 0.5) || !std::isfinite(nu))
-    throw InputError(fmt::format("--nu = {} is not allowed; allowed: −1 < ν ≤ 0.5", nu));
-  if (!std::isfinite(theta))
-    throw InputError(fmt::format("--theta = {} is not allowed; allowed: a finite angle in radians", theta));
-  const double c = wear::interaction_constant(nu, theta);
-  const auto map = wear::analytic_map_3d(x, y, c);
+  const double ci = wear::interaction_constant(nu, theta);
+  const auto map = wear::analytic_map_3d(x, y, ci);
   nlohmann::json results;
-  results["C_inter"] = result(c, "", "interaction constant (1 − ν sin²θ)/(2 − ν) (4.49)");
+  results["C_inter"] = result(ci, "", "interaction constant (1 − ν sin²θ)/(2 − ν) (4.49)");
   // Adjacent contacts (d = l): the smallest d/d* of each case, 1/boundary(1).
   for (const auto d : wear::particle_cases)
     results[fmt::format("least_d_{}", wear::name(d))] =
-        result(1.0 / wear::boundary_dstar_over_l(d, 1.0, c), "",
+        result(1.0 / wear::boundary_dstar_over_l(d, 1.0, ci), "",
                fmt::format("least d/d* of two adjacent contacts (d = l) for {} (4.48)", wear::name(d)));
-  const nlohmann::json parameters = {{"nu", nu}, {"theta", theta}};
-  return finish(a, map, results, parameters,
-                [&](const fs::path& csv, const fs::path& png) { return plot_3d(map, c, csv, png); });
-}
-
-void common(CLI::App* cmd, MapArgs& a, std::size_t default_n) {
-  cmd->add_option("--n", a.n, fmt::format("Points along each axis (default {})", default_n))->check(CLI::Range(2, 4096));
-  cmd->add_option("--out", a.out, "Output folder")->capture_default_str();
-  cmd->add_flag("--json", a.json, "Print one JSON object with the results, parameters and files");
+  return finish(c, cfg, out, map, results,
+                [&](const fs::path& csv, const fs::path& png) { return plot_3d(map, ci, csv, png); });
 }
 
 }  // namespace
@@ -222,28 +223,32 @@ Command add_wearmap(CLI::App& app) {
   auto commands = std::make_shared<std::map<CLI::App*, Command>>();
   auto add = [&](Command command) { (*commands)[cmd->get_subcommands({}).back()] = std::move(command); };
 
-  auto a2 = std::make_shared<MapArgs>();
+  auto a2 = std::make_shared<WearmapCase>();
   auto* two = cmd->add_subcommand("analytic2d", "2D map of N micro-contacts (Fig. 3.7): plastic, separated "
                                                 "(d_r ≥ d*, 3.25), combined (d_a ≤ d_r²/d*, 3.27)");
-  two->add_option("--dr-over-dstar", a2->x_range, "Range MIN:MAX of the real contact size d_r/d* (default 0:3)");
-  two->add_option("--da-over-dstar", a2->y_range, "Range MIN:MAX of the apparent contact size d_a/d* (default 0:6)");
-  common(two, *a2, 301);
+  add_case_options(two, *a2, "wearmap.analytic2d");
+  add_case_range_flag(two, *a2, "--dr-over-dstar", "wearmap.analytic2d.dr_over_dstar",
+                      "Range of the real contact size d_r/d* (default 0:3)");
+  add_case_range_flag(two, *a2, "--da-over-dstar", "wearmap.analytic2d.da_over_dstar",
+                      "Range of the apparent contact size d_a/d* (default 0:6)");
+  add_case_flag(two, *a2, "--n", "wearmap.analytic2d.n", "Points along each axis, 2 to 4096 (default 301)");
   add([a2]() { return run_analytic2d(*a2); });
 
-  auto a3 = std::make_shared<MapArgs>();
+  auto a3 = std::make_shared<WearmapCase>();
   auto* three = cmd->add_subcommand("analytic3d", "3D map of two circular micro-contacts (Fig. 4.6): plastic, one "
                                                   "separated, two separated, combined, from R of (4.48)");
-  three->add_option("--d-over-l", a3->x_range, "Range MIN:MAX of d/l, contact diameter over centre distance, "
-                                               "within 0:1 (default 0:1)");
-  three->add_option("--dstar-over-l", a3->y_range, "Range MIN:MAX of d*/l (default 0:2)");
-  auto* interaction = three->add_option("--interaction", a3->interaction,
-                                        "max (ν = 0.5, θ = 0: C_inter = 2/3) or min (ν = 0.5, θ = π/2: 1/3) (Fig. 4.6)")
+  add_case_options(three, *a3, "wearmap.analytic3d");
+  add_case_range_flag(three, *a3, "--d-over-l", "wearmap.analytic3d.d_over_l",
+                      "Range of d/l, contact diameter over centre distance, within 0:1 (default 0:1)");
+  add_case_range_flag(three, *a3, "--dstar-over-l", "wearmap.analytic3d.dstar_over_l", "Range of d*/l (default 0:2)");
+  auto* interaction = add_case_flag(three, *a3, "--interaction", "wearmap.analytic3d.interaction",
+                                    "max (ν = 0.5, θ = 0: C_inter = 2/3) or min (ν = 0.5, θ = π/2: 1/3) (Fig. 4.6)")
                           ->check(CLI::IsMember({"max", "min"}));
-  a3->nu_opt = three->add_option("--nu", a3->nu, "Poisson's ratio ν in (−1, 0.5] (default 0.5)");
-  a3->theta_opt = three->add_option("--theta", a3->theta, "Angle θ between the load and the line of the centres "
-                                                          "[rad] (default 0)");
-  interaction->excludes(a3->nu_opt)->excludes(a3->theta_opt);
-  common(three, *a3, 201);
+  auto* nu = add_case_flag(three, *a3, "--nu", "wearmap.analytic3d.nu", "Poisson's ratio ν in (−1, 0.5] (default 0.5)");
+  auto* theta = add_case_flag(three, *a3, "--theta", "wearmap.analytic3d.theta",
+                              "Angle θ between the load and the line of the centres [rad] (default 0)");
+  interaction->excludes(nu)->excludes(theta);
+  add_case_flag(three, *a3, "--n", "wearmap.analytic3d.n", "Points along each axis, 2 to 4096 (default 201)");
   add([a3]() { return run_analytic3d(*a3); });
 
   add(add_wearmap_rough(*cmd));  // the numerical map of ch. 5

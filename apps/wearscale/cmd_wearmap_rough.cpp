@@ -1,10 +1,12 @@
-// wearscale wearmap rough [--n N] [--seeds S] [--hurst H] [--ql QL] [--qs QS] [--loads MIN:MAX] [--n-loads K]
-//                         [--dstar-over-l MIN:MAX] [--n-dstar K] [--nu NU] [--tensile-strength R] [--spot F]
-//                         [--invalid-diameter F] [--per-particle] [--naive] [--naive-pixels K] [--out DIR] [--json]
+// wearscale wearmap rough [CASE.toml] [--n N] [--seeds S] [--hurst H] [--ql QL] [--qs QS] [--loads MIN:MAX]
+//                         [--n-loads K] [--dstar-over-l MIN:MAX] [--n-dstar K] [--nu NU] [--tensile-strength R]
+//                         [--spot F] [--invalid-diameter F] [--per-particle] [--naive] [--naive-pixels K]
+//                         [--set KEY=VALUE]... [--out DIR] [--json]
 // The numerical wear maps of rough contacts (thesis ch. 5, Fig. 5.6–5.7):
 // number of particles and wear volume over (p̃_N, d*/L), mean and standard
 // deviation over S random surfaces, with the invalid region flagged.
-// DIR/wearmap_rough.h5, wearmap_rough.csv (per pixel), wearmap_rough_particles.csv
+// Every flag is a key of the case table [wearmap.rough] (cases/wearmap_rough.toml).
+// DIR/wearmap_rough.h5 (+ .xdmf sidecar for ParaView), wearmap_rough.csv (per pixel), wearmap_rough_particles.csv
 // (per-pixel particle lists), wearmap_rough_curves.csv and PNGs (gnuplot).
 #include <chrono>
 #include <cmath>
@@ -18,14 +20,17 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "wearmap_case.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/core/xdmf.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/wear/rough_wear_map.hpp"
+#include "wearscale/wear/wear_curves.hpp"
 
 namespace wearscale::app {
 
@@ -33,26 +38,63 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The resolved [wearmap.rough] table.
 struct RoughArgs {
   std::size_t n = 512, seeds = 5, n_loads = 20, n_dstar = 20, naive_pixels = 0, naive_max_solves = 0;
   double hurst = 0.8, ql = 8.0, qs = 0.0, nu = 0.3, tensile = 1.0, spot = 0.05, invalid = 0.25;
-  std::string loads = "0.01:0.3", dstar = "0.01:0.2", out = "out/wearmap";
+  std::pair<double, double> loads{0.01, 0.3}, dstar{0.01, 0.2};
+  fs::path out;
   bool per_particle = false, naive = false, json = false;
 };
 
-std::pair<double, double> range(const std::string& flag, const std::string& text) {
-  const auto colon = text.find(':');
-  try {
-    if (colon == std::string::npos) throw std::invalid_argument("no colon");
-    std::size_t a = 0, b = 0;
-    const std::string lo = text.substr(0, colon), hi = text.substr(colon + 1);
-    const double min = std::stod(lo, &a), max = std::stod(hi, &b);
-    if (a != lo.size() || b != hi.size()) throw std::invalid_argument("trailing text");
-    if (!(min > 0.0 && min < max && std::isfinite(max))) throw std::invalid_argument("order");
-    return {min, max};
-  } catch (const std::exception&) {
-    throw InputError(fmt::format("{} = '{}' is not allowed; allowed: MIN:MAX with 0 < MIN < MAX", flag, text));
-  }
+// [wearmap.rough] of the case (flags and --set applied), every key range-checked; the resolved values are
+// recorded back into `cfg` (defaults included) for the summary and the HDF5 file.
+RoughArgs read_rough(Config& cfg, const WearmapCase& c) {
+  const std::string k = "wearmap.rough.";
+  RoughArgs a;
+  naming_flags(c, [&]() {
+    const auto count = [&](const char* key, std::size_t fallback, double lo, double hi) {
+      return static_cast<std::size_t>(cfg.integer_or(k + key, long(fallback), Range::closed(lo, hi)));
+    };
+    a.n = count("n", a.n, 16, 4096);
+    a.seeds = count("seeds", a.seeds, 1, 1000);
+    a.hurst = cfg.number_or(k + "hurst", a.hurst, Range::open_closed(0.0, 1.0));
+    a.ql = cfg.number_or(k + "q_l", a.ql, Range::at_least(1.0));
+    a.qs = cfg.number_or(k + "q_s", static_cast<double>(a.n) / 8.0, Range::at_least(1.0));
+    if (!(a.ql <= a.qs && a.qs <= static_cast<double>(a.n) / 2.0)) {
+      const std::string key = k + (cfg.has(k + "q_s") ? "q_s" : "q_l");
+      throw cfg.error(key, fmt::format("not allowed with q_l = {}, q_s = {} and n = {}", a.ql, a.qs, a.n),
+                      fmt::format("1 ≤ q_l ≤ q_s ≤ n/2 = {} (in 2π/L; q_s defaults to n/8)", a.n / 2));
+    }
+    a.loads = read_range(cfg, k + "loads", a.loads, Range::open(0.0, 1.0), "p̃_N (5.1)");
+    a.n_loads = count("n_loads", a.n_loads, 1, 1000);
+    a.dstar = read_range(cfg, k + "dstar_over_l", a.dstar, Range::positive(), "d*/L (4.35)");
+    a.n_dstar = count("n_dstar", a.n_dstar, 1, 1000);
+    a.nu = cfg.number_or(k + "nu", a.nu, Range::open_closed(-1.0, 0.5));
+    a.tensile = cfg.number_or(k + "tensile_strength", a.tensile, Range::positive());
+    a.spot = cfg.number_or(k + "spot", a.spot, Range::closed(0.0, 1.0));
+    a.invalid = cfg.number_or(k + "invalid_diameter", a.invalid, Range::open_closed(0.0, 1.0));
+    a.per_particle =
+        cfg.choice_or(k + "energy_balance", "cumulative", {"cumulative", "per_particle"}) == "per_particle";
+    a.naive = cfg.choice_or(k + "method", "fast", {"fast", "naive"}) == "naive";
+    a.naive_pixels = count("naive_pixels", a.naive_pixels, 0, 1000);
+    a.naive_max_solves = static_cast<std::size_t>(cfg.integer_or(k + "naive_max_solves", 0, Range::non_negative()));
+    a.out = output_folder(c, cfg, "out/wearmap");
+    cfg.reject_unknown_keys();
+  });
+  a.json = c.json;
+  for (const auto& [key, value] :
+       {std::pair<const char*, std::string>{"n", fmt::format("{}", a.n)}, {"seeds", fmt::format("{}", a.seeds)},
+        {"hurst", toml_number(a.hurst)}, {"q_l", toml_number(a.ql)}, {"q_s", toml_number(a.qs)},
+        {"loads", toml_range(a.loads)}, {"n_loads", fmt::format("{}", a.n_loads)},
+        {"dstar_over_l", toml_range(a.dstar)}, {"n_dstar", fmt::format("{}", a.n_dstar)}, {"nu", toml_number(a.nu)},
+        {"tensile_strength", toml_number(a.tensile)}, {"spot", toml_number(a.spot)},
+        {"invalid_diameter", toml_number(a.invalid)},
+        {"energy_balance", a.per_particle ? "\"per_particle\"" : "\"cumulative\""},
+        {"method", a.naive ? "\"naive\"" : "\"fast\""}, {"naive_pixels", fmt::format("{}", a.naive_pixels)},
+        {"naive_max_solves", fmt::format("{}", a.naive_max_solves)}})
+    record(cfg, k + key, value);
+  return a;
 }
 
 std::vector<double> linear(std::pair<double, double> r, std::size_t k) {
@@ -87,42 +129,49 @@ std::string map_script(const fs::path& csv, int col, const std::string& title, b
       log_scale ? fmt::format("${} > 0 ? ${} : NaN", col, col) : fmt::format("${}", col), ps, 0.6 * ps);
 }
 
-// Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid points cut.
+// Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid
+// points cut; the number of particles also smoothed (dashed, §5.2).
 std::string curves_script(const fs::path& csv, std::size_t nd, bool volume) {
   const std::size_t step = std::max<std::size_t>(1, nd / 5);
-  const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid
+  const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid, smoothed count
+  const std::string smoothed =
+      volume ? "" : fmt::format(", for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+6*k) > 0.5 ? column(7+6*k) : NaN) "
+                                "with lines dt 2 lc k/{}+1 notitle",
+                                nd - 1, step, csv.string(), step);
   return fmt::format(
       "set datafile separator ','\nset title '{}'\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
       "set ylabel '{}'\n{}set key top left noenhanced\n"
-      "plot for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+5*k) > 0.5 ? column({}+5*k) : NaN):"
-      "(column({}+5*k)) with yerrorlines title columnhead({}+5*k)\n",
-      volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a)",
+      "plot for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+6*k) > 0.5 ? column({}+6*k) : NaN):"
+      "(column({}+6*k)) with yerrorlines lc k/{}+1 title columnhead({}+6*k){}\n",
+      volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a; dashed: Savitzky-Golay, 3/11)",
       volume ? "wear volume / L^3" : "number of particles", volume ? "set logscale y\n" : "", nd - 1, step,
-      csv.string(), off, off + 1, off);
+      csv.string(), off, off + 1, step, off, smoothed);
 }
 
 nlohmann::json result(double value, const char* unit, const std::string& description) {
   return {{"value", value}, {"unit", unit}, {"description", description}};
 }
 
-int run_rough(const RoughArgs& a) {
+int run_rough(const WearmapCase& wcase) {
+  Config cfg = build_case(wcase);
+  const RoughArgs a = read_rough(cfg, wcase);
   wear::RoughWearMapSpec spec;
   spec.surface.n = a.n;
   spec.surface.hurst = a.hurst;
   spec.surface.k_l = a.ql;
-  spec.surface.k_s = a.qs > 0.0 ? a.qs : static_cast<double>(a.n) / 8.0;
+  spec.surface.k_s = a.qs;
   spec.surface.poisson = a.nu;
   spec.seeds.clear();
   for (std::size_t s = 1; s <= a.seeds; ++s) spec.seeds.push_back(s);
-  spec.loads = linear(range("--loads", a.loads), a.n_loads);
-  spec.critical_diameters = geometric(range("--dstar-over-l", a.dstar), a.n_dstar);
+  spec.loads = linear(a.loads, a.n_loads);
+  spec.critical_diameters = geometric(a.dstar, a.n_dstar);
   spec.tensile_strength = a.tensile;
   spec.spot = a.spot;
   spec.invalid_diameter = a.invalid;
   spec.options.cumulative = !a.per_particle;
   spec.options.method = a.naive ? wear::EnergyReleaseMethod::Naive : wear::EnergyReleaseMethod::Fast;
   wear::validate(spec);
-  const fs::path out(a.out);
+  const fs::path& out = a.out;
 
   const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
   Progress bar("wearmap rough", static_cast<double>(spec.seeds.size() * nl), "contacts");
@@ -189,9 +238,10 @@ int run_rough(const RoughArgs& a) {
   }
 
   // Outputs: built under partial names, committed together at the end.
-  fs::create_directories(out);
-  const fs::path h5 = out / "wearmap_rough.h5", csv = out / "wearmap_rough.csv",
-                 pcsv = out / "wearmap_rough_particles.csv", ccsv = out / "wearmap_rough_curves.csv";
+  create_output_folder(wcase, out);
+  const fs::path h5 = out / "wearmap_rough.h5", xmf = out / "wearmap_rough.xdmf", csv = out / "wearmap_rough.csv",
+                 pcsv = out / "wearmap_rough_particles.csv", ccsv = out / "wearmap_rough_curves.csv",
+                 kcsv = out / "wearmap_rough_peaks.csv";
   std::vector<double> load, dstar, cm, cs, vm, vs, lm, fr, valid;
   for (const auto& p : map.pixels) {
     load.push_back(p.load), dstar.push_back(p.critical_diameter), cm.push_back(p.count_mean);
@@ -210,9 +260,34 @@ int run_rough(const RoughArgs& a) {
   const std::vector<std::string> pnames = {"seed", "p_N_tilde", "dstar_over_L", "x_over_L", "y_over_L",
                                            "diameter_over_L"};
   const std::vector<std::span<const double>> pcols = {ps, pl, pd, px, py, pdia};
+  // Fig. 5.7: each curve's maximum read off its smoothed version (§5.2).
+  std::vector<wear::CurveMaximum> peaks;
+  std::vector<double> peak_dstar, peak_load, peak_count, peak_raw, peak_found;
+  for (std::size_t d = 0; d < nd; ++d) {
+    peaks.push_back(wear::curve_maximum(map, d));
+    const auto& c = peaks.back();
+    double raw = 0.0;
+    for (std::size_t l = 0; l < nl; ++l)
+      if (map.pixel(l, d).valid) raw = std::max(raw, map.pixel(l, d).count_mean);
+    peak_dstar.push_back(spec.critical_diameters[d]);
+    peak_load.push_back(c.found ? c.load : std::nan(""));
+    peak_count.push_back(c.found ? c.count : std::nan(""));
+    peak_raw.push_back(c.found ? raw : std::nan(""));
+    peak_found.push_back(c.found ? 1.0 : 0.0);
+  }
+  const std::vector<std::string> peak_names = {"dstar_over_L", "p_N_tilde_at_max", "count_max_smoothed",
+                                               "count_max_raw", "found"};
+  const std::vector<std::span<const double>> peak_cols = {peak_dstar, peak_load, peak_count, peak_raw, peak_found};
+  const std::string peak_note =
+      fmt::format("Fig. 5.7: maximum of each curve (number of particles against p_N_tilde) over its valid pixels, on "
+                  "the curve smoothed by a Savitzky-Golay filter of degree {} on {} points (thesis §5.2: 3 on 11); "
+                  "count_max_raw: the unsmoothed maximum; found = 0 where no pixel is valid",
+                  peaks.front().degree, peaks.front().window);
   {
     H5Writer w(h5);
     w.write_series("/axes/p_N_tilde", spec.loads);
+    w.write_table("/curve_maxima", peak_names, peak_cols);
+    w.set_attribute("/curve_maxima", "description", peak_note);
     w.write_series("/axes/dstar_over_L", spec.critical_diameters);
     w.write_table("/pixels", names, columns);
     w.write_table("/particles", pnames, pcols);
@@ -234,28 +309,38 @@ int run_rough(const RoughArgs& a) {
     w.set_attribute("/", "poisson", spec.surface.poisson);
     w.set_attribute("/", "tensile_strength_over_sigma_j", spec.tensile_strength);
     w.set_attribute("/", "energy_balance", spec.options.cumulative ? "cumulative" : "per particle");
+    w.set_attribute("/", "case_toml", cfg.to_toml());
     w.commit();
   }
+  // ParaView: the maps on the (p̃_N, d*/L) pixel grid, index space (the axes' values are in /axes).
+  write_xdmf(xmf, h5, Grid2D(nl, nd, 1.0, 1.0),
+             {{"/maps/count_mean", "count_mean"}, {"/maps/count_sd", "count_sd"}, {"/maps/volume_mean", "volume_mean"},
+              {"/maps/volume_sd", "volume_sd"}, {"/maps/valid", "valid"}});
   write_csv(csv, names, columns, {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
                                   "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
   write_csv(pcsv, pnames, pcols, {"every detached particle of every seed and pixel; lengths / L"});
   {
     std::vector<std::string> cn = {"p_N_tilde"};
-    std::vector<std::vector<double>> cv(1 + 5 * nd, std::vector<double>(nl));
+    std::vector<std::vector<double>> cv(1 + 6 * nd, std::vector<double>(nl));
     for (std::size_t l = 0; l < nl; ++l) cv[0][l] = spec.loads[l];
     for (std::size_t d = 0; d < nd; ++d) {
       const std::string tag = fmt::format("{:.4g}", spec.critical_diameters[d]);
-      for (const char* c : {"count_", "count_sd_", "volume_", "volume_sd_", "valid_"}) cn.push_back(c + tag);
+      for (const char* c : {"count_", "count_sd_", "volume_", "volume_sd_", "valid_", "count_smoothed_"})
+        cn.push_back(c + tag);
       for (std::size_t l = 0; l < nl; ++l) {
         const auto& p = map.pixel(l, d);
-        cv[1 + 5 * d][l] = p.count_mean, cv[2 + 5 * d][l] = p.count_sd, cv[3 + 5 * d][l] = p.volume_mean;
-        cv[4 + 5 * d][l] = p.volume_sd, cv[5 + 5 * d][l] = p.valid ? 1.0 : 0.0;
+        cv[1 + 6 * d][l] = p.count_mean, cv[2 + 6 * d][l] = p.count_sd, cv[3 + 6 * d][l] = p.volume_mean;
+        cv[4 + 6 * d][l] = p.volume_sd, cv[5 + 6 * d][l] = p.valid ? 1.0 : 0.0;
+        cv[6 + 6 * d][l] = peaks[d].smoothed[l];
       }
     }
     std::vector<std::span<const double>> spans(cv.begin(), cv.end());
-    write_csv(ccsv, cn, spans, {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3"});
+    write_csv(ccsv, cn, spans,
+              {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3, and the number "
+               "of particles smoothed as in §5.2 (wearmap_rough_peaks.csv: the maximum of each curve)"});
+    write_csv(kcsv, peak_names, peak_cols, {peak_note});
   }
-  nlohmann::json files = {h5.string(), csv.string(), pcsv.string(), ccsv.string()};
+  nlohmann::json files = {h5.string(), xmf.string(), csv.string(), pcsv.string(), ccsv.string(), kcsv.string()};
   // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
   const std::pair<std::string, std::string> plots[] = {
       {map_script(csv, 3, "Number of particles (Fig. 5.6a)", false, spec.loads, spec.critical_diameters), "count"},
@@ -277,6 +362,11 @@ int run_rough(const RoughArgs& a) {
   results["pixels"] = result(pixels, "", "map pixels (p̃_N × d*/L)");
   results["invalid_fraction"] = result(double(invalid) / pixels, "", "share of pixels with particles ≥ the invalid size");
   results["max_count"] = result(max_count, "", "largest mean number of particles on the map");
+  double max_smoothed = 0.0;
+  for (const auto& c : peaks)
+    if (c.found) max_smoothed = std::max(max_smoothed, c.count);
+  results["max_count_smoothed"] =
+      result(max_smoothed, "", "largest maximum of the Fig. 5.7 curves read on their smoothed version (§5.2)");
   results["seconds"] = result(total_seconds, "s", "wall time of the map (all seeds)");
   results["seconds_per_pixel"] =
       result(total_seconds / (pixels * double(spec.seeds.size())), "s", "wall time per pixel and seed");
@@ -295,14 +385,12 @@ int run_rough(const RoughArgs& a) {
     results["setup_seconds_per_pixel"] = result(baseline["setup_seconds_per_pixel"].get<double>(), "s",
                                                 "candidates, crack stresses and u of the full loading, shared by both");
   }
-  const nlohmann::json parameters = {{"n", spec.surface.n}, {"seeds", spec.seeds.size()}, {"hurst", spec.surface.hurst},
-                                     {"q_l", spec.surface.k_l}, {"q_s", spec.surface.k_s}, {"nu", spec.surface.poisson},
-                                     {"loads", spec.loads}, {"dstar_over_L", spec.critical_diameters},
-                                     {"tensile_strength_over_sigma_j", spec.tensile_strength}, {"spot", spec.spot},
-                                     {"invalid_diameter", spec.invalid_diameter},
-                                     {"energy_balance", spec.options.cumulative ? "cumulative" : "per_particle"},
-                                     {"method", a.naive ? "naive" : "fast"}};
-  nlohmann::json summary = {{"kind", "rough"}, {"results", results}, {"parameters", parameters}, {"files", files},
+  // parameters: the resolved case (every key of [wearmap.rough], defaults included); axes: the sample points.
+  nlohmann::json summary = {{"kind", "rough"},
+                            {"results", results},
+                            {"parameters", cfg.to_json()},
+                            {"axes", {{"p_N_tilde", spec.loads}, {"dstar_over_L", spec.critical_diameters}}},
+                            {"files", files},
                             {"output_dir", out.string()}};
   if (!baseline.is_null()) summary["baseline"] = baseline;
   write_file_atomically(out / "wearmap_rough_summary.json", summary.dump(2) + "\n");
@@ -318,36 +406,37 @@ int run_rough(const RoughArgs& a) {
 }  // namespace
 
 Command add_wearmap_rough(CLI::App& wearmap) {
-  auto a = std::make_shared<RoughArgs>();
+  auto c = std::make_shared<WearmapCase>();
   auto* cmd = wearmap.add_subcommand("rough", "Numerical wear maps of rough contacts (ch. 5, Fig. 5.6–5.7): number of "
                                               "particles and wear volume over (p̃_N, d*/L), averaged over surfaces");
-  cmd->add_option("--n", a->n, "Grid points per side (§5.3: 512)")->capture_default_str()->check(CLI::Range(16, 4096));
-  cmd->add_option("--seeds", a->seeds, "Random surfaces to average (seeds 1…S)")->capture_default_str()
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--hurst", a->hurst, "Hurst exponent H")->capture_default_str();
-  cmd->add_option("--ql", a->ql, "q_l in units of 2π/L (= q_r)")->capture_default_str();
-  cmd->add_option("--qs", a->qs, "q_s in units of 2π/L (default n/8)");
-  cmd->add_option("--loads", a->loads, "Normalized loads p̃_N (5.1), MIN:MAX, evenly spaced")->capture_default_str();
-  cmd->add_option("--n-loads", a->n_loads, "Points along p̃_N")->capture_default_str()->check(CLI::Range(1, 1000));
-  cmd->add_option("--dstar-over-l", a->dstar, "Critical diameters d*/L (4.35), MIN:MAX, geometric")
-      ->capture_default_str();
-  cmd->add_option("--n-dstar", a->n_dstar, "Points along d*/L")->capture_default_str()->check(CLI::Range(1, 1000));
-  cmd->add_option("--nu", a->nu, "Poisson's ratio ν")->capture_default_str();
-  cmd->add_option("--tensile-strength", a->tensile, "σ_m/σ_j of the crack criterion (4.25)")->capture_default_str();
-  cmd->add_option("--spot", a->spot, "Crack sites within this fraction of each micro-contact's peak edge stress "
-                                     "(1: every edge past σ_m)")->capture_default_str();
-  cmd->add_option("--invalid-diameter", a->invalid, "Pixels whose mean largest particle is ≥ this × L are invalid")
-      ->capture_default_str();
-  cmd->add_flag("--per-particle", a->per_particle, "Each particle pays for itself (default: cumulative balance)");
-  cmd->add_flag("--naive", a->naive, "Energy release by one full solve per candidate (the slow baseline)");
-  cmd->add_option("--naive-pixels", a->naive_pixels, "Also time the naive baseline against the fast model on K "
-                                                    "pixels of the first seed (middle d*)")->check(CLI::Range(0, 1000));
-  cmd->add_option("--naive-max-solves", a->naive_max_solves, "Stop each naive pixel after this many solves and "
-                                                             "extrapolate its time (0: run it through)")
-      ->capture_default_str();
-  cmd->add_option("--out", a->out, "Output folder")->capture_default_str();
-  cmd->add_flag("--json", a->json, "Print one JSON object with the results, parameters and files");
-  return [a]() { return run_rough(*a); };
+  const std::string k = "wearmap.rough.";
+  add_case_options(cmd, *c, "wearmap.rough");
+  add_case_flag(cmd, *c, "--n", k + "n", "Grid points per side, 16 to 4096 (§5.3: 512)");
+  add_case_flag(cmd, *c, "--seeds", k + "seeds", "Random surfaces to average, seeds 1…S, S ≤ 1000 (default 5)");
+  add_case_flag(cmd, *c, "--hurst", k + "hurst", "Hurst exponent H (default 0.8)");
+  add_case_flag(cmd, *c, "--ql", k + "q_l", "q_l in units of 2π/L (= q_r) (default 8)");
+  add_case_flag(cmd, *c, "--qs", k + "q_s", "q_s in units of 2π/L (default n/8)");
+  add_case_range_flag(cmd, *c, "--loads", k + "loads", "Normalized loads p̃_N (5.1), evenly spaced (default 0.01:0.3)");
+  add_case_flag(cmd, *c, "--n-loads", k + "n_loads", "Points along p̃_N (default 20)");
+  add_case_range_flag(cmd, *c, "--dstar-over-l", k + "dstar_over_l",
+                      "Critical diameters d*/L (4.35), geometric (default 0.01:0.2)");
+  add_case_flag(cmd, *c, "--n-dstar", k + "n_dstar", "Points along d*/L (default 20)");
+  add_case_flag(cmd, *c, "--nu", k + "nu", "Poisson's ratio ν (default 0.3)");
+  add_case_flag(cmd, *c, "--tensile-strength", k + "tensile_strength",
+                "σ_m/σ_j of the crack criterion (4.25) (default 1)");
+  add_case_flag(cmd, *c, "--spot", k + "spot", "Crack sites within this fraction of each micro-contact's peak edge "
+                                               "stress (1: every edge past σ_m) (default 0.05)");
+  add_case_flag(cmd, *c, "--invalid-diameter", k + "invalid_diameter",
+                "Pixels whose mean largest particle is ≥ this × L are invalid (default 0.25)");
+  add_case_switch(cmd, *c, "--per-particle", k + "energy_balance", "\"per_particle\"",
+                  "Each particle pays for itself (default: cumulative balance)");
+  add_case_switch(cmd, *c, "--naive", k + "method", "\"naive\"",
+                  "Energy release by one full solve per candidate (the slow baseline)");
+  add_case_flag(cmd, *c, "--naive-pixels", k + "naive_pixels", "Also time the naive baseline against the fast model "
+                                                                "on K pixels of the first seed (middle d*)");
+  add_case_flag(cmd, *c, "--naive-max-solves", k + "naive_max_solves",
+                "Stop each naive pixel after this many solves and extrapolate its time (0: run it through)");
+  return [c]() { return run_rough(*c); };
 }
 
 }  // namespace wearscale::app

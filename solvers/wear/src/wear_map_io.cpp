@@ -26,9 +26,10 @@ std::string legend(const WearMap& map) {
 }
 }  // namespace
 
-void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map) {
+void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map, std::string_view case_toml) {
   H5Writer h5(path);
   h5.set_attribute("/", "kind", map.kind);
+  if (!case_toml.empty()) h5.set_attribute("/", "case_toml", case_toml);
   h5.set_attribute("/", "title", map.title);
   for (const auto& [name, value] : map.parameters) h5.set_attribute("/", name, value);
   const auto xs = map.x.values(), ys = map.y.values();

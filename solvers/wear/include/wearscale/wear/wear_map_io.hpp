@@ -2,15 +2,17 @@
 // Wear maps on disk, each file written atomically:
 //   HDF5: /axes/<x>, /axes/<y> (sample points), /region (nx × ny codes, with
 //         attributes naming each code), /ratio/<layer> (nx × ny), attributes
-//         kind, title and the map's parameters on "/";
+//         kind, title and the map's parameters on "/" (and the resolved
+//         case file as case_toml, when given);
 //   CSV:  one row per point: x, y, region, layers…, with the legend in comments.
 #include <filesystem>
+#include <string_view>
 
 #include "wearscale/wear/wear_map.hpp"
 
 namespace wearscale::wear {
 
-void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map);
+void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map, std::string_view case_toml = {});
 void write_wear_map_csv(const std::filesystem::path& path, const WearMap& map);
 
 }  // namespace wearscale::wear
