@@ -126,7 +126,9 @@ int finish(const WearmapCase& c, Config& cfg, const fs::path& out, const wear::W
   // ParaView: the region codes and every R layer on the map grid (x slowest, as stored).
   std::vector<XdmfField> fields = {{"/region", "region"}};
   for (const auto& l : map.layers) fields.push_back({"/ratio/" + l.name, l.name});
-  write_xdmf(xmf, h5, Grid2D(map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min), fields);
+  // The map samples cell centres: the first node is half a cell in from (min, min).
+  write_xdmf(xmf, h5, Grid2D(map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min), fields,
+             {map.x.value(0), map.y.value(0)});
   wear::write_wear_map_csv(csv, map);
   nlohmann::json files = {h5.string(), xmf.string(), csv.string()};
   if (const auto p = plot(csv, png)) files.push_back(p->string());

@@ -22,5 +22,12 @@ TEST(Xdmf, DescribesDimensionsSpacingAndDatasets) {
   EXPECT_THAT(xml, HasSubstr(">1.5625e-05 1.5625e-05<"));
   EXPECT_THAT(xml, HasSubstr("run.h5:/fields/pressure"));  // relative to the sidecar
   EXPECT_THAT(xml, HasSubstr("Name=\"gap\""));
+  EXPECT_THAT(xml, HasSubstr(">0 0<")) << "the first node at the origin by default";
+  // Cell-centred samples of [0.5, 1.5] × [−1, 1] on 4 × 8 cells: first node at (0.625, −0.875).
+  write_xdmf(dir / "map.xdmf", dir / "map.h5", Grid2D(4, 8, 1.0, 2.0), {{"/region", "region"}}, {0.625, -0.875});
+  std::stringstream map;
+  map << std::ifstream(dir / "map.xdmf").rdbuf();
+  EXPECT_THAT(map.str(), HasSubstr(">0.625 -0.875<"));
+  EXPECT_THAT(map.str(), HasSubstr(">0.25 0.25<"));
   std::filesystem::remove_all(dir);
 }
