@@ -261,6 +261,7 @@ double Config::number(std::string_view key, const Range& range, units::Dimension
   } else {
     throw error(key, fmt::format("expected a number, got {}", type_name(*n)), allowed);
   }
+  v = range.snap(v);
   if (!range.contains(v)) throw error(key, "out of range", allowed);
   return v;
 }

@@ -14,6 +14,14 @@ bool Range::contains(double v) const {
   return true;
 }
 
+double Range::snap(double v) const {
+  const double tolerance = 4.0 * std::numeric_limits<double>::epsilon();
+  auto near = [&](double bound) { return std::isfinite(bound) && std::fabs(v - bound) <= tolerance * std::fabs(bound); };
+  if (!lo_open && near(lo)) return lo;
+  if (!hi_open && near(hi)) return hi;
+  return v;
+}
+
 std::string Range::describe() const {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
   std::string s;

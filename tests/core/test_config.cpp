@@ -170,3 +170,18 @@ TEST(Config, ResolvedCaseRoundTripsToJsonAndToml) {
   const auto again = Config::from_string(c.to_toml(), "again");
   EXPECT_EQ(again.integer("scale.macro.grid"), 32);
 }
+
+// A bound computed from other inputs (3 d0 with d0 = "6 nm", read as
+// 6 × 1e-9) rounds one ulp above what a user types for it (1.8e-8): the
+// typed value is accepted, as the bound. Values really outside, and open
+// bounds, are not moved.
+TEST(Config, AValueTypedAtAComputedBoundIsAcceptedAsTheBound) {
+  const auto c = Config::from_string("d0 = \"6 nm\"\na = \"18 nm\"\nb = 1.8e-8\nc = 1.7999e-8\nd = 0.5", "t.toml");
+  const double bound = 3.0 * c.number("d0", Range::positive(), units::length);
+  ASSERT_GT(bound, 1.8e-8) << "the product rounds above 1.8e-8";
+  EXPECT_EQ(c.number("a", Range::at_least(bound), units::length), bound);
+  EXPECT_EQ(c.number("b", Range::at_least(bound), units::length), bound);
+  EXPECT_THROW(c.number("c", Range::at_least(bound), units::length), InputError);
+  EXPECT_THROW(c.number("b", Range::greater_than(bound), units::length), InputError);
+  EXPECT_EQ(c.number("d", Range::closed(0.0, 0.5)), 0.5);
+}

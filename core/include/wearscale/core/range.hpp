@@ -24,6 +24,10 @@ struct Range {
   Range or_infinite() const { Range r = *this; r.infinity_ok = true; return r; }
 
   bool contains(double v) const;
+  /// `v`, or a closed finite bound if `v` is within 4 ulps (relative) of it:
+  /// bounds are often products of other inputs (3 d0) that round just above
+  /// the value a user types (18 nm), which must then be accepted, as the bound.
+  double snap(double v) const;
   /// "> 0", "[0, 0.5)", "≥ 2 or inf", "any finite number".
   std::string describe() const;
 };
