@@ -108,17 +108,7 @@ int run_study(const DemArgs& a, const std::string& study, const std::string& def
   const Config cfg = build_config(a, default_out, out);
   const CheckpointPolicy policy = checkpoint_policy(cfg);
   const std::string fingerprint = case_fingerprint(cfg.to_json());
-  if (!a.resume.empty()) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(a.resume, ec))
-      throw InputError(fmt::format("--resume {}: no such folder; give the output folder of the run to continue",
-                                   a.resume));
-    if (!a.out.empty() && std::filesystem::weakly_canonical(a.out) != std::filesystem::weakly_canonical(a.resume))
-      throw InputError(fmt::format("--out {} and --resume {} name different folders; a resumed run writes into the "
-                                   "folder it continues",
-                                   a.out, a.resume));
-    out = a.resume;
-  }
+  if (!a.resume.empty()) out = resume_folder(a.resume, a.out);
   Checkpointer checkpoints(out / "checkpoint.h5", fingerprint, policy);
   if (!a.resume.empty()) {
     std::error_code ec;

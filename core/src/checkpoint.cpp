@@ -42,6 +42,18 @@ std::string value_text(const nlohmann::json& j) { return j.is_string() ? j.get<s
 // resolved cases (JSON), or "" if they cannot be compared that way.
 }  // namespace
 
+std::filesystem::path resume_folder(const std::filesystem::path& resume, const std::filesystem::path& out) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(resume, ec))
+    throw InputError(fmt::format("--resume {}: no such folder; give the output folder of the run to continue",
+                                 resume.string()));
+  if (!out.empty() && std::filesystem::weakly_canonical(out, ec) != std::filesystem::weakly_canonical(resume, ec))
+    throw InputError(fmt::format("--out {} and --resume {} name different folders; a resumed run writes into the "
+                                 "folder it continues",
+                                 out.string(), resume.string()));
+  return resume;
+}
+
 CheckpointPolicy checkpoint_policy(const Config& root) {
   const Config r = root.section("run");
   CheckpointPolicy policy;

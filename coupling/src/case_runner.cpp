@@ -339,19 +339,8 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
 
 RunSummary run_case(const RunOptions& options_in) {
   RunOptions options = options_in;
-  if (options.resume_dir) {
-    const auto& dir = *options.resume_dir;
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-      throw InputError(fmt::format("--resume {}: no such folder; give the output folder of the run to continue",
-                                   dir.string()));
-    if (options.output_dir && std::filesystem::weakly_canonical(*options.output_dir, ec) !=
-                                  std::filesystem::weakly_canonical(dir, ec))
-      throw InputError(fmt::format("--out {} and --resume {} name different folders; a resumed run writes into the "
-                                   "folder it continues",
-                                   options.output_dir->string(), dir.string()));
-    options.output_dir = dir;
-  }
+  if (options.resume_dir)
+    options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   Config probe = load(options, {});
   if (probe.has("sweep")) return run_sweep(options, probe);
   PreparedRun run = prepare(std::move(probe), options.output_dir);  // a single run: the file is parsed once

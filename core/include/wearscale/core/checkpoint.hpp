@@ -100,6 +100,10 @@ class Checkpointer {
   double seconds_saving_ = 0.0;
 };
 
+/// The folder `--resume DIR` continues: InputError unless `resume` is a
+/// folder and `out` (--out, empty if not given) names the same one.
+std::filesystem::path resume_folder(const std::filesystem::path& resume, const std::filesystem::path& out);
+
 /// The [run] keys checkpoint_interval (s, default 600) and checkpoint_steps
 /// (default 0), range-checked.
 CheckpointPolicy checkpoint_policy(const Config& root);
