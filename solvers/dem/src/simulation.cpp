@@ -328,7 +328,7 @@ void Simulation::forces(bool advance) {
   std::fill(p.force.begin(), p.force.end(), Vec3{});
   std::fill(p.torque.begin(), p.torque.end(), Vec3{});
   if (track_virial_) std::fill(virial_.begin(), virial_.end(), SymTensor{});
-  shift_table_ = NeighborList::shift_vectors(box_);
+  neighbors_.shift_vectors(box_, shift_table_.data());
   std::visit(
       [&](const auto& law) {
         using L = std::decay_t<decltype(law)>;
@@ -468,7 +468,8 @@ double Simulation::potential_energy() const {
   const auto& sh = neighbors_.shifts();
   const auto& hist = neighbors_.history();
   if (off.size() != p.size() + 1) return 0.0;
-  const auto shifts = NeighborList::shift_vectors(box_);
+  std::array<Vec3, PeriodicImages::max_count> shifts{};
+  neighbors_.shift_vectors(box_, shifts.data());
   double e = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) {
