@@ -56,3 +56,20 @@ TEST(DemCli, BadInputNamesTheKeyAndExitsWithTwo) {
   EXPECT_THAT(r.err, HasSubstr("SiO2"));
   EXPECT_FALSE(fs::exists(work / "bad" / "junction.dump"));
 }
+
+// Silent garbage is refused (#17, #18): a lattice whose second neighbours
+// fall within the cohesive reach exits 2 with the smallest valid d0 (it
+// reported ν = 2.2), a sample that never comes to rest exits 1 (it reported
+// E = 0.71, ν = 0.25); neither writes a result.
+TEST(DemCli, PatchTestRefusesGarbageInsteadOfReportingIt) {
+  fs::create_directories(work);
+  auto r = run_cli("dem patch-test --nu 0.1 --d0 70 --length 8 --no-strengths --out near --json", work);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_THAT(r.err, HasSubstr("second neighbours"));
+  EXPECT_THAT(r.err, HasSubstr("d0 ≥ 74.99"));
+  EXPECT_FALSE(fs::exists(work / "near" / "patch_test.json"));
+  r = run_cli("dem patch-test --length 8 --no-strengths --set dem.patch_test.time_step=0.4 --out hot --json", work);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.err, HasSubstr("numerical failure"));
+  EXPECT_FALSE(fs::exists(work / "hot" / "patch_test.json"));
+}
