@@ -87,7 +87,9 @@ TEST(ThinPeriodicCells, EveryImageOfANeighbourPushesAsInADirectSumOverImages) {
   const std::size_t n = p.size();
   // Direct sum over every pair (i ≤ j) and every image of j within five
   // periods along y (nearest image along x and z, 170 ≫ 72), with the
-  // fresh-contact force of (6.2)-(6.3): no sliding distance yet, damping.
+  // fresh-contact force of (6.2)-(6.5): no sliding distance yet, so the
+  // tangential force is the damping, dropped when it exceeds the cap F'_m,T
+  // (the thesis' LAMMPS pair style, as gran/hooke/history).
   std::vector<Vec3> force(n), torque(n);
   std::size_t contacts = 0, self_contacts = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -105,7 +107,8 @@ TEST(ThinPeriodicCells, EveryImageOfANeighbourPushesAsInADirectSumOverImages) {
         const Vec3 nrm = d * (1.0 / dist);
         const Vec3 vrel = p.velocity[i] - p.velocity[j] + cross(r * p.omega[i] + r * p.omega[j], nrm);
         const double vn = dot(vrel, nrm);
-        const Vec3 ft = -pp.c_t * (vrel - vn * nrm);
+        Vec3 ft = -pp.c_t * (vrel - vn * nrm);
+        if (norm(ft) > tangential_cap(pp, dist - 2 * r)) ft = {};
         const Vec3 f = (normal_force(pp, dist - 2 * r) - pp.c_n * vn) * nrm + ft;
         force[i] += f;
         force[j] -= f;

@@ -42,11 +42,10 @@ CohesivePair cohesive_pair(const CohesiveMaterial& m, double r_i, double r_j, do
   p.k_t = tangential_cross_section(r_eff, m.poisson) * m.young / sum;  // (6.55)
   p.delta_f = fracture_separation(m, sum);
   p.delta_e = std::min(elastic_separation(m, sum), p.delta_f);
-  // (6.58), with the size effect (6.63) above d_c on the shear strength too,
-  // as the targets of Fig. 6.11 decrease with d0 for s > 0.
-  const double d_c = critical_diameter(m);
-  const double size_effect = sum > d_c ? std::pow(sum / d_c, -m.scaling_exponent) : 1.0;
-  p.f_mt = tangential_cross_section(r_eff, m.poisson) * m.shear_strength * size_effect;
+  // (6.58) at every size: the thesis' shear strengths follow (6.63) above
+  // d_c (Fig. 6.11) through δ_f, which shrinks the cap (6.5) sooner, not
+  // through F_m,T (as in its LAMMPS pair style gran/cohesive/history).
+  p.f_mt = tangential_cross_section(r_eff, m.poisson) * m.shear_strength;
   p.c_n = damping * std::sqrt(p.k_n * m_eff);                             // (6.59)
   p.c_t = damping * std::sqrt(std::max(p.k_t, 0.0) * m_eff);              // (6.60)
   return p;

@@ -36,8 +36,8 @@ double fracture_separation(const CohesiveMaterial& m, double radius_sum);
 /// All parameters of a pair (6.53)-(6.61). For r_i + r_j > d_c, δ_f < δ_e:
 /// the force stays Hookean up to δ_f and then vanishes, so the matched
 /// strength is σ_m,N ((r_i + r_j)/d_c)^(−s) (6.63) and, for s = ½, the
-/// fracture energy is still 2γA_N (Fig. 6.5). F_m,T carries the same factor
-/// (the shear-strength targets of Fig. 6.11 follow (6.63) as well).
+/// fracture energy is still 2γA_N (Fig. 6.5). F_m,T = A_T σ_m,T (6.58) at
+/// every size.
 CohesivePair cohesive_pair(const CohesiveMaterial& m, double r_i, double r_j, double m_i,
                            double m_j);
 
