@@ -44,14 +44,16 @@ void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cel
   cell.max_relax_steps = c.integer_or("max_relax_steps", 20000, Range::at_least(0));
 }
 
-// The cell size L × W × H: W at least twice the neighbour cutoff, L at least
+// The cell size L × W × H: W at least the largest particle, L at least
 // `min_length`, H at least `min_height`.
 Vec3 read_cell_box(const Config& c, const SlidingCellSpec& cell, double default_length, double min_length,
                    double default_height, double min_height) {
   const double d_l = cell.largest;
   Vec3 box;
   box.x = c.number_or("length", default_length, Range::at_least(min_length), units::length);
-  box.y = c.number_or("depth", 3.5 * cell.d0, Range::at_least(2.8 * d_l), units::length);
+  // Periodic down to the largest particle (a pair meets several images of a
+  // neighbour across a thinner-than-cutoff depth, neighbor_list.hpp).
+  box.y = c.number_or("depth", 3.5 * cell.d0, Range::at_least(d_l), units::length);
   box.z = c.number_or("height", default_height, Range::at_least(min_height), units::length);
   return box;
 }
