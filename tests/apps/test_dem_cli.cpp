@@ -73,3 +73,19 @@ TEST(DemCli, PatchTestRefusesGarbageInsteadOfReportingIt) {
   EXPECT_THAT(r.err, HasSubstr("numerical failure"));
   EXPECT_FALSE(fs::exists(work / "hot" / "patch_test.json"));
 }
+
+// nano/dem's Si keys (#18): `amorphous` names case materials (or "none"),
+// `max_poisson` stays at most the pair force's 1/4; refused before any run.
+TEST(DemCli, NanoDemRefusesUnknownAmorphousMaterialsAndPoissonAboveAQuarter) {
+  fs::create_directories(work);
+  const std::string si = "run '" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/junction_sio2_si.toml' --out bad_si";
+  auto r = run_cli(si + " --set scale.nano.amorphous=Unobtainium", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("scale.nano.amorphous"));
+  EXPECT_THAT(r.err, HasSubstr("no material 'Unobtainium'"));
+  r = run_cli(si + " --set scale.nano.max_poisson=0.3", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("scale.nano.max_poisson"));
+  EXPECT_THAT(r.err, HasSubstr("(-1, 0.25]"));
+  EXPECT_FALSE(fs::exists(work / "bad_si" / "summary.json"));
+}

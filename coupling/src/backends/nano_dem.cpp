@@ -202,9 +202,22 @@ class NanoDem final : public Scale {
     // instead of on the HCP lattice of §7.1.1: the weakened, amorphous state
     // the thesis suggests for Si (§9.3.3).
     if (c.has("amorphous")) {
-      for (const auto& name : c.values_as_text("amorphous")) {
+      std::vector<std::string> names;
+      try {
+        names = c.values_as_text("amorphous");
+      } catch (const InputError&) {
+        // One name, or "none" (a case that lists some turned off by --set).
+        std::string one;
+        try {
+          one = c.string("amorphous");
+        } catch (const InputError&) {
+          throw c.error("amorphous", "not a list of material names", "[\"Si\", ...] or \"none\"");
+        }
+        if (one != "none") names.push_back(one);
+      }
+      for (const auto& name : names) {
         if (!library_.contains(name))
-          throw c.error("amorphous", fmt::format("no material '{}'", name), "names of the case's materials");
+          throw c.error("amorphous", fmt::format("no material '{}'", name), "names of the case's materials, or \"none\"");
         amorphous_.push_back(name);
       }
     }
