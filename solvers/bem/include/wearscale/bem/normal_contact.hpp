@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "wearscale/core/fft.hpp"
+#include "wearscale/bem/half_space.hpp"
 
 namespace wearscale::bem {
 
@@ -37,6 +37,8 @@ class NormalContact {
  public:
   /// `surface` heights on a periodic grid; `e_star` the contact modulus (1.12).
   NormalContact(const RealField& surface, double e_star);
+  /// The elastic body, its normal block only (HalfSpace::normal).
+  const HalfSpace& half_space() const { return body_; }
 
   /// Replaces the rigid surface, keeping the last pressure as a warm start.
   void set_surface(const RealField& surface);
@@ -68,17 +70,35 @@ class NormalContact {
   const std::vector<double>& history() const { return history_; }
 
  private:
-  void convolve(const RealField& in, RealField& out, double scale);
-  double quadratic_form(const RealField& t);  // Σ_x t (K t)
+  // The phases of one Polonsky–Keer iteration (see the .cpp) and what they pass on.
+  struct ContactGap {          // pass 1: the gap on the contact S = {p > 0}
+    double points = 0.0;       // |S|
+    double mean = 0.0;         // ḡ, the mean gap on S
+    double norm2 = 0.0;        // Σ_S (g − ḡ)²
+    double direction_mean = 0.0;  // mean over S of the previous direction
+  };
+  struct Descent {             // pass 2: the search direction and the error
+    double error = 0.0;        // ε (see above)
+    double slope = 0.0;        // Σ g t
+    bool penetrates = false;   // some point outside S has g < 0
+  };
+  struct Iterate {             // carried from one iteration to the next
+    double alpha = 1.0;        // the pressure is α·p_ (the rescaling to p0 folded into the next pass)
+    double g_norm_old = 0.0;   // Σ_S (g − ḡ)² of the last iteration
+    bool conjugate = false;    // δ of Polonsky–Keer: false restarts steepest descent
+  };
+  ContactGap measure_gap(int iteration) const;
+  Descent search_direction(const ContactGap& gap, double beta);
+  double step_length(const Descent& descent, int iteration);
+  // Descends by τ, projects on p ≥ 0, re-admits penetrating points and rescales to p0.
+  void descend(double tau, double g_mean, double p0, int iteration, Iterate& state);
   ContactResult finish(int iterations, double error, double g_mean);
 
   RealField h_, p_, u_, t_, gap_;
-  ComplexField spectrum_;
-  std::vector<double> kernel_;  // 2/(E* q)/N on the half spectrum; 0 at q = 0
-  std::shared_ptr<const FFTPlan> plan_;
+  HalfSpace body_;
+  HalfSpace::Workspace work_;
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
-  double self_compliance_ = 1.0;  // u at a cell per unit pressure on that cell [m/Pa]
   std::vector<double> history_;
 };
 
