@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -235,4 +236,57 @@ TEST(NormalContact, GrowsFromAOnePointContactWhenTheLoadRises) {
   const auto large = contact.solve_mean_pressure(1e-3);
   EXPECT_GT(large.contact_fraction, 5.0 / g.size());
   EXPECT_LT(large.error, 1e-12);
+}
+
+// --- Free boundary: an isolated sphere, no periodic images ---
+
+class FreeHertzTest : public ::testing::TestWithParam<HertzCase> {};
+
+TEST_P(FreeHertzTest, ApproachWithin1PercentContactRadiusAndPeakPressureWithin2PercentWithoutImageCorrections) {
+  // 64 cells across the contact, a window of 4 contact diameters (padded to 8).
+  const auto& c = GetParam();
+  const HertzContact hertz{c.radius, c.load, c.e_star};
+  const double a = hertz.contact_radius(), dx = 2.0 * a / 64.0;
+  const Grid2D g = Grid2D::square(256, 256 * dx);
+  NormalContact contact(paraboloid(g, c.radius), c.e_star, Boundary::Free);
+  const auto r = contact.solve_mean_pressure(c.load / g.area(), {1e-10, 1000});
+  EXPECT_NEAR(r.interference, hertz.approach(), 0.01 * hertz.approach());
+  const double a_num = std::sqrt(r.contact_fraction * g.area() / pi);
+  EXPECT_NEAR(a_num, a, 0.02 * a);
+  const double p_max = *std::max_element(contact.pressure().begin(), contact.pressure().end());
+  EXPECT_NEAR(p_max, hertz.peak_pressure(), 0.02 * hertz.peak_pressure());
+  EXPECT_NEAR(r.mean_pressure * g.area(), c.load, 1e-10 * c.load);
+  // Outside the contact the surface follows Johnson's (3.42b) towards the far field.
+  const std::size_t mid = 128, off = 96;  // r = 3a
+  EXPECT_NEAR(contact.displacement()(mid + off, mid), hertz_outside(hertz, off * dx),
+              0.02 * hertz_outside(hertz, off * dx));
+  RecordProperty("approach_relative_error", std::to_string(r.interference / hertz.approach() - 1.0));
+  RecordProperty("a_relative_error", std::to_string(a_num / a - 1.0));
+  RecordProperty("p0_relative_error", std::to_string(p_max / hertz.peak_pressure() - 1.0));
+  RecordProperty("iterations", std::to_string(r.iterations));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spheres, FreeHertzTest,
+    ::testing::Values(HertzCase{"pin", 3e-3, 1.0, effective_modulus(73e9, 0.17, 73e9, 0.17), 0.0, 0},
+                      HertzCase{"unit", 1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0, 0.0, 0},
+                      HertzCase{"stiff", 0.05, 20.0, 150e9, 0.0, 0}),
+    [](const auto& p) { return std::string(p.param.name); });
+
+TEST(NormalContact, AFreeWindowTooSmallForItsContactIsRefused) {
+  // The same sphere on a window narrower than its contact (1.5 a wide): the
+  // pressure reaches the border, where the body is missing. Refused, not solved.
+  const HertzContact hertz{1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0};
+  const double a = hertz.contact_radius();
+  const Grid2D g = Grid2D::square(48, 1.5 * a);
+  NormalContact contact(paraboloid(g, 1.0), 1.0, Boundary::Free);
+  try {
+    contact.solve_mean_pressure(hertz.load / g.area());
+    FAIL() << "a contact reaching the window's edge must be refused";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("free boundary"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("edge"));
+  }
+  NormalContact inside(paraboloid(g, 1.0), 1.0, Boundary::Free);  // a tenth of the load: a = 0.46 a fits
+  EXPECT_NO_THROW(inside.solve_mean_pressure(0.1 * hertz.load / g.area()));
 }

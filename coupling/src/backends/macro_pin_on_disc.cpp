@@ -45,6 +45,8 @@ class MacroPinOnDisc final : public Scale {
     s_.nonplanar_slope = c.number_or("nonplanarity.slope", 0.0, Range::closed_open(0.0, 0.2));
     s_.nonplanar_period = c.number_or("nonplanarity.period", 0.05, Range::positive(), units::length);
     s_.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1e-3));
+    s_.boundary = c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? bem::Boundary::Free
+                                                                                   : bem::Boundary::Periodic;
     // Elastic properties of the contact solve: the pin's for both bodies (the
     // thesis, which could not model layered bodies), the pair's, or a value.
     const std::string elastic = c.choice_or("elastic", "pin", {"pin", "pair"});

@@ -102,8 +102,18 @@ HalfSpace::HalfSpace(const Grid2D& grid, double young, double poisson, double sh
     build_free_kernel();
   // The displacement of a cell under a unit pressure on itself: the kernel at
   // offset 0, i.e. Σ_q F_zz(q) over the whole spectrum (1/N folded in).
-  if (keeps(Response::Normal))
+  if (keeps(Response::Normal)) {
     self_compliance_ = hermitian_sum<double>(fft_grid_, [&](std::size_t m, double w, double& s) { s += w * zz_[m]; });
+    stiffness_.assign(modes, 0.0);
+    const double e_star = e_star_normal > 0.0 ? e_star_normal : contact_modulus();
+    const double scale = 0.5 * e_star / static_cast<double>(fft_grid_.size());
+    const Grid2D& f = fft_grid_;
+    for_each_mode(f, [&](std::size_t i, std::size_t j, std::size_t m) {
+      stiffness_[m] = scale * std::hypot(f.wavenumber_x(i), f.wavenumber_y(j));
+    });
+    stiffness_diagonal_ =
+        hermitian_sum<double>(fft_grid_, [&](std::size_t m, double w, double& s) { s += w * stiffness_[m]; });
+  }
   own_ = workspace();
 }
 
@@ -275,6 +285,17 @@ void HalfSpace::normal_displacement(const RealField& p, RealField& u, Workspace&
 #pragma omp parallel for simd schedule(static)
   for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
   backward(w.sz, u, w);
+}
+
+void HalfSpace::normal_stiffness(const RealField& g, RealField& p, Workspace& w) const {
+  if (!keeps(Response::Normal)) throw std::logic_error("HalfSpace::normal_stiffness needs the normal response");
+  forward(g, w.sz, w);
+  auto* s = w.sz.data();
+  const double* k = stiffness_.data();
+  const std::size_t n = stiffness_.size();
+#pragma omp parallel for simd schedule(static)
+  for (std::size_t m = 0; m < n; ++m) s[m] *= k[m];
+  backward(w.sz, p, w);
 }
 
 void HalfSpace::shear_displacement(const RealField& p, RealField& u, Workspace& w) const {

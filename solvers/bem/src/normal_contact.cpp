@@ -19,9 +19,9 @@ constexpr const char* kSolver = "bem/normal-contact (Polonsky–Keer)";
 constexpr std::size_t kHistory = 12;
 }  // namespace
 
-NormalContact::NormalContact(const RealField& surface, double e_star)
+NormalContact::NormalContact(const RealField& surface, double e_star, Boundary boundary)
     : h_(surface), p_(surface.grid()), u_(surface.grid()), t_(surface.grid()), gap_(surface.grid()),
-      body_(HalfSpace::normal(surface.grid(), e_star > 0.0 && std::isfinite(e_star) ? e_star : 1.0)),
+      body_(HalfSpace::normal(surface.grid(), e_star > 0.0 && std::isfinite(e_star) ? e_star : 1.0, boundary)),
       work_(body_.workspace()), e_star_(e_star) {
   const Grid2D& g = surface.grid();
   if (!(e_star > 0.0) || !std::isfinite(e_star))
@@ -116,13 +116,63 @@ NormalContact::Descent NormalContact::search_direction(const ContactGap& gap, do
   return {err_num / (p_sum * h_rms_), gt, penetrating > 0.0};
 }
 
+// Pass 2 (preconditioned): the residual r = g − ḡ on S, the error and penetration.
+NormalContact::Descent NormalContact::residual(const ContactGap& gap) {
+  const std::size_t n = h_.size();
+  const double *p = p_.data(), *u = u_.data(), *h = h_.data();
+  double* r = gap_.data();  // scratch until finish() writes the gap
+  const double g_mean = gap.mean;
+  double err_num = 0.0, p_sum = 0.0, penetrating = 0.0;
+#pragma omp parallel for simd reduction(+ : err_num, p_sum, penetrating) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const double g = u[k] - h[k] - g_mean;
+    const bool in = p[k] > 0.0;
+    r[k] = in ? g : 0.0;
+    err_num += in ? p[k] * std::abs(g) : 0.0;
+    p_sum += p[k];
+    penetrating += (!in && g < 0.0) ? 1.0 : 0.0;
+  }
+  return {err_num / (p_sum * h_rms_), 0.0, penetrating > 0.0};
+}
+
+// Pass 3 (preconditioned): t = (z − z̄) + β (t_old − ⟨t_old⟩_S) on S, 0 elsewhere,
+// z̄ the mean of z = S r on S (the load stays constant along t), β = Σ r z / (Σ r z)_old
+// (Fletcher–Reeves in the preconditioned inner product).
+void NormalContact::preconditioned_direction(const ContactGap& gap, Iterate& state, Descent& d) {
+  const std::size_t n = h_.size();
+  const double *p = p_.data(), *r = gap_.data(), *z = z_.data();
+  double* t = t_.data();
+  double z_sum = 0.0, rz = 0.0, r_sum = 0.0;
+#pragma omp parallel for simd reduction(+ : z_sum, rz, r_sum) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool in = p[k] > 0.0;
+    z_sum += in ? z[k] : 0.0;
+    rz += r[k] * z[k];  // r = 0 off S
+    r_sum += r[k];
+  }
+  const double z_mean = z_sum / gap.points;
+  rz -= z_mean * r_sum;  // Σ_S r (z − z̄)
+  const double beta = state.conjugate && state.residual_old > 0.0 ? rz / state.residual_old : 0.0;
+  state.residual_old = rz;
+  const double t_old_mean = gap.direction_mean;
+  double slope = 0.0;
+#pragma omp parallel for simd reduction(+ : slope) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tk = p[k] > 0.0 ? (z[k] - z_mean) + beta * (t[k] - t_old_mean) : 0.0;
+    t[k] = tk;
+    slope += r[k] * tk;
+  }
+  d.slope = slope;
+}
+
 // Step length τ = Σ g t / Σ t (K t), the denominator by Parseval from the
 // spectrum of t: one forward FFT instead of a full convolution.
 double NormalContact::step_length(const Descent& d, int iteration) {
   const double tkt = body_.normal_form(t_, work_);
   // No descent direction (a contact of one point, or a flat gap on S) while
   // points outside still penetrate: admit them with a cell's own stiffness.
-  const double tau = (tkt == 0.0 && d.slope == 0.0) ? 1.0 / body_.self_compliance() : d.slope / tkt;
+  const double tau =
+      (tkt == 0.0 && d.slope == 0.0) ? 1.0 / (readmit_stiffness_ * body_.self_compliance()) : d.slope / tkt;
   if (!std::isfinite(tau) || !(tkt > 0.0 || d.slope == 0.0))
     throw NumericalError(kSolver, iteration, "step length", fmt::format("τ = {} (t·Kt = {})", tau, tkt));
   return tau;
@@ -140,7 +190,7 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
     const double descended = p[k] > 0.0 ? std::max(alpha * p[k] - tau * t[k], 0.0) : 0.0;
     const double g = u[k] - h[k] - g_mean;
     const bool readmit = descended == 0.0 && g < 0.0;
-    const double pk = readmit ? -tau * g : descended;
+    const double pk = readmit ? -tau * readmit_stiffness_ * g : descended;
     overlap += readmit ? 1.0 : 0.0;
     p[k] = pk;
     new_sum += pk;
@@ -151,6 +201,26 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
 }
 
 ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions& opt) {
+  const ContactResult r = solve(p0, opt);
+  check_window();
+  return r;
+}
+
+void NormalContact::check_window() const {
+  if (body_.boundary() != Boundary::Free) return;
+  const Grid2D& g = grid();
+  bool edge = false;
+  for (std::size_t i = 0; i < g.nx && !edge; ++i) edge = p_(i, 0) > 0.0 || p_(i, g.ny - 1) > 0.0;
+  for (std::size_t j = 0; j < g.ny && !edge; ++j) edge = p_(0, j) > 0.0 || p_(g.nx - 1, j) > 0.0;
+  if (edge)
+    throw InputError(fmt::format(
+        "normal contact: with a free boundary the contact reaches the edge of the {:g} m × {:g} m window, so the "
+        "body beyond it is missing and the solution would be wrong; allowed: a contact inside the window (a larger "
+        "size, or a smaller load)",
+        g.lx, g.ly));
+}
+
+ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   if (!(p0 >= 0.0) || !std::isfinite(p0))
     throw InputError(fmt::format("normal contact: mean pressure {} is not allowed; allowed: ≥ 0", p0));
   if (!(opt.tolerance > 0.0)) throw InputError("normal contact: the tolerance must be > 0");
@@ -172,13 +242,21 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
     p_.fill(p0);
   t_.fill(0.0);
 
+  const bool preconditioned = opt.method == ContactMethod::PreconditionedCG;
+  if (preconditioned && z_.size() != n) z_ = RealField(grid());
+  readmit_stiffness_ = preconditioned ? body_.normal_stiffness_diagonal() : 1.0;
   double first_error = 0.0;
   for (int it = 0; it < opt.max_iterations; ++it) {
     body_.normal_displacement(p_, u_, work_, state.alpha);  // u = K (α p)
     const ContactGap gap = measure_gap(it);
     gap_shift_ = gap.mean;  // the last mean gap: carried across solves (warm start)
-    const double beta = state.conjugate && state.g_norm_old > 0.0 ? gap.norm2 / state.g_norm_old : 0.0;
-    const Descent descent = search_direction(gap, beta);
+    Descent descent;
+    if (preconditioned) {
+      descent = residual(gap);
+    } else {
+      const double beta = state.conjugate && state.residual_old > 0.0 ? gap.norm2 / state.residual_old : 0.0;
+      descent = search_direction(gap, beta);
+    }
     if (!std::isfinite(descent.error))
       throw NumericalError(kSolver, it, "orthogonality error", "not finite (NaN in u or p)");
     if (it == 0) first_error = descent.error;
@@ -188,7 +266,12 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
       for (double& v : p_) v *= state.alpha;
       return finish(it, descent.error, gap.mean);
     }
-    state.g_norm_old = gap.norm2;
+    if (preconditioned) {
+      body_.normal_stiffness(gap_, z_, work_);  // z = S r
+      preconditioned_direction(gap, state, descent);
+    } else {
+      state.residual_old = gap.norm2;
+    }
     descend(step_length(descent, it), gap.mean, p0, it, state);
   }
   throw NumericalError(kSolver, opt.max_iterations, "orthogonality error",
@@ -223,14 +306,16 @@ ContactResult NormalContact::solve_interference(double delta, const ContactOptio
   // Bracket: δ(p0) grows with p0 and δ → 0⁺ as p0 → 0 for a surface with one summit.
   const double scale = e_star_ * std::max(delta, 1e-300) / std::max(grid().lx, grid().ly);
   double lo = 0.0, hi = scale;
-  for (int k = 0; solve_mean_pressure(hi, opt).interference < delta; ++k) {
+  for (int k = 0; solve(hi, opt).interference < delta; ++k) {
     lo = hi;
     hi *= 4.0;
     if (k > 200) throw NumericalError(kSolver, k, "interference", "cannot bracket the imposed interference");
   }
-  const double p0 = find_root([&](double p) { return solve_mean_pressure(p, opt).interference - delta; }, lo, hi,
+  const double p0 = find_root([&](double p) { return solve(p, opt).interference - delta; }, lo, hi,
                               1e-12 * hi, kSolver);
-  return solve_mean_pressure(p0, opt);
+  const ContactResult r = solve(p0, opt);
+  check_window();
+  return r;
 }
 
 }  // namespace wearscale::bem

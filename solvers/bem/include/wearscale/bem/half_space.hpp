@@ -101,6 +101,12 @@ class HalfSpace {
   void normal_displacement(const RealField& p, RealField& u, Workspace& w, double scale = 1.0) const;
   /// u_x = F_xx * p_x (ShearX or Full): one r2c + one c2r.
   void shear_displacement(const RealField& p, RealField& u, Workspace& w) const;
+  /// p = S * g with Ŝ(q) = E* |q| / 2, the inverse of the normal block of a
+  /// periodic body (but for the zero mode, mapped to 0): the FFT-based
+  /// preconditioner of the contact solvers (Vollebregt 2014). One r2c + one c2r.
+  void normal_stiffness(const RealField& g, RealField& p, Workspace& w) const;
+  /// S at offset 0: the pressure on a cell per unit displacement of that cell alone under S [Pa/m].
+  double normal_stiffness_diagonal() const { return stiffness_diagonal_; }
   /// Σ_x t (F_zz t) by Parseval from the spectrum of t: one r2c.
   double normal_form(const RealField& t, Workspace& w) const;
   /// The blocks of Σ_x t·(F t) by Parseval (Full): three r2c.
@@ -149,7 +155,8 @@ class HalfSpace {
   // The tensor on the half spectrum of fft_grid_, 1/N of the inverse folded in:
   // F = [[xx, xy, i xz], [xy, yy, i yz], [−i xz, −i yz, zz]]; empty blocks are not kept.
   std::vector<double> xx_, yy_, xy_, zz_, xz_, yz_;
-  double self_compliance_ = 0.0;
+  std::vector<double> stiffness_;  // E* |q| / 2 on the same half spectrum, 1/N folded in
+  double self_compliance_ = 0.0, stiffness_diagonal_ = 0.0;
   Workspace own_;
 };
 
