@@ -242,24 +242,30 @@ TEST(NormalContact, GrowsFromAOnePointContactWhenTheLoadRises) {
 
 class FreeHertzTest : public ::testing::TestWithParam<HertzCase> {};
 
-TEST_P(FreeHertzTest, ApproachWithin1PercentContactRadiusAndPeakPressureWithin2PercentWithoutImageCorrections) {
-  // 64 cells across the contact, a window of 4 contact diameters (padded to 8).
+TEST_P(FreeHertzTest, ApproachPeakPressureAndContactRadiusMatchHertzWithoutImageCorrections) {
+  // c.n cells across the contact (64 and more), a window of c.size contact
+  // diameters (padded to twice that). Free: nothing depends on the window but
+  // its being larger than the contact, so the cases differ by their resolution.
   const auto& c = GetParam();
   const HertzContact hertz{c.radius, c.load, c.e_star};
-  const double a = hertz.contact_radius(), dx = 2.0 * a / 64.0;
-  const Grid2D g = Grid2D::square(256, 256 * dx);
+  const double a = hertz.contact_radius(), dx = 2.0 * a / static_cast<double>(c.n);
+  const auto cells = static_cast<std::size_t>(c.size * static_cast<double>(c.n));
+  const Grid2D g = Grid2D::square(cells, static_cast<double>(cells) * dx);
   NormalContact contact(paraboloid(g, c.radius), c.e_star, Boundary::Free);
   const auto r = contact.solve_mean_pressure(c.load / g.area(), {1e-10, 1000});
-  EXPECT_NEAR(r.interference, hertz.approach(), 0.01 * hertz.approach());
+  // Measured: δ within 3e-5, p0 within 5e-5, a (from the count of cells in
+  // contact) within 0.5 % at 64 cells across; the issue asks for δ within 1 %.
+  EXPECT_NEAR(r.interference, hertz.approach(), 1e-3 * hertz.approach());
   const double a_num = std::sqrt(r.contact_fraction * g.area() / pi);
-  EXPECT_NEAR(a_num, a, 0.02 * a);
+  EXPECT_NEAR(a_num, a, 0.01 * a);
   const double p_max = *std::max_element(contact.pressure().begin(), contact.pressure().end());
-  EXPECT_NEAR(p_max, hertz.peak_pressure(), 0.02 * hertz.peak_pressure());
+  EXPECT_NEAR(p_max, hertz.peak_pressure(), 1e-3 * hertz.peak_pressure());
   EXPECT_NEAR(r.mean_pressure * g.area(), c.load, 1e-10 * c.load);
   // Outside the contact the surface follows Johnson's (3.42b) towards the far field.
-  const std::size_t mid = 128, off = 96;  // r = 3a
-  EXPECT_NEAR(contact.displacement()(mid + off, mid), hertz_outside(hertz, off * dx),
-              0.02 * hertz_outside(hertz, off * dx));
+  const std::size_t mid = cells / 2, off = 3 * c.n / 4;  // r = 1.5 a
+  const double outside = hertz_outside(hertz, static_cast<double>(off) * dx);
+  EXPECT_NEAR(contact.displacement()(mid + off, mid), outside, 2e-3 * outside);
+  RecordProperty("outside_relative_error", std::to_string(contact.displacement()(mid + off, mid) / outside - 1.0));
   RecordProperty("approach_relative_error", std::to_string(r.interference / hertz.approach() - 1.0));
   RecordProperty("a_relative_error", std::to_string(a_num / a - 1.0));
   RecordProperty("p0_relative_error", std::to_string(p_max / hertz.peak_pressure() - 1.0));
@@ -268,9 +274,9 @@ TEST_P(FreeHertzTest, ApproachWithin1PercentContactRadiusAndPeakPressureWithin2P
 
 INSTANTIATE_TEST_SUITE_P(
     Spheres, FreeHertzTest,
-    ::testing::Values(HertzCase{"pin", 3e-3, 1.0, effective_modulus(73e9, 0.17, 73e9, 0.17), 0.0, 0},
-                      HertzCase{"unit", 1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0, 0.0, 0},
-                      HertzCase{"stiff", 0.05, 20.0, 150e9, 0.0, 0}),
+    ::testing::Values(HertzCase{"pin", 3e-3, 1.0, effective_modulus(73e9, 0.17, 73e9, 0.17), 4.0, 64},
+                      HertzCase{"unit", 1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0, 3.0, 96},
+                      HertzCase{"stiff", 0.05, 20.0, 150e9, 2.5, 128}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(NormalContact, AFreeWindowTooSmallForItsContactIsRefused) {
