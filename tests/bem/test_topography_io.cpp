@@ -19,6 +19,7 @@
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "xdmf_check.hpp"
 
 using namespace wearscale;
 using namespace wearscale::bem;
@@ -139,7 +140,8 @@ TEST(TopographyIo, Hdf5RoundTripWithXdmfSidecar) {
   std::stringstream xml_text;
   xml_text << std::ifstream(sidecar).rdbuf();
   const std::string xml = xml_text.str();
-  EXPECT_THAT(xml, HasSubstr("surface.h5:/surface/height"));
+  EXPECT_THAT(xml, HasSubstr("surface.h5:/xdmf/surface/height"));
+  expect_xdmf_describes(sidecar, path, {32, 24}, {"/surface/height"}, std::array<double, 4>{0.0, 0.0, g.dx(), g.dy()});
 
   const RealField back = read_topography(path);
   ASSERT_EQ(back.grid(), g);

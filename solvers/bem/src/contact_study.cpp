@@ -134,10 +134,11 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
     cy.push_back(cl.centroid_y);
   }
   h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"});
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
+                   {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g,
-             {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
-              {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
+  sidecar.write(out / "contact.xdmf", h5_path);
   write_csv(out / "clusters.csv", {"area_m2", "centroid_x_m", "centroid_y_m"}, {area, cx, cy},
             {"micro-contacts of the solved contact, largest first"});
   return {{"results", results},
@@ -304,8 +305,10 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
     columns.insert(columns.end(), {trailing, leading, initiates});
   }
   h5.write_table("/clusters", names, columns, table_units);
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, xdmf);
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g, xdmf);
+  sidecar.write(out / "contact.xdmf", h5_path);
   std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
   if (crack)
     comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));

@@ -227,16 +227,18 @@ RealField read_topography(const fs::path& file, const std::string& dataset, cons
 }
 
 fs::path write_surface(const fs::path& file, const RealField& h, const SurfaceAttributes& attributes) {
+  XdmfSidecar xdmf(h.grid());
   {
     H5Writer writer(file);
     writer.write_field(default_surface_dataset, h, "m");
     for (const auto& [key, value] : attributes) writer.set_attribute(default_surface_dataset, key, value);
     writer.set_attribute("/surface", "description", "surface heights h(x_i, y_j), rows i along x, columns j along y");
+    xdmf.add(writer, {{default_surface_dataset, "height"}});
     writer.commit();
   }
   fs::path sidecar = file;
   sidecar.replace_extension(".xdmf");
-  write_xdmf(sidecar, file, h.grid(), {{default_surface_dataset, "height"}});
+  xdmf.write(sidecar, file);
   return sidecar;
 }
 
