@@ -2,14 +2,15 @@
 # what ParaView sees as one JSON object: for each reader (XDMFReader, and
 # Xdmf3ReaderS, which File > Open and OpenDataFile pick), the data class,
 # dimensions, origin, spacing, bounds, time steps and the value of ARRAY at
-# the point nearest to (X, Y, 0) at TIME (or the first step).
+# the point nearest to (X, Y, 0) at TIME (or the first step), and the bounds
+# of Warp By Scalar of ARRAY (scale 1).
 #   pvpython paraview_probe.py FILE.xdmf ARRAY X Y [TIME]
 import json
 import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import Delete, XDMFReader, Xdmf3ReaderS
+from paraview.simple import Delete, WarpByScalar, XDMFReader, Xdmf3ReaderS
 
 
 def probe(make_reader, path, array, x, y, time):
@@ -30,6 +31,13 @@ def probe(make_reader, path, array, x, y, time):
     values = data.GetPointData().GetArray(array)
     out["point"] = list(data.GetPoint(point)) if point >= 0 else None
     out["value"] = values.GetValue(point) if point >= 0 and values is not None else None
+    warp = WarpByScalar(Input=reader, Scalars=["POINTS", array], ScaleFactor=1.0)
+    if time is None:
+        warp.UpdatePipeline()
+    else:
+        warp.UpdatePipeline(time)
+    out["warp_bounds"] = list(servermanager.Fetch(warp).GetBounds())
+    Delete(warp)
     Delete(reader)
     return out
 

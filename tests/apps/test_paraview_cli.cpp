@@ -60,10 +60,12 @@ std::map<std::string, nlohmann::json> paraview_probe(const fs::path& xmf, const 
 }
 
 // ParaView sees `nx` × `ny` points in the plane z = 0 from (x0, y0), `dx`,
-// `dy` apart, and `value` at (x0 + i dx, y0 + j dy).
+// `dy` apart, and `value` at (x0 + i dx, y0 + j dy); Warp By Scalar spans
+// `range` (the field's min, max) along z.
 void expect_paraview_shows(const fs::path& xmf, const std::string& array, std::size_t nx, std::size_t ny,
                            std::array<double, 4> geometry, std::size_t i, std::size_t j, double value,
-                           std::optional<double> time = std::nullopt) {
+                           std::optional<double> time = std::nullopt,
+                           std::optional<std::pair<double, double>> range = std::nullopt) {
   const auto [x0, y0, dx, dy] = geometry;
   const double x = x0 + static_cast<double>(i) * dx, y = y0 + static_cast<double>(j) * dy;
   const auto readers = paraview_probe(xmf, array, x, y, time);
@@ -79,6 +81,13 @@ void expect_paraview_shows(const fs::path& xmf, const std::string& array, std::s
     EXPECT_NEAR(v["point"][0].get<double>(), x, 1e-12 * std::abs(dx) * static_cast<double>(nx));
     EXPECT_NEAR(v["point"][1].get<double>(), y, 1e-12 * std::abs(dy) * static_cast<double>(ny));
     EXPECT_EQ(v["value"].get<double>(), value) << array << " at (" << x << ", " << y << ")";
+    if (range) {  // Warp By Scalar lifts the plane along z by the field, x and y unchanged
+      // (its output points are float32: compared to float precision)
+      auto near = [](const nlohmann::json& a, double b) { EXPECT_NEAR(a.get<double>(), b, 1e-6 * std::abs(b)); };
+      for (int k : {0, 1, 2, 3}) near(v["warp_bounds"][k], v["bounds"][k].get<double>());
+      near(v["warp_bounds"][4], range->first);
+      near(v["warp_bounds"][5], range->second);
+    }
   }
 }
 
@@ -100,7 +109,9 @@ TEST(ParaViewCli, AGeneratedSurfaceOpensInTheXYPlaneWithXAlongX) {
   const fs::path xmf = work / "surface" / "rough.xdmf", h5 = work / "surface" / "rough.h5";
   expect_xdmf_describes(xmf, h5, {32, 16}, {"/surface/height"}, std::array<double, 4>{0.0, 0.0, dx, dy});
   SKIP_WITHOUT_PARAVIEW();
-  expect_paraview_shows(xmf, "height", 32, 16, {0.0, 0.0, dx, dy}, 21, 5, stored(h5, "/surface/height", 21, 5));
+  const auto h = wearscale::H5Reader(h5).read_series("/surface/height");
+  expect_paraview_shows(xmf, "height", 32, 16, {0.0, 0.0, dx, dy}, 21, 5, stored(h5, "/surface/height", 21, 5),
+                        std::nullopt, std::pair{*std::min_element(h.begin(), h.end()), *std::max_element(h.begin(), h.end())});
 }
 
 TEST(ParaViewCli, ContactFieldsOpenInTheXYPlaneWithXAlongX) {
