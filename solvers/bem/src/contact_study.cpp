@@ -27,10 +27,13 @@ namespace {
 RealField build_surface(const Config& c) {
   RealField h;
   if (c.has("surface")) {
-    const std::string dataset = c.string_or("dataset", default_surface_dataset);
-    TopographySize size;
-    if (c.has("size")) size.lx = size.ly = c.number("size", Range::positive(), units::length);
-    h = read_topography(c.string("surface"), dataset, size);
+    TopographyOptions read;
+    read.dataset = c.string_or("dataset", default_surface_dataset);
+    if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
+    read.missing = missing_points_from(
+        c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
+        c.full_key(MissingPointsChoice::key));
+    h = read_measured_topography(c.string("surface"), read).heights;
   } else {
     const long n = c.integer("grid", Range::closed(8, 16384));
     const double l = c.number("size", Range::positive(), units::length);
