@@ -72,7 +72,7 @@ std::uint8_t Bytes::u8(const char* what) { return static_cast<std::uint8_t>(take
 std::uint16_t Bytes::u16(const char* what) { return unsigned_field<std::uint16_t>(*this, big_, what); }
 std::uint32_t Bytes::u32(const char* what) { return unsigned_field<std::uint32_t>(*this, big_, what); }
 std::uint64_t Bytes::u64(const char* what) { return unsigned_field<std::uint64_t>(*this, big_, what); }
-float Bytes::f32(const char* what) { return std::bit_cast<float>(u32(what)); }
+double Bytes::f32(const char* what) { return static_cast<double>(std::bit_cast<float>(u32(what))); }
 double Bytes::f64(const char* what) { return std::bit_cast<double>(u64(what)); }
 
 std::string Bytes::cstring(const char* what) {

@@ -54,7 +54,7 @@ class Bytes {
   std::int32_t i32(const char* what) { return static_cast<std::int32_t>(u32(what)); }
   std::uint64_t u64(const char* what);
   std::int64_t i64(const char* what) { return static_cast<std::int64_t>(u64(what)); }
-  float f32(const char* what);
+  double f32(const char* what);  ///< a float32, exactly as a double
   double f64(const char* what);
   /// A NUL-terminated string (the NUL consumed).
   std::string cstring(const char* what);

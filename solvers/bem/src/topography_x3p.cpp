@@ -244,7 +244,7 @@ RawTopography parse_x3p(std::string_view bytes, const std::string& where, const 
     double v = 0.0;
     if (cz.data_type == "I") v = b.i16("the point data") * dz + z0;
     else if (cz.data_type == "L") v = b.i32("the point data") * dz + z0;
-    else if (cz.data_type == "F") v = static_cast<double>(b.f32("the point data")) * dz + z0;
+    else if (cz.data_type == "F") v = b.f32("the point data") * dz + z0;
     else v = b.f64("the point data") * dz + z0;
     raw.at(k % nx, k / nx) = v;
     if (std::isnan(v)) invalid(k);
