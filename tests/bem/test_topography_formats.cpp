@@ -571,6 +571,11 @@ TEST(TopographyFormats, UnsupportedFormatsSayWhichFormatsAreRead) {
 TEST(TopographyFormats, TheContentDecidesNotTheExtension) {
   expect_surface(read_measured_topography(write_file("renamed.dat.txt", gsf_file("m", false))), 6e-6, 2e-6, 1e-13,
                  "Gwyddion Simple Field");
+  const auto datx = datx_file("zygo.datx", true), renamed = scratch("zygo.h5");
+  fs::copy_file(datx, renamed, fs::copy_options::overwrite_existing);
+  TopographyOptions fill;
+  fill.missing = MissingPoints::Fill;
+  EXPECT_EQ(read_measured_topography(renamed, fill).format, "Zygo datx");
 }
 
 TEST(TopographyFormats, HostileHeadersCannotMakeTheReaderAllocateMoreThanAllowed) {

@@ -183,8 +183,13 @@ MeasuredTopography read_measured_topography(const fs::path& file, const Topograp
   char head[8] = {};
   std::ifstream(file, std::ios::binary).read(head, sizeof head);
   if (std::string_view(head, sizeof head) == kHdf5Magic) {
-    const auto ext = lower_extension(file);
-    return finish(ext == ".datx" ? formats::read_datx(file, o) : formats::read_h5(file, o), o);
+    // Zygo's files by name, or by their layout when renamed (and without the dataset asked for).
+    bool datx = lower_extension(file) == ".datx";
+    if (!datx) {
+      const H5Reader reader(file);
+      datx = !reader.exists(o.dataset) && (reader.exists("/MetaData") || reader.exists("/Measurement/Surface"));
+    }
+    return finish(datx ? formats::read_datx(file, o) : formats::read_h5(file, o), o);
   }
   if (is_hdf5_name(file)) throw InputError(fmt::format("{}: not an HDF5 file", name));
   return parse_measured_topography(slurp(file), name, o);
