@@ -71,3 +71,17 @@ TEST(HarmonicFill, NothingMeasuredIsRefused) {
   const std::vector<std::uint8_t> none(h.size(), 0);
   EXPECT_EQ(harmonic_fill(h, none), 0u);
 }
+
+TEST(HarmonicFill, ExtremeHeightsAndSpacingsCannotOverflow) {
+  // Found by fuzzing: heights near the largest double on a grid of very unequal, tiny steps.
+  const Grid2D g(6, 5, 6e-300, 5e-290);
+  RealField h(g);
+  for (std::size_t k = 0; k < h.size(); ++k) h[k] = (k % 2 ? 1.0 : -1.0) * 1.7e308;
+  std::vector<std::uint8_t> missing(h.size(), 0);
+  missing[g.index(2, 2)] = missing[g.index(3, 2)] = 1;
+  harmonic_fill(h, missing);
+  for (double v : h) {
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_LE(std::abs(v), 1.7e308);
+  }
+}

@@ -1,5 +1,7 @@
 #include "wearscale/bem/harmonic_fill.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -23,7 +25,18 @@ std::size_t harmonic_fill(RealField& h, std::span<const std::uint8_t> missing) {
 
   // Σ_q w_pq (h_p − h_q) = 0 at every missing p over its neighbours q in
   // the grid: symmetric positive definite, every hole touching a measured point.
-  const double wx = 1.0 / (g.dx() * g.dx()), wy = 1.0 / (g.dy() * g.dy());
+  // Weights 1/dx², 1/dy² scaled so the larger is 1 (the smaller kept above
+  // 1e-12 so that no direction decouples), heights scaled to at most 1 in
+  // magnitude: the solution lies between the measured values (maximum
+  // principle), so nothing can overflow whatever the file's numbers.
+  const double ratio = g.dx() / g.dy();
+  const double wx = ratio <= 1.0 ? 1.0 : std::max(1.0 / (ratio * ratio), 1e-12);
+  const double wy = ratio <= 1.0 ? std::max(ratio * ratio, 1e-12) : 1.0;
+  double scale = 0.0;
+  for (std::size_t k = 0; k < h.size(); ++k)
+    if (unknown[k] < 0) scale = std::max(scale, std::abs(h[k]));
+  if (!std::isfinite(scale)) throw std::invalid_argument("harmonic_fill: a measured height is not finite");
+  if (scale == 0.0) scale = 1.0;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(n) * 5);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
@@ -38,7 +51,7 @@ std::size_t harmonic_fill(RealField& h, std::span<const std::uint8_t> missing) {
         if (unknown[q] >= 0)
           entries.emplace_back(p, unknown[q], -w);
         else
-          rhs[p] += w * h[q];
+          rhs[p] += w * (h[q] / scale);
       };
       if (i > 0) neighbour(i - 1, j, wx);
       if (i + 1 < g.nx) neighbour(i + 1, j, wx);
@@ -55,7 +68,7 @@ std::size_t harmonic_fill(RealField& h, std::span<const std::uint8_t> missing) {
   if (solver.info() != Eigen::Success || !filled.allFinite())
     throw NumericalError("harmonic fill", 0, "missing heights", "the Laplace system could not be solved");
   for (std::size_t k = 0; k < h.size(); ++k)
-    if (unknown[k] >= 0) h[k] = filled[unknown[k]];
+    if (unknown[k] >= 0) h[k] = scale * filled[unknown[k]];
   return static_cast<std::size_t>(n);
 }
 
