@@ -74,3 +74,29 @@ void BM_ReadSdfAscii(benchmark::State& state) {
 BENCHMARK(BM_ReadSdfAscii)->Arg(1024)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// ParaView's view of a field (an HDF5 virtual dataset, one mapping per row)
+// against writing the field alone: n × n doubles, compressed as wearscale writes them.
+#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/xdmf.hpp"
+
+namespace {
+void write_field(benchmark::State& state, bool view) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  RealField f(Grid2D(n, n, 1e-3, 1e-3));
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = std::sin(0.001 * static_cast<double>(k));
+  const auto path = std::filesystem::temp_directory_path() / "bench_xdmf_view.h5";
+  for (auto _ : state) {
+    H5Writer h5(path);
+    h5.write_field("/fields/p", f);
+    if (view) XdmfSidecar(f.grid()).add(h5, {{"/fields/p", "p"}});
+    h5.commit();
+  }
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  std::filesystem::remove(path);
+}
+void BM_WriteField(benchmark::State& state) { write_field(state, false); }
+void BM_WriteFieldAndItsXdmfView(benchmark::State& state) { write_field(state, true); }
+BENCHMARK(BM_WriteField)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WriteFieldAndItsXdmfView)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond);
+}  // namespace
