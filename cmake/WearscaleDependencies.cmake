@@ -80,10 +80,21 @@ if(NOT TARGET CLI11::CLI11)
   wearscale_missing("CLI11 (command-line parsing)" "libcli11-dev")
 endif()
 
-# --- OpenSSL (SHA-256 keys of cached LAMMPS results) ------------------------
+# --- OpenSSL (SHA-256 keys of cached LAMMPS results, MD5 sums of X3P data) ---
 find_package(OpenSSL QUIET COMPONENTS Crypto)
 if(NOT TARGET OpenSSL::Crypto)
   wearscale_missing("OpenSSL (libcrypto)" "libssl-dev")
+endif()
+
+# --- libzip and pugixml (ISO 25178-72 X3P topographies: XML and data in a ZIP) --
+# (pkg-config: Debian's libzip CMake package also wants the zipcmp tools installed)
+pkg_check_modules(LIBZIP QUIET IMPORTED_TARGET libzip)
+if(NOT LIBZIP_FOUND)
+  wearscale_missing("libzip" "libzip-dev")
+endif()
+find_package(pugixml QUIET)
+if(NOT TARGET pugixml::pugixml)
+  wearscale_missing("pugixml" "libpugixml-dev")
 endif()
 
 # --- OpenMP -------------------------------------------------------------------

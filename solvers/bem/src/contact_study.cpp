@@ -27,10 +27,13 @@ namespace {
 RealField build_surface(const Config& c) {
   RealField h;
   if (c.has("surface")) {
-    const std::string dataset = c.string_or("dataset", default_surface_dataset);
-    TopographySize size;
-    if (c.has("size")) size.lx = size.ly = c.number("size", Range::positive(), units::length);
-    h = read_topography(c.string("surface"), dataset, size);
+    TopographyOptions read;
+    read.dataset = c.string_or("dataset", default_surface_dataset);
+    if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
+    read.missing = missing_points_from(
+        c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
+        c.full_key(MissingPointsChoice::key));
+    h = read_measured_topography(c.string("surface"), read).heights;
   } else {
     const long n = c.integer("grid", Range::closed(8, 16384));
     const double l = c.number("size", Range::positive(), units::length);
@@ -142,10 +145,11 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
     cy.push_back(cl.centroid_y);
   }
   h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"});
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
+                   {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g,
-             {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
-              {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
+  sidecar.write(out / "contact.xdmf", h5_path);
   write_csv(out / "clusters.csv", {"area_m2", "centroid_x_m", "centroid_y_m"}, {area, cx, cy},
             {"micro-contacts of the solved contact, largest first"});
   return {{"results", results},
@@ -315,8 +319,10 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
     columns.insert(columns.end(), {trailing, leading, initiates});
   }
   h5.write_table("/clusters", names, columns, table_units);
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, xdmf);
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g, xdmf);
+  sidecar.write(out / "contact.xdmf", h5_path);
   std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
   if (crack)
     comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));
