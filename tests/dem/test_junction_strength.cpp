@@ -7,6 +7,7 @@
 
 #include "input_error_of.hpp"
 #include "wearscale/dem/junction_strength.hpp"
+#include "thesis_junction_cell.hpp"
 #include "wearscale/materials/material.hpp"
 
 using namespace wearscale;
@@ -37,15 +38,7 @@ JunctionStrengthSpec reduced(double contact_ratio, double pressure) {
 // 3.05 GPa).
 TEST(JunctionStrength, ThesisCellDetachesLargeJunctionsAndCrushesSmallOnes) {
   auto thesis_cell = [](double diameter, double pressure) {
-    JunctionStrengthSpec s;
-    s.top = s.bottom = cohesive_material(materials::silica(), 0.5);
-    s.cell.d0 = 1.5e-9;
-    s.cell.length = 25;
-    s.cell.height = 14;
-    s.cell.depth = 1;
-    s.contact_ratio = diameter / 37.5e-9;
-    s.pressure = pressure;
-    s.velocity = 50.0;
+    auto s = test_support::thesis_junction_cell(diameter, pressure, 50.0);
     s.sliding_distance = 0.6;
     return run_junction_strength(s);
   };

@@ -12,6 +12,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "shaken_hcp_block.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
@@ -50,7 +51,7 @@ Box cell(double depth) {
   return b;
 }
 
-double critical_step(const Simulation& s) { return std::get<CohesiveLaw>(s.law()).critical_time_step(s.particles()); }
+using test_support::critical_step;
 
 // The same particles repeated `copies` times along y in a cell that many
 // times deeper: there every pair meets one image of each neighbour only.
@@ -173,15 +174,7 @@ namespace {
 // (two close-packed layers) deep in z (a sphere meets the same three spheres
 // of the other layer above and below), shaken by random velocities.
 Simulation thin_block(double restitution, double step_fraction) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double radius = 50.0;  // d = 100 in [d_min, d_c]: second neighbours beyond δ_f
-  HcpLattice lattice{2.0 * radius, 1, 3, 1};
-  Particles p;
-  for (const auto& x : lattice.sites()) p.add({x, radius, 1.0, {0.02 * u(rng), 0.02 * u(rng), 0.02 * u(rng)}, 0, 0});
-  Simulation sim(std::move(p), lattice.box(), CohesiveLaw({table_6_4(restitution)}), NeighborSettings{2.0, 0, true});
-  sim.set_time_step(step_fraction * critical_step(sim));
-  return sim;
+  return test_support::shaken_hcp_block(1, 3, 1, table_6_4(restitution), step_fraction, 5);
 }
 }  // namespace
 

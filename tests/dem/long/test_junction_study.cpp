@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "../thesis_junction_cell.hpp"
 #include "wearscale/dem/junction_strength.hpp"
 #include "wearscale/materials/material.hpp"
 
@@ -18,7 +19,6 @@ using namespace wearscale::dem;
 
 namespace {
 
-constexpr double cell_length = 37.5e-9;
 const std::vector<double> diameters{5e-9, 10e-9, 20e-9, 37.5e-9};
 const std::vector<double> pressures{0.0, 1e9, 2e9, 3e9, 4e9, 5e9, 6e9};
 
@@ -31,16 +31,7 @@ Grid thesis_grid() {
   std::vector<JunctionStrengthSpec> specs;
   for (double d : diameters)
     for (double p : pressures) {
-      JunctionStrengthSpec s;
-      s.top = s.bottom = cohesive_material(materials::silica(), 0.5);
-      s.cell.d0 = 1.5e-9;
-      s.cell.length = 25;
-      s.cell.height = 14;
-      s.cell.depth = 1;
-      s.contact_ratio = d / cell_length;
-      s.pressure = p;
-      s.velocity = 10.0;
-      specs.push_back(s);
+      specs.push_back(test_support::thesis_junction_cell(d, p, 10.0));
     }
   std::vector<JunctionStrengthResult> flat(specs.size());
   std::atomic<std::size_t> next{0};
