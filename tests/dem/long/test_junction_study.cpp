@@ -115,7 +115,7 @@ TEST(JunctionStudy, ThesisCellLargeJunctionsDetachAndSmallOnesAreCrushed) {
 
 // "At D = L, the resistance is equal to the shear strength of the material",
 // which the thesis reads off as 7.5 GPa (7.11). Not reproduced: this DEM's
-// full contact peaks at 9.3-10.2 GPa (falling with p_N), 24-36 % above, with
+// full contact peaks at 9.1-10.2 GPa (falling with p_N), 22-35 % above, with
 // the same particles (σ_m,T = 9 GPa) and the thesis' force law; the HCP patch
 // test of these particles shears at 10.8 GPa. Characterised here (docs/dem.md).
 TEST(JunctionStudy, ThesisCellFullContactPeaksAboveTheThesisStrength) {
