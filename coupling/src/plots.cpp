@@ -88,15 +88,17 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
 std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
                                                             const std::filesystem::path& png, const std::string& title,
                                                             const std::vector<double>& contact_ratios, double sigma,
-                                                            double p_crit) {
+                                                            double p_crit, double length) {
   std::string plots;
   const double s = sigma / 1e9, pc = p_crit / 1e9;
   for (std::size_t k = 0; k < contact_ratios.size(); ++k) {
     const double c = contact_ratios[k];
     const int colour = static_cast<int>(k) + 1;
+    const std::string label = length > 0.0 ? fmt::format("DEM, D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
+                                           : fmt::format("DEM, D/L = {:.3g}", c);
     plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
-                         "title 'DEM, D/L = {:.3g}', ",
-                         runs_csv.string(), c, colour, c);
+                         "title '{}', ",
+                         runs_csv.string(), c, colour, label);
     plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
   }
   plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";
