@@ -135,6 +135,7 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
   double& shift = gap_shift_;  // the last mean gap: carried across solves (warm start)
   for (int it = 0; it < opt.max_iterations; ++it) {
     convolve(p_, u_, alpha);  // u = K (α p)
+    if (added_ != nullptr) added_->add(p_, alpha, u_);
 
     // Pass 1 over the contact S = {p > 0}: mean gap ḡ, Σ_S (g − ḡ)² (by sums
     // shifted by the last ḡ, which keeps them free of cancellation), and the
@@ -193,7 +194,7 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
 
     // Step length τ = Σ g t / Σ t (K t), the denominator by Parseval from the
     // spectrum of t: one forward FFT instead of a full convolution.
-    const double tkt = quadratic_form(t_);
+    const double tkt = quadratic_form(t_) + (added_ != nullptr ? added_->quadratic_form(t_) : 0.0);
     // No descent direction (a contact of one point, or a flat gap on S) while
     // points outside still penetrate: admit them with a cell's own stiffness.
     const double tau = (tkt == 0.0 && gt == 0.0) ? 1.0 / self_compliance_ : gt / tkt;
