@@ -74,32 +74,34 @@ TEST(PinOnDiscRestart, ExplicitRunFromASavedStateEndsBitForBitAsAnUninterruptedO
 
 TEST(PinOnDiscRestart, AdaptiveRunFromAStateSavedAtARestartEndsBitForBitAsAnUninterruptedOne) {
   const auto setup = small(0.03);
+  AdaptiveOptions options;
+  options.restart_every = 5;
   PinOnDisc whole(setup);
   std::vector<PinOnDiscSample> reference;
   long steps = 0;
-  run_adaptive(whole, {}, [&](const PinOnDiscSample& x) { reference.push_back(x); },
+  run_adaptive(whole, options, [&](const PinOnDiscSample& x) { reference.push_back(x); },
                [&](const AdaptiveStatus& status) { steps = status.steps; });
-  ASSERT_GT(steps, 40) << "the test needs a run of several restart segments";
+  ASSERT_GT(steps, 15) << "the test needs a run of several restart segments";
 
   PinOnDisc first(setup);
   std::vector<PinOnDiscSample> samples;
   CheckpointState saved;
   AdaptiveStatus at;
   try {
-    run_adaptive(first, {}, [&](const PinOnDiscSample& x) { samples.push_back(x); },
+    run_adaptive(first, options, [&](const PinOnDiscSample& x) { samples.push_back(x); },
                  [&](const AdaptiveStatus& status) {
-                   if (!status.segment_end || status.steps < 40) return;
+                   if (!status.segment_end || status.steps < 10) return;
                    first.save(saved);
                    at = status;
                    throw Stop{};  // killed right after its checkpoint
                  });
-    FAIL() << "the run should have stopped at step 40";
+    FAIL() << "the run should have stopped at step 10";
   } catch (const Stop&) {
   }
-  EXPECT_EQ(at.steps, 40);
+  EXPECT_EQ(at.steps, 10);
   PinOnDisc second(setup);
   second.restore(saved);
-  AdaptiveOptions resume;
+  AdaptiveOptions resume = options;
   resume.initial_step = at.next_step;
   resume.steps_done = at.steps;
   resume.observe_start = false;
