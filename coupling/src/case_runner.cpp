@@ -324,11 +324,22 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  // A swept value that is not a number (a choice) is written as its index.
+  bool numeric = true;
+  for (const auto& v : values) {
+    try {
+      (void)units::parse_quantity(v);
+    } catch (const std::exception&) {
+      numeric = false;
+    }
+  }
+  std::string legend;
+  for (std::size_t k = 0; k < values.size() && !numeric; ++k) legend += fmt::format("{}{} = {}", k ? ", " : "", k, values[k]);
   std::vector<SweepTable> tables;
   for (std::size_t first = 0; first < runs.size(); first += values.size()) {
     std::vector<std::vector<double>> columns(names.size() + 1);
     for (std::size_t k = first; k < first + values.size(); ++k) {
-      columns[0].push_back(units::parse_quantity(run_value[k]).value);
+      columns[0].push_back(numeric ? units::parse_quantity(run_value[k]).value : static_cast<double>(k - first));
       for (std::size_t c = 0; c < names.size(); ++c) {
         const auto& res = runs[k].summary.results;
         columns[c + 1].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
@@ -344,6 +355,7 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
     std::vector<std::string> comments{
         fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
     if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
+    if (!numeric) comments.push_back(fmt::format("{}: the index of the value: {}", key, legend));
     write_csv(table, header, spans, comments);
     sweep.files.push_back(table);
     tables.push_back({label.empty() ? "model" : label, table});
@@ -359,6 +371,18 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   if (!curves.empty())
     if (auto png = plot_friction_curves(curves, sweep.output_dir / "friction_curves.png", sweep.case_name))
       sweep.files.push_back(*png);
+  std::vector<FrictionCurve> profiles;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const auto csv = runs[k].summary.output_dir / "disc_profile.csv";
+    if (std::filesystem::exists(csv)) profiles.push_back({curves.size() == runs.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
+  }
+  if (!profiles.empty()) {
+    const std::string thickness = "materials.layer.thickness";  // one oxide for all runs: its interface is drawn
+    const bool one_oxide = key != thickness && series_key != thickness && probe.has(thickness);
+    const double h = one_oxide ? probe.number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
+    if (auto png = plot_disc_profiles(profiles, sweep.output_dir / "disc_profiles.png", sweep.case_name, h))
+      sweep.files.push_back(*png);
+  }
   if (key == "materials.layer.thickness" && std::find(names.begin(), names.end(), "mu_mean") != names.end())
     if (auto png = plot_friction_vs_thickness(tables, sweep.output_dir / "friction_vs_thickness.png"))
       sweep.files.push_back(*png);

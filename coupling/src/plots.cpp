@@ -1,5 +1,6 @@
 #include "wearscale/coupling/plots.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
@@ -93,6 +94,23 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
       "plot {}\nunset multiplot\n",
       literal(title), mu, wear);
   return render_plot(script, png);
+}
+
+std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<FrictionCurve>& profiles,
+                                                        const std::filesystem::path& png, const std::string& title,
+                                                        double layer_thickness) {
+  std::string curves;
+  for (std::size_t k = 0; k < profiles.size(); ++k)
+    curves += fmt::format("{}'{}' using ($1*1e3):(-$2*1e6) with lines lw 2 lc rgb '#{}' title '{}'", k ? ", " : "",
+                          profiles[k].csv.string(), colour(k), literal(profiles[k].label));
+  if (layer_thickness > 0.0 && std::isfinite(layer_thickness))
+    curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
+                          -layer_thickness * 1e6);
+  return render_plot(fmt::format("set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
+                                 "set title '{}'\nset xlabel 'across the track x [mm]'\nset ylabel 'disc surface [µm]'\n"
+                                 "set grid\nset key outside right\nplot {}\n",
+                                 literal(title), curves),
+                     png);
 }
 
 std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vector<SweepTable>& tables,

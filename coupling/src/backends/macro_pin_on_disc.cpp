@@ -74,7 +74,9 @@ class MacroPinOnDisc final : public Scale {
     s_.validate();
     if (s_.track == tribometer::Track::Resolved) {
       const double revolution = s_.tilt_period();
-      if (c.has("nonplanarity.period") && std::abs(s_.nonplanar_period - revolution) > 1e-3 * revolution)
+      const double cell = s_.size / static_cast<double>(s_.grid);
+      if (c.has("nonplanarity.period") &&
+          std::lround(s_.nonplanar_period / cell) != static_cast<long>(s_.track_cells()))  // not the same whole track
         throw c.error("nonplanarity.period",
                       fmt::format("a resolved track's tilt turns with the disc, once per revolution ({:g} m: "
                                   "path_length on the {}-cell track)",

@@ -29,6 +29,13 @@ struct FrictionCurve {
 std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
                                                           const std::filesystem::path& png, const std::string& title);
 
+/// The final worn depth of the disc across the track (disc_profile.csv of each
+/// run: x, depth, through_layer) of one or several runs, with the oxide's
+/// thickness drawn when given (> 0): the grooves are where a curve passes it.
+std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<FrictionCurve>& profiles,
+                                                        const std::filesystem::path& png, const std::string& title,
+                                                        double layer_thickness);
+
 /// A sweep table (one per series of a sweep) and the name of its curve.
 struct SweepTable {
   std::string label;
