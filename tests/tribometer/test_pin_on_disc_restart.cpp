@@ -155,3 +155,24 @@ TEST(PinOnDiscGuards, ANonFiniteStateInTheAdaptiveIntegratorIsANumericalError) {
     EXPECT_THAT(e.detail(), ::testing::HasSubstr("cell (0, 5)"));
   }
 }
+
+TEST(PinOnDiscGuards, AnImplicitStageWhoseContactDoesNotConvergeLeavesTheModelAsItWas) {
+  // The adaptive integrator then retries with a shorter step (ARKODE's
+  // recoverable convergence failure): nothing of the failed attempt may stay.
+  auto setup = small(0.01);
+  setup.max_iterations = 2;  // every solve runs out of iterations
+  PinOnDisc model(setup);
+  const auto before = model.state();
+  const std::vector<double> warm(model.contact().pressure().begin(), model.contact().pressure().end());
+  std::vector<double> z(before.size()), rate(before.size());
+  PinOnDiscSample sample;
+  try {
+    model.solve_stage(1e-3, before.data(), 1e-3, z.data(), rate.data(), sample);
+    FAIL() << "the stage cannot be solved in two iterations";
+  } catch (const StageNotSolved& e) {
+    EXPECT_EQ(e.quantity(), "contact at s = 0.001 m");
+    EXPECT_THAT(e.detail(), ::testing::HasSubstr("no convergence"));
+  }
+  EXPECT_EQ(model.state(), before);
+  EXPECT_TRUE(std::equal(warm.begin(), warm.end(), model.contact().pressure().begin()));
+}

@@ -31,7 +31,8 @@ struct Data {
   bool freeze = false;     // materials per column, switched at the roots (layer_test = "disc")
   std::vector<double> a, z, rate;
   PinOnDiscSample sample;
-  std::string error;
+  std::string error;   // from a callback
+  std::string arkode;  // ARKODE's last error message
 };
 
 int rhs(sunrealtype s, N_Vector y, N_Vector dyds, void* user) {
@@ -81,10 +82,14 @@ int nls_solve(SUNNonlinearSolver nls, N_Vector, N_Vector correction, N_Vector, s
   try {
     d->model->solve_stage(s, d->a.data(), gamma, d->z.data(), d->rate.data(), d->sample,
                           d->freeze ? &d->frozen : nullptr);
+  } catch (const StageNotSolved& e) {
+    d->error = e.what();
+    return SUN_NLS_CONV_RECVR;  // ARKODE retries with a shorter step
   } catch (const std::exception& e) {
     d->error = e.what();
     return -1;  // unrecoverable
   }
+  d->error.clear();
   for (std::size_t k = 0; k < d->a.size(); ++k) zc[k] = d->z[k] - zp[k];
   return SUN_NLS_SUCCESS;
 }
@@ -103,6 +108,14 @@ int nls_current(SUNNonlinearSolver, int* n) {
 int nls_fails(SUNNonlinearSolver, long* n) {
   *n = 0;
   return SUN_NLS_SUCCESS;
+}
+
+// ARKODE's own messages go into the error we raise, not to stderr.
+void arkode_message(int code, const char*, const char* function, char* message, void* user) {
+  if (code < 0) {
+    auto* d = static_cast<Data*>(user);
+    d->arkode = fmt::format("{}: {}", function, message);
+  }
 }
 
 void check(int flag, const char* call, double s, const Data& d) {
@@ -174,6 +187,7 @@ void run_adaptive(PinOnDisc& model, const AdaptiveOptions& opt,
   // uninterrupted run does (the rate at that state is in the model's checkpoint).
   using Memory = std::unique_ptr<void, void (*)(void*)>;
   auto configure = [&](void* mem, double s_from, double h0) {
+    check(ARKStepSetErrHandlerFn(mem, arkode_message, &data), "ARKStepSetErrHandlerFn", s_from, data);
     check(ARKStepWFtolerances(mem, weights), "ARKStepWFtolerances", s_from, data);
     check(ARKStepSetTableNum(mem, ARKODE_TRBDF2_3_3_2, ARKODE_ERK_NONE), "ARKStepSetTableNum", s_from, data);
     check(ARKStepSetNonlinearSolver(mem, nls), "ARKStepSetNonlinearSolver", s_from, data);
@@ -215,7 +229,9 @@ void run_adaptive(PinOnDisc& model, const AdaptiveOptions& opt,
       const int flag = ARKStepEvolve(mem.get(), s_end, y, &s, ARK_ONE_STEP);
       if (flag < 0)
         throw NumericalError(kSolver, status.steps, "ARKStepEvolve",
-                             fmt::format("ARKODE flag {} at s = {:g} m{}", flag, s, data.error.empty() ? "" : ": " + data.error));
+                             fmt::format("ARKODE flag {} at s = {:g} m{}{}", flag, s,
+                                         data.arkode.empty() ? "" : " (" + data.arkode + ")",
+                                         data.error.empty() ? "" : ": " + data.error));
       double* Y = N_VGetArrayPointer(y);
       for (std::size_t k = 0; k < size; ++k)
         if (!std::isfinite(Y[k]))

@@ -15,6 +15,7 @@ constexpr const char* kModel = "tribometer/pin-on-disc";
 constexpr int kMaterialSweeps = 4;      // re-solves of an implicit stage whose materials changed
 constexpr int kDiscIterations = 50;     // fixed-point passes on the disc's share of the stage compliance
 constexpr double kDiscTolerance = 1e-12;
+constexpr int kStageIterations = 3000;   // BEM iterations of a stage solve before a shorter stage is asked for
 
 void require(bool ok, const char* key, double value, const char* allowed) {
   if (!ok) throw InputError(fmt::format("pin-on-disc: {} = {:g} is not allowed; allowed: {}", key, value, allowed));
@@ -92,6 +93,7 @@ void PinOnDiscSetup::validate() const {
   require(nonplanar_slope >= 0.0 && nonplanar_slope < 0.2, "nonplanarity.slope", nonplanar_slope, "[0, 0.2)");
   require(nonplanar_period > 0.0 && std::isfinite(nonplanar_period), "nonplanarity.period", nonplanar_period, "> 0 m");
   require(tolerance > 0.0 && tolerance < 1e-3, "tolerance", tolerance, "(0, 1e-3)");
+  require(max_iterations >= 1, "max_iterations", max_iterations, "≥ 1");
   if (track == Track::Resolved)
     require(static_cast<double>(grid) * path_length / size <= 1e6, "path_length", path_length,
             "at most 10⁶ track cells along the circumference (resolved track)");
@@ -205,7 +207,7 @@ int PinOnDisc::count_grooves(const double* disc) const {
   return grooves;
 }
 
-bem::ContactResult PinOnDisc::solve_contact(double s) {
+bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations) {
   const Grid2D& g = grid();
   for (std::size_t k = 0; k < profile_.size(); ++k)
     if (!std::isfinite(profile_[k]))
@@ -215,7 +217,7 @@ bem::ContactResult PinOnDisc::solve_contact(double s) {
   contact_.set_surface(profile_);
   bem::ContactResult r;
   try {
-    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, 20000});
+    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, max_iterations});
   } catch (const NumericalError& e) {
     contact_.set_added_compliance(nullptr);
     throw NumericalError(kModel, solves_, fmt::format("contact at s = {:g} m", s),
@@ -283,7 +285,7 @@ void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pi
   if (!std::isfinite(s)) throw NumericalError(kModel, solves_, "sliding distance", fmt::format("s = {}", s));
   build_profile(s);
   classify(s, disc_.data(), layer_);
-  const auto r = solve_contact(s);
+  const auto r = solve_contact(s, setup_.max_iterations);
   rates(s, out, pin_rate, disc_rate);
   out.iterations = r.iterations;
 }
@@ -505,6 +507,16 @@ void PinOnDisc::solve_stage(double s, const double* a, double gamma, double* z, 
   const std::size_t np = pin_.size(), nx = g.nx, ny = g.ny;
   const double share_layer = pin_share(setup_.on_layer), share_substrate = pin_share(setup_.on_substrate);
   const double disc_scale = g.lx / setup_.path_length;
+  const std::vector<double> warm_pressure(contact_.pressure().begin(), contact_.pressure().end());
+  const double warm_shift = contact_.warm_gap_shift();
+  const std::vector<double> state_before = state();
+  const double s_before = s_;
+  auto give_up = [&](const NumericalError& e) {
+    contact_.set_added_compliance(nullptr);
+    contact_.set_warm_start(warm_pressure, warm_shift);
+    set_state(state_before.data(), s_before);
+    throw StageNotSolved(e.solver(), e.step(), e.quantity(), e.detail());
+  };
   set_state(a, s);
   build_profile(s);
   const RealField surface = profile_;  // h of the stage's explicit part a
@@ -552,7 +564,11 @@ void PinOnDisc::solve_stage(double s, const double* a, double gamma, double* z, 
     for (int pass = 0;; ++pass) {
       for (std::size_t i = 0; i < nx; ++i)
         for (std::size_t j = 0; j < ny; ++j) profile_(i, j) = surface(i, j) - residual[i];
-      r = solve_contact(s);
+      try {
+        r = solve_contact(s, std::min(kStageIterations, setup_.max_iterations));
+      } catch (const NumericalError& e) {
+        give_up(e);
+      }
       column_residual(contact_.pressure(), next);
       double change = 0.0, scale = 0.0;
       for (std::size_t i = 0; i < nx; ++i) {
@@ -561,13 +577,11 @@ void PinOnDisc::solve_stage(double s, const double* a, double gamma, double* z, 
       }
       residual = next;
       if (change <= kDiscTolerance * scale) break;
-      if (pass + 1 == kDiscIterations) {
-        contact_.set_added_compliance(nullptr);
-        throw NumericalError(kModel, solves_, "implicit stage",
-                             fmt::format("the disc's wear did not settle in {} passes at s = {:g} m (change {:.3g} of "
-                                         "{:.3g})",
-                                         kDiscIterations, s, change, scale));
-      }
+      if (pass + 1 == kDiscIterations)
+        give_up(NumericalError(kModel, solves_, "implicit stage",
+                               fmt::format("the disc's wear did not settle in {} passes at s = {:g} m (change {:.3g} "
+                                           "of {:.3g})",
+                                           kDiscIterations, s, change, scale)));
     }
     contact_.set_added_compliance(nullptr);
     // z = a + γ f(z): the surfaces worn by the stage's pressure.

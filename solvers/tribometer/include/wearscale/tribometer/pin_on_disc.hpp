@@ -27,6 +27,11 @@
 
 namespace wearscale::tribometer {
 
+/// An implicit stage whose contact solve did not converge (see solve_stage).
+struct StageNotSolved : NumericalError {
+  using NumericalError::NumericalError;
+};
+
 /// Which material the pin meets at a cell: the oxide while the worn depth is
 /// below h_layer. `Disc`: the depth of the worn disc (the oxide tilts with the
 /// disc, physical). `Tilted`: the depth with the tilt plane added, the
@@ -51,6 +56,7 @@ struct PinOnDiscSetup {
   LayerTest layer_test = LayerTest::Disc;
   Track track = Track::Averaged;
   double tolerance = 1e-10;         ///< BEM orthogonality error
+  int max_iterations = 20000;       ///< BEM iterations of a solve (of an implicit stage: at most 3000, then a shorter step)
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
   materials::InterfaceLaw on_substrate;  ///< pin on the substrate (e.g. SiO2/Si)
   bool like_on_like = true;         ///< pin and layer of one material: wear shared ½/½ on the layer
@@ -144,6 +150,8 @@ class PinOnDisc {
   /// (averaged track only). The material of each cell is that of `layer`
   /// (1: the oxide) when given, else made consistent with z by re-solving
   /// (at most a few times). Writes z, f(s, z) and the sample at z.
+  /// StageNotSolved if a contact solve does not converge (a shorter stage
+  /// may: the state and the warm start are left as they were).
   void solve_stage(double s, const double* a, double gamma, double* z, double* rate, PinOnDiscSample& sample,
                    const std::vector<char>* layer = nullptr);
   /// The material the pin meets at each cell for a state at s (1: the oxide).
@@ -156,7 +164,7 @@ class PinOnDisc {
   struct StageCompliance;
   void build_profile(double s);
   void classify(double s, const double* disc, std::vector<char>& layer) const;
-  bem::ContactResult solve_contact(double s);
+  bem::ContactResult solve_contact(double s, int max_iterations);
   void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
   double disc_height(const double* disc, std::size_t i, std::size_t j, double s) const;
   void deposit_swept(double s0, double s1);
