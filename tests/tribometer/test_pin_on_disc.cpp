@@ -55,6 +55,20 @@ double transition(const std::vector<PinOnDiscSample>& x) {
     if (e.substrate_contact > 0.0) return e.distance;
   return std::numeric_limits<double>::infinity();
 }
+
+// The same, stepped explicitly with a quarter of the setup's time step up to
+// the first contact with the substrate: the thesis step's own crossing moves
+// by a step from run to run (its contact chatters, and FFTW's measured plans
+// round differently), this one by a quarter.
+double converged_transition(PinOnDiscSetup setup) {
+  setup.time_step /= 4.0;
+  PinOnDisc model(setup);
+  while (model.steps() < model.total_steps()) {
+    const auto x = model.step();
+    if (x.substrate_contact > 0.0) return x.distance;
+  }
+  return std::numeric_limits<double>::infinity();
+}
 }  // namespace
 
 TEST(PinOnDisc, BareSiliconSlidesAtMuSiThroughout) {
@@ -111,8 +125,9 @@ TEST(PinOnDisc, ThickerOxideDelaysTheTransitionRaisesMuAndSparesTheDisc) {
 // The adaptive (implicit, ARKODE) integrator against the explicit thesis
 // step, converged (μ_mean within 0.1 % from dt = 0.02 s to 0.00125 s), on a
 // reduced grid through the oxide transition: μ_mean, μ_final (last 5 %), both
-// worn volumes within 1 %, the substrate reached within one explicit step, at
-// most a third of the contact solves.
+// worn volumes within 1 %, the substrate reached within one explicit step of
+// where the explicit stepping converges to, at most a third of the contact
+// solves.
 class AdaptiveAgainstExplicit : public ::testing::TestWithParam<double> {};
 
 TEST_P(AdaptiveAgainstExplicit, AgreesWithinOnePercentWithAThirdOfTheContactSolves) {
@@ -132,7 +147,8 @@ TEST_P(AdaptiveAgainstExplicit, AgreesWithinOnePercentWithAThirdOfTheContactSolv
   EXPECT_NEAR(adaptive.back().pin_wear, reference.back().pin_wear, 0.01 * reference.back().pin_wear);
   EXPECT_NEAR(adaptive.back().disc_wear, reference.back().disc_wear, 0.01 * reference.back().disc_wear);
   const double explicit_step = setup.velocity * setup.time_step;
-  EXPECT_NEAR(transition(adaptive), transition(reference), explicit_step);
+  EXPECT_NEAR(transition(adaptive), converged_transition(setup), explicit_step);
+  EXPECT_NEAR(transition(adaptive), transition(reference), 1.5 * explicit_step);  // its crossing ± its chatter
   EXPECT_LE(3 * model.contact_solves(), stepped.contact_solves());
   RecordProperty("explicit_solves", std::to_string(stepped.contact_solves()));
   RecordProperty("adaptive_solves", std::to_string(model.contact_solves()));

@@ -60,6 +60,18 @@ Outcome run(const PinOnDiscSetup& setup, bool adaptive = false) {
   return out;
 }
 
+// The first contact with the substrate, stepped explicitly with a quarter
+// of the thesis step: where the explicit stepping converges to.
+double converged_crossing(PinOnDiscSetup setup) {
+  setup.time_step /= 4.0;
+  PinOnDisc model(setup);
+  while (model.steps() < model.total_steps()) {
+    const auto x = model.step();
+    if (x.substrate_contact > 0.0) return x.distance;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
 void expect_within(double got, double want, double rtol, const char* what, double h) {
   EXPECT_NEAR(got, want, rtol * std::abs(want)) << what << " at h_layer = " << h;
 }
@@ -67,9 +79,10 @@ void expect_within(double got, double want, double rtol, const char* what, doubl
 
 // Deliver 1: every run of cases/oxide_thickness_sweep.toml, adaptive at its
 // default tolerances against the explicit thesis step. The explicit one
-// reports the first step boundary on the substrate, so its crossing is up to
-// one step late and carries its own O(dt) error (0.02 s against 0.0025 s:
-// +0.14 mm at 0.5 µm): the distances are compared within 1.1 steps.
+// reports the first step boundary on the substrate and its chattering
+// contact moves that by a step from run to run: the adaptive crossing is
+// compared with where the explicit stepping converges (a quarter step)
+// within one thesis step, and with the thesis step's within one and a half.
 TEST(MainJob, TheAdaptiveSweepMatchesTheExplicitOneWithinOnePercentAtAThirdOfTheSolves) {
   long explicit_solves = 0, adaptive_solves = 0;
   for (double h : {0.0, 0.5e-6, 1e-6, 2e-6, 3e-6, std::numeric_limits<double>::infinity()}) {
@@ -80,7 +93,9 @@ TEST(MainJob, TheAdaptiveSweepMatchesTheExplicitOneWithinOnePercentAtAThirdOfThe
     expect_within(a.pin, e.pin, 0.01, "pin wear", h);
     expect_within(a.disc, e.disc, 0.01, "disc wear", h);
     if (h > 0.0 && std::isfinite(h)) {
-      EXPECT_NEAR(a.reached, e.reached, 1.1 * setup.velocity * setup.time_step) << "substrate reached, h = " << h;
+      const double step = setup.velocity * setup.time_step;
+      EXPECT_NEAR(a.reached, converged_crossing(setup), step) << "substrate reached, h = " << h;
+      EXPECT_NEAR(a.reached, e.reached, 1.5 * step) << "substrate reached, h = " << h;
     }
     EXPECT_LE(3 * a.solves, e.solves) << "h_layer = " << h;
     explicit_solves += e.solves;
