@@ -132,7 +132,7 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vecto
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
       "finite(x) = (x > 1) ? 1/0 : x*1e6   # oxide thicknesses [µm]\n"
       "bulk(x) = (x > 1) ? 6 : 1/0         # bulk (inf) placed at 6 µm, as in Fig. 9.25\n"
-      "set xlabel 'oxide layer thickness h_{{layer}} [µm]'\nset ylabel 'final friction coefficient μ'\n"
+      "set xlabel 'oxide layer thickness h_{{layer}} [µm]'\nset ylabel 'friction coefficient μ'\n"
       "set xrange [-0.3:6.6]\nset yrange [0:1]\nset grid\nset key top left font ',9'\n"
       "set xtics ('0' 0, '1' 1, '2' 2, '3' 3, '4' 4, 'bulk' 6)\n"
       "set label 1 'bulk SiO_2 is drawn at 6 µm (the thesis places it there, Fig. 9.25)' at graph 0.35, graph 0.06 "
