@@ -43,8 +43,11 @@ TEST(FrictionAverage, AMovingAverageOverOnePeriodRemovesTheOscillationOfARotatin
   const double period = 0.05;
   const auto average = sampled(at, 0.3, 0.1, period);
   const auto smooth = average.centred_moving_average(period);
-  for (std::size_t k = 0; k < at.size(); ++k)
-    if (at[k] > period && at[k] < at.back() - period) ASSERT_NEAR(smooth[k], 0.3, 2e-4) << at[k];
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    if (at[k] > period && at[k] < at.back() - period) {
+      ASSERT_NEAR(smooth[k], 0.3, 2e-4) << at[k];
+    }
+  }
   // At the ends the window shrinks to the sampled range: the mean of what is there.
   EXPECT_NEAR(smooth.front(), average.mean(0.0, 0.5 * period), 1e-12);
 }
