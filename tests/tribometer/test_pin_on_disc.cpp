@@ -155,7 +155,7 @@ TEST_P(AdaptiveAgainstExplicit, AgreesWithinOnePercentWithAThirdOfTheContactSolv
 }
 
 INSTANTIATE_TEST_SUITE_P(OxideThickness, AdaptiveAgainstExplicit, ::testing::Values(0.5e-6, 1e-6),
-                         [](const auto& info) { return info.param < 0.75e-6 ? "half_micron" : "one_micron"; });
+                         [](const auto& p) { return p.param < 0.75e-6 ? "half_micron" : "one_micron"; });
 
 TEST(PinOnDisc, AdaptiveStepsResolveARotatingTiltAndRefuseAResolvedTrack) {
   auto setup = thesis(2e-6, 0.02);
