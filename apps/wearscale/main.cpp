@@ -3,7 +3,8 @@
 // Exit status: 0 success, 2 bad input (message names file, key, value and the
 // allowed range), 1 numerical failure (message names solver, step, quantity),
 // 130 stopped by SIGINT/SIGTERM (checkpoints saved, unfinished files removed),
-// 3 internal error.
+// 3 internal error. Under mpirun/srun a rank that fails ends the whole job
+// with its status (MPI_Abort), so that no rank waits for it.
 #include <omp.h>
 
 #include <cstdio>
@@ -16,8 +17,23 @@
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
+
+namespace {
+bool every_rank_refused = false;  // a refusal all ranks reach alike needs no abort
+int run(int argc, char** argv);
+}  // namespace
 
 int main(int argc, char** argv) {
+  wearscale::mpi::Session mpi_session(argc, argv);
+  std::set_terminate([] { wearscale::mpi::abort(3); });
+  const int status = run(argc, argv);
+  if (status != 0 && wearscale::mpi::size() > 1 && !every_rank_refused) wearscale::mpi::abort(status);
+  return status;
+}
+
+namespace {
+int run(int argc, char** argv) {
   using namespace wearscale;
   CLI::App app{"wearscale: friction and adhesive wear across scales (MD → DEM/junctions → BEM pin-on-disc)",
                "wearscale"};
@@ -61,6 +77,15 @@ int main(int argc, char** argv) {
     FFTPlanCache::global().set_threads(threads);
   }
   install_interrupt_handlers();
+  if (mpi::size() > 1) {
+    // No command distributes its work over ranks yet: P copies of one run would
+    // write the same files at once. Refused on every rank before any work.
+    if (mpi::is_root())
+      log::error("wearscale {}: runs on one rank only for now ({} ranks started); run it without mpirun",
+                 app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name(), mpi::size());
+    every_rank_refused = true;
+    return exit_bad_input;
+  }
   try {
     for (auto* sub : app.get_subcommands())
       if (commands.count(sub) != 0) return commands.at(sub)();
@@ -85,3 +110,4 @@ int main(int argc, char** argv) {
     return 3;
   }
 }
+}  // namespace

@@ -14,7 +14,7 @@ using std::numbers::pi;
 
 namespace {
 // A uniform compliance w per cell: u += w p (a Winkler layer on the half-space).
-struct Winkler final : AddedCompliance {
+struct Winkler final : bem::AddedCompliance {
   double w = 0.0;
   void add(const RealField& p, double scale, RealField& u) const override {
     for (std::size_t k = 0; k < p.size(); ++k) u[k] += scale * w * p[k];
@@ -25,9 +25,12 @@ struct Winkler final : AddedCompliance {
     return sum;
   }
 };
+
+// Both methods take the added compliance (the preconditioner stays the half-space's inverse).
+class CompliantContact : public ::testing::TestWithParam<ContactMethod> {};
 }  // namespace
 
-TEST(AddedCompliance, AWavySurfaceInFullContactSeesTheHalfSpaceAndTheLayerInSeries) {
+TEST_P(CompliantContact, AWavySurfaceInFullContactSeesTheHalfSpaceAndTheLayerInSeries) {
   // h = Δ cos(qx) pressed into full contact: p = p0 + p1 cos(qx) with
   // p1 = Δ / (2/(E* q) + w); with w = 2/(E* q) the amplitude halves.
   const auto g = Grid2D::square(64, 1.0);
@@ -40,16 +43,16 @@ TEST(AddedCompliance, AWavySurfaceInFullContactSeesTheHalfSpaceAndTheLayerInSeri
   NormalContact contact(h, e_star);
   contact.set_added_compliance(&layer);
   const double p0 = 10.0 * delta * e_star * q;  // well above the amplitude: full contact
-  contact.solve_mean_pressure(p0, {1e-12, 1000});
+  contact.solve_mean_pressure(p0, {1e-12, 1000, GetParam()});
   const double p1 = delta / (2.0 / (e_star * q) + layer.w);
   for (std::size_t i = 0; i < g.nx; ++i)
     ASSERT_NEAR(contact.pressure()(i, 0), p0 + p1 * std::cos(q * g.x(i)), 1e-9 * p0) << i;
   contact.set_added_compliance(nullptr);  // without it: Westergaard's full-contact amplitude Δ E* q / 2
-  contact.solve_mean_pressure(p0, {1e-12, 1000});
+  contact.solve_mean_pressure(p0, {1e-12, 1000, GetParam()});
   EXPECT_NEAR(contact.pressure()(0, 0), p0 + delta * e_star * q / 2.0, 1e-9 * p0);
 }
 
-TEST(AddedCompliance, ARigidBodyOnALayerAloneCarriesThePressureOfAWinklerFoundation) {
+TEST_P(CompliantContact, ARigidBodyOnALayerAloneCarriesThePressureOfAWinklerFoundation) {
   // A half-space a million times stiffer than the layer (its share: ~1e-6 of
   // the pressure): p = (h − d)/w where
   // h > d, with d set by the load (found here by bisection).
@@ -66,7 +69,7 @@ TEST(AddedCompliance, ARigidBodyOnALayerAloneCarriesThePressureOfAWinklerFoundat
   NormalContact contact(h, 1e6);
   contact.set_added_compliance(&layer);
   const double p0 = 5e-3;
-  contact.solve_mean_pressure(p0, {1e-12, 5000});
+  contact.solve_mean_pressure(p0, {1e-12, 5000, GetParam()});
   auto mean_at = [&](double d) {
     double sum = 0.0;
     for (double v : h) sum += std::max(v - d, 0.0) / layer.w;
@@ -80,3 +83,9 @@ TEST(AddedCompliance, ARigidBodyOnALayerAloneCarriesThePressureOfAWinklerFoundat
     worst = std::max(worst, std::abs(contact.pressure()[k] - std::max(h[k] - d, 0.0) / layer.w));
   EXPECT_LT(worst, 2e-6 * *std::max_element(contact.pressure().begin(), contact.pressure().end()));
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, CompliantContact,
+                         ::testing::Values(ContactMethod::PreconditionedCG, ContactMethod::PolonskyKeer),
+                         [](const ::testing::TestParamInfo<ContactMethod>& method) {
+                           return method.param == ContactMethod::PreconditionedCG ? "Preconditioned" : "PolonskyKeer";
+                         });

@@ -72,8 +72,8 @@ PinOnDisc::~PinOnDisc() = default;
 
 PinOnDisc::PinOnDisc(const PinOnDiscSetup& setup)
     : setup_((setup.validate(), setup.validate_laws(), setup)), pin_(Grid2D::square(setup.grid, setup.size)),
-      profile_(pin_.grid()), contact_(RealField(pin_.grid()), setup.e_star), pin_rate_(pin_.grid().size()),
-      layer_(pin_.grid().size(), 0) {
+      profile_(pin_.grid()), contact_(RealField(pin_.grid()), setup.e_star, setup.boundary),
+      pin_rate_(pin_.grid().size()), layer_(pin_.grid().size(), 0) {
   const Grid2D& g = pin_.grid();
   track_ = setup.track == Track::Resolved ? setup.track_cells() : 0;
   disc_.assign(track_ > 0 ? g.nx * track_ : g.nx, 0.0);

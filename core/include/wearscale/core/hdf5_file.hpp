@@ -4,6 +4,7 @@
 // once complete (commit()); a writer destroyed before commit — by an
 // exception, or a killed process — leaves no file under the final name.
 #include <filesystem>
+#include <mutex>
 #include <span>
 #include <string>
 #include <string_view>
@@ -33,6 +34,10 @@ class H5Writer {
   /// String attribute on a group or dataset ("/" is the file).
   void set_attribute(const std::string& object, const std::string& name, std::string_view value);
   void set_attribute(const std::string& object, const std::string& name, double value);
+  /// A read-only view `view` of the 2D dataset `source` (already written,
+  /// rows × cols) with its axes swapped (cols × rows): an HDF5 virtual
+  /// dataset of this file, one mapping per source row, no data copied.
+  void write_transposed_view(const std::string& view, const std::string& source);
 
   /// Closes the file and moves it to its final name. Without it, nothing appears.
   void commit();
@@ -71,5 +76,9 @@ class H5Reader {
   std::filesystem::path path_;
   long long file_ = -1;
 };
+
+/// Holds the lock of the (not thread-safe) HDF5 library, with its error
+/// printing off, for code that calls the HDF5 C API directly.
+[[nodiscard]] std::unique_lock<std::recursive_mutex> lock_hdf5();
 
 }  // namespace wearscale

@@ -57,6 +57,7 @@ struct PinOnDiscSetup {
   Track track = Track::Averaged;
   double tolerance = 1e-10;         ///< BEM orthogonality error
   int max_iterations = 20000;       ///< BEM iterations of a solve (of an implicit stage: at most 3000, then a shorter step)
+  bem::Boundary boundary = bem::Boundary::Periodic;  ///< of the BEM cell: periodic images, or an isolated pin (free)
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
   materials::InterfaceLaw on_substrate;  ///< pin on the substrate (e.g. SiO2/Si)
   bool like_on_like = true;         ///< pin and layer of one material: wear shared ½/½ on the layer
