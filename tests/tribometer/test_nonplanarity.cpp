@@ -11,20 +11,15 @@
 #include "wearscale/materials/shipped_data.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
 using namespace wearscale::tribometer;
 
 namespace {
-const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
-const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
-
 PinOnDiscSetup disc(double layer, double slope, LayerTest test, std::size_t grid = 32, double distance = 0.5) {
-  PinOnDiscSetup s;
+  PinOnDiscSetup s = test_support::thesis_setup(layer);
   s.grid = grid;
-  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
-  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
-  s.layer_thickness = layer;
   s.distance = distance;
   s.nonplanar_slope = slope;
   s.nonplanar_period = 0.05;

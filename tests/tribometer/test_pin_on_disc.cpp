@@ -13,19 +13,14 @@
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
 using namespace wearscale::tribometer;
 
 namespace {
-const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
-const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
-
 PinOnDiscSetup thesis(double layer, double distance) {
-  PinOnDiscSetup s;
-  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
-  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
-  s.layer_thickness = layer;
+  PinOnDiscSetup s = test_support::thesis_setup(layer);
   s.distance = distance;
   return s;
 }
@@ -56,19 +51,7 @@ double transition(const std::vector<PinOnDiscSample>& x) {
   return std::numeric_limits<double>::infinity();
 }
 
-// The same, stepped explicitly with a quarter of the setup's time step up to
-// the first contact with the substrate: the thesis step's own crossing moves
-// by a step from run to run (its contact chatters, and FFTW's measured plans
-// round differently), this one by a quarter.
-double converged_transition(PinOnDiscSetup setup) {
-  setup.time_step /= 4.0;
-  PinOnDisc model(setup);
-  while (model.steps() < model.total_steps()) {
-    const auto x = model.step();
-    if (x.substrate_contact > 0.0) return x.distance;
-  }
-  return std::numeric_limits<double>::infinity();
-}
+double converged_transition(const PinOnDiscSetup& setup) { return test_support::converged_crossing(setup); }
 }  // namespace
 
 TEST(PinOnDisc, BareSiliconSlidesAtMuSiThroughout) {

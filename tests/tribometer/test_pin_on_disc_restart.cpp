@@ -14,21 +14,16 @@
 #include "wearscale/materials/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
 using namespace wearscale::tribometer;
 
 namespace {
-const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
-const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
-
 // A reduced thesis setup (32 × 32 cells) through the oxide transition at 0.5 µm.
 PinOnDiscSetup small(double distance) {
-  PinOnDiscSetup s;
+  PinOnDiscSetup s = test_support::thesis_setup(0.5e-6);
   s.grid = 32;
-  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
-  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
-  s.layer_thickness = 0.5e-6;
   s.distance = distance;
   return s;
 }

@@ -7,25 +7,17 @@
 #include <cmath>
 #include <limits>
 
-#include "wearscale/materials/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "../thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
 using namespace wearscale::tribometer;
+using wearscale::tribometer::test_support::converged_crossing;
 
 namespace {
-const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
-const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
-
-PinOnDiscSetup thesis(double layer) {
-  PinOnDiscSetup s;
-  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
-  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
-  s.layer_thickness = layer;
-  return s;
-}
+PinOnDiscSetup thesis(double layer) { return test_support::thesis_setup(layer); }
 
 struct Outcome {
   double mu_mean = 0.0, mu_first = 0.0, mu_final = 0.0, pin = 0.0, disc = 0.0;
@@ -60,18 +52,6 @@ Outcome run(const PinOnDiscSetup& setup, bool adaptive = false) {
   out.mu_first = average.mean(first.from, first.to);
   out.solves = model.contact_solves();
   return out;
-}
-
-// The first contact with the substrate, stepped explicitly with a quarter
-// of the thesis step: where the explicit stepping converges to.
-double converged_crossing(PinOnDiscSetup setup) {
-  setup.time_step /= 4.0;
-  PinOnDisc model(setup);
-  while (model.steps() < model.total_steps()) {
-    const auto x = model.step();
-    if (x.substrate_contact > 0.0) return x.distance;
-  }
-  return std::numeric_limits<double>::infinity();
 }
 
 void expect_within(double got, double want, double rtol, const char* what, double h) {
