@@ -88,7 +88,10 @@ void PinOnDisc::solve_stage(double s, const double* a, double gamma, double* z, 
       for (std::size_t i = 0; i < nx; ++i)
         for (std::size_t j = 0; j < ny; ++j) profile_(i, j) = surface(i, j) - residual[i];
       try {
-        r = solve_contact(s, std::min(kStageIterations, setup_.max_iterations));
+        // Unpreconditioned: the stage's compliance dominates the half-space's, so
+        // S = E*|q|/2 is a poor inverse of K + A (measured on the sweep: the same
+        // results and solves at half the CPU time, 9.2 s against 19.4 s).
+        r = solve_contact(s, std::min(kStageIterations, setup_.max_iterations), bem::ContactMethod::PolonskyKeer);
       } catch (const NumericalError& e) {
         give_up(e);
       }

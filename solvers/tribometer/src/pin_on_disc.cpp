@@ -160,7 +160,7 @@ int PinOnDisc::count_grooves(const double* disc) const {
   return grooves;
 }
 
-bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations) {
+bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::ContactMethod method) {
   const Grid2D& g = grid();
   for (std::size_t k = 0; k < profile_.size(); ++k)
     if (!std::isfinite(profile_[k]))
@@ -170,7 +170,7 @@ bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations) {
   contact_.set_surface(profile_);
   bem::ContactResult r;
   try {
-    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, max_iterations});
+    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, max_iterations, method});
   } catch (const NumericalError& e) {
     contact_.set_added_compliance(nullptr);
     throw NumericalError(kModel, solves_, fmt::format("contact at s = {:g} m", s),

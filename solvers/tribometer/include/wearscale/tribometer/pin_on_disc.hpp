@@ -165,7 +165,8 @@ class PinOnDisc {
   struct StageCompliance;
   void build_profile(double s);
   void classify(double s, const double* disc, std::vector<char>& layer) const;
-  bem::ContactResult solve_contact(double s, int max_iterations);
+  bem::ContactResult solve_contact(double s, int max_iterations,
+                                  bem::ContactMethod method = bem::ContactMethod::PreconditionedCG);
   void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
   double disc_height(const double* disc, std::size_t i, std::size_t j, double s) const;
   void deposit_swept(double s0, double s1);
