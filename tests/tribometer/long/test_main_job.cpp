@@ -64,7 +64,10 @@ void expect_within(double got, double want, double rtol, const char* what, doubl
 // reports the first step boundary on the substrate and its chattering
 // contact moves that by a step from run to run: the adaptive crossing is
 // compared with where the explicit stepping converges (a quarter step)
-// within one thesis step, and with the thesis step's within one and a half.
+// within one thesis step. Not with the thesis step's own crossing: at 2 µm
+// it was 101.28, 101.44 and 101.60 mm in three runs of the same case (two
+// contact solvers, the CLI and this test), two steps apart, where the
+// quarter step gives 101.32 mm and the adaptive one 101.33 mm.
 TEST(MainJob, TheAdaptiveSweepMatchesTheExplicitOneWithinOnePercentAtAThirdOfTheSolves) {
   long explicit_solves = 0, adaptive_solves = 0;
   for (double h : {0.0, 0.5e-6, 1e-6, 2e-6, 3e-6, std::numeric_limits<double>::infinity()}) {
@@ -77,7 +80,6 @@ TEST(MainJob, TheAdaptiveSweepMatchesTheExplicitOneWithinOnePercentAtAThirdOfThe
     if (h > 0.0 && std::isfinite(h)) {
       const double step = setup.velocity * setup.time_step;
       EXPECT_NEAR(a.reached, converged_crossing(setup), step) << "substrate reached, h = " << h;
-      EXPECT_NEAR(a.reached, e.reached, 1.5 * step) << "substrate reached, h = " << h;
     }
     EXPECT_LE(3 * a.solves, e.solves) << "h_layer = " << h;
     explicit_solves += e.solves;
