@@ -131,7 +131,9 @@ TEST_P(AdaptiveAgainstExplicit, AgreesWithinOnePercentWithAThirdOfTheContactSolv
   EXPECT_NEAR(adaptive.back().disc_wear, reference.back().disc_wear, 0.01 * reference.back().disc_wear);
   const double explicit_step = setup.velocity * setup.time_step;
   EXPECT_NEAR(transition(adaptive), converged_transition(setup), explicit_step);
-  EXPECT_NEAR(transition(adaptive), transition(reference), 1.5 * explicit_step);  // its crossing ± its chatter
+  // Not against the thesis step's own crossing: its chattering contact and
+  // FFTW's measured plans (chosen by timing, so by the machine's load) move
+  // it by up to two steps from run to run (here 39.84 and 40.16 mm at 1 µm).
   EXPECT_LE(3 * model.contact_solves(), stepped.contact_solves());
   RecordProperty("explicit_solves", std::to_string(stepped.contact_solves()));
   RecordProperty("adaptive_solves", std::to_string(model.contact_solves()));
