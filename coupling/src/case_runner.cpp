@@ -40,10 +40,13 @@ nlohmann::json RunSummary::to_json() const {
     j["results"] = results;
   } else {
     nlohmann::json runs_json = nlohmann::json::array();
-    for (std::size_t k = 0; k < runs.size(); ++k)
+    for (std::size_t k = 0; k < runs.size(); ++k) {
       runs_json.push_back({{"value", sweep_values[k]}, {"output_dir", runs[k].output_dir.string()},
                            {"results", runs[k].results}});
+      if (!series_key.empty()) runs_json.back()["series"] = series_values[k];
+    }
     j["sweep"] = {{"key", sweep_key}, {"values", sweep_values}, {"runs", runs_json}};
+    if (!series_key.empty()) j["sweep"]["series"] = {{"key", series_key}, {"values", series_values}};
   }
   return j;
 }
@@ -241,21 +244,37 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   const auto values = probe.values_as_text("sweep.values");
   const std::string table_name = probe.string_or("sweep.table", "sweep.csv");
   const bool parallel = probe.boolean_or("sweep.parallel", true);
+  // [sweep.series]: the sweep once more per value of a second key.
+  const std::string series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
+  const auto series = series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
   RunSummary sweep;
   sweep.case_name = probe.string("case.name");
   sweep.output_dir = options.output_dir ? *options.output_dir
                                         : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
   sweep.sweep_key = key;
-  sweep.sweep_values = values;
+  sweep.series_key = series_key;
 
   // Every run is checked before any starts; resuming, every checkpoint is
   // read (and its FFT plans imported) before any run makes a plan.
   std::vector<PreparedRun> runs;
-  for (const auto& v : values) {
-    if (!probe.has(key))
-      throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
-    runs.push_back(prepare(load(options, {key + "=" + v}), sweep.output_dir / label_of(key, v)));
+  std::vector<std::string> run_value, run_series;
+  for (const auto& sv : series) {
+    if (!series_key.empty() && !probe.has(series_key))
+      throw probe.error("sweep.series.key", "the series key is not in the case (give it a value there first)",
+                        "a key of the case");
+    const auto folder = series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(series_key, sv);
+    for (const auto& v : values) {
+      if (!probe.has(key))
+        throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
+      std::vector<std::string> extra{key + "=" + v};
+      if (!series_key.empty()) extra.push_back(series_key + "=" + sv);
+      runs.push_back(prepare(load(options, extra), folder / label_of(key, v)));
+      run_value.push_back(v);
+      run_series.push_back(sv);
+    }
   }
+  sweep.sweep_values = run_value;
+  if (!series_key.empty()) sweep.series_values = run_series;
   if (options.resume_dir) {
     for (auto& r : runs) find_resume_point(r);
     const auto finished = std::count_if(runs.begin(), runs.end(), [](const PreparedRun& r) { return r.complete; });
@@ -265,6 +284,7 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   sweep.scales = runs.front().summary.scales;
   sweep.parameters = runs.front().summary.parameters;
   sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
+  if (!series_key.empty()) sweep.parameters["sweep"]["series"] = {{"key", series_key}, {"values", series}};
 
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const unsigned workers = parallel ? std::min<unsigned>(cores, static_cast<unsigned>(runs.size())) : 1u;
@@ -298,37 +318,73 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
     rethrow_interrupted(e, options, sweep.output_dir);
   }
 
-  // The sweep table: the swept value, then every headline figure of the runs.
+  // The sweep table (one per series value): the swept value, then every
+  // headline figure of the runs.
   std::vector<std::string> names;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  std::vector<std::vector<double>> columns(names.size() + 1);
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    columns[0].push_back(units::parse_quantity(values[k]).value);
-    for (std::size_t c = 0; c < names.size(); ++c) {
-      const auto& res = runs[k].summary.results;
-      columns[c + 1].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+  // A swept value that is not a number (a choice) is written as its index.
+  bool numeric = true;
+  for (const auto& v : values) {
+    try {
+      (void)units::parse_quantity(v);
+    } catch (const std::exception&) {
+      numeric = false;
     }
   }
-  std::vector<std::string> header{key};
-  header.insert(header.end(), names.begin(), names.end());
-  std::vector<std::span<const double>> spans(columns.begin(), columns.end());
-  const auto table = sweep.output_dir / table_name;
-  write_csv(table, header, spans, {fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)});
-  sweep.files.push_back(table);
+  std::string legend;
+  for (std::size_t k = 0; k < values.size() && !numeric; ++k) legend += fmt::format("{}{} = {}", k ? ", " : "", k, values[k]);
+  std::vector<SweepTable> tables;
+  for (std::size_t first = 0; first < runs.size(); first += values.size()) {
+    std::vector<std::vector<double>> columns(names.size() + 1);
+    for (std::size_t k = first; k < first + values.size(); ++k) {
+      columns[0].push_back(numeric ? units::parse_quantity(run_value[k]).value : static_cast<double>(k - first));
+      for (std::size_t c = 0; c < names.size(); ++c) {
+        const auto& res = runs[k].summary.results;
+        columns[c + 1].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+      }
+    }
+    std::vector<std::string> header{key};
+    header.insert(header.end(), names.begin(), names.end());
+    std::vector<std::span<const double>> spans(columns.begin(), columns.end());
+    const std::filesystem::path base(table_name);
+    const std::string label = series_key.empty() ? "" : label_of(series_key, run_series[first]);
+    const auto table = sweep.output_dir / (label.empty() ? base : std::filesystem::path(base.stem().string() + "_" + label +
+                                                                                        base.extension().string()));
+    std::vector<std::string> comments{
+        fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
+    if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
+    if (!numeric) comments.push_back(fmt::format("{}: the index of the value: {}", key, legend));
+    write_csv(table, header, spans, comments);
+    sweep.files.push_back(table);
+    tables.push_back({label.empty() ? "model" : label, table});
+  }
 
   std::vector<FrictionCurve> curves;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     sweep.runs.push_back(runs[k].summary);
     const auto csv = runs[k].summary.output_dir / "friction.csv";
-    if (std::filesystem::exists(csv)) curves.push_back({label_of(key, values[k]), csv});
+    const std::string label = label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k]));
+    if (std::filesystem::exists(csv)) curves.push_back({label, csv});
   }
   if (!curves.empty())
     if (auto png = plot_friction_curves(curves, sweep.output_dir / "friction_curves.png", sweep.case_name))
       sweep.files.push_back(*png);
+  std::vector<FrictionCurve> profiles;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const auto csv = runs[k].summary.output_dir / "disc_profile.csv";
+    if (std::filesystem::exists(csv)) profiles.push_back({curves.size() == runs.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
+  }
+  if (!profiles.empty()) {
+    const std::string thickness = "materials.layer.thickness";  // one oxide for all runs: its interface is drawn
+    const bool one_oxide = key != thickness && series_key != thickness && probe.has(thickness);
+    const double h = one_oxide ? probe.number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
+    if (auto png = plot_disc_profiles(profiles, sweep.output_dir / "disc_profiles.png", sweep.case_name, h))
+      sweep.files.push_back(*png);
+  }
   if (key == "materials.layer.thickness" && std::find(names.begin(), names.end(), "mu_mean") != names.end())
-    if (auto png = plot_friction_vs_thickness(table, sweep.output_dir / "friction_vs_thickness.png"))
+    if (auto png = plot_friction_vs_thickness(tables, sweep.output_dir / "friction_vs_thickness.png"))
       sweep.files.push_back(*png);
   write_file_atomically(sweep.output_dir / "summary.json", sweep.to_json().dump(2) + "\n");
   sweep.files.push_back(sweep.output_dir / "summary.json");
