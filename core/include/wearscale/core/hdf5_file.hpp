@@ -1,22 +1,37 @@
 #pragma once
-// HDF5 output and input: 1D series, column tables, 2D fields and string
-// attributes for provenance. Output files exist under their final name only
-// once complete (commit()); a writer destroyed before commit — by an
-// exception, or a killed process — leaves no file under the final name.
+// HDF5 output and input: 1D series, column tables, 2D fields and attributes
+// for provenance.
+//
+// Writing: the file is built in memory (HDF5's core driver) and written to
+// disk by wearscale itself when committed, every write checked; it exists
+// under its final name only once complete (commit()). A writer destroyed
+// before commit — by an exception, or a killed process — leaves no file under
+// the final name; a full disk or a read-only folder is an OutputError naming
+// the file, never a crash inside HDF5. Chunked (large) datasets carry a
+// Fletcher-32 checksum, so damaged data read back is an error, not numbers.
+//
+// Reading: every dataset and attribute is checked for its type and shape
+// before it is read, and its size against the memory limit, so a file from
+// another tool (h5py, MATLAB) or a damaged one gives an InputError naming
+// the file, the object and what was expected.
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/field.hpp"
 
 namespace wearscale {
 
 class H5Writer {
  public:
-  /// Starts writing `final_path` under a temporary name beside it.
-  explicit H5Writer(std::filesystem::path final_path);
+  /// Starts writing `final_path` (a placeholder temporary file is created
+  /// beside it at once, so an unwritable folder fails here, before any work).
+  explicit H5Writer(std::filesystem::path final_path, Commit mode = Commit::WithItsSet);
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
   H5Writer& operator=(const H5Writer&) = delete;
@@ -33,8 +48,11 @@ class H5Writer {
   /// String attribute on a group or dataset ("/" is the file).
   void set_attribute(const std::string& object, const std::string& name, std::string_view value);
   void set_attribute(const std::string& object, const std::string& name, double value);
+  /// A 64-bit integer attribute (counts, steps: read back exactly).
+  void set_integer_attribute(const std::string& object, const std::string& name, std::int64_t value);
 
-  /// Closes the file and moves it to its final name. Without it, nothing appears.
+  /// Writes the file and moves it to its final name (with its OutputSet, if
+  /// one is open for the folder and the mode says so). Without it, nothing appears.
   void commit();
   const std::filesystem::path& final_path() const { return final_; }
   const std::filesystem::path& partial() const { return partial_; }
@@ -45,6 +63,7 @@ class H5Writer {
   bool exists(const std::string& object) const;
   void close();
   std::filesystem::path final_, partial_;
+  Commit mode_;
   long long file_ = -1;  // hid_t
   bool committed_ = false;
 };
@@ -53,22 +72,48 @@ class H5Reader {
  public:
   /// Opens an HDF5 file; InputError if missing or not HDF5.
   explicit H5Reader(const std::filesystem::path& path);
+  /// Opens an HDF5 file image held in memory (`name` stands for it in
+  /// messages): tests and fuzzing.
+  static H5Reader from_image(std::string_view bytes, const std::string& name);
   ~H5Reader();
   H5Reader(const H5Reader&) = delete;
   H5Reader& operator=(const H5Reader&) = delete;
+  H5Reader(H5Reader&& other) noexcept;
 
   bool exists(const std::string& path) const;
+  /// The dimensions of a dataset (empty for a scalar); InputError if it is absent or not a dataset.
   std::vector<std::size_t> shape(const std::string& dataset) const;
+  /// Every value of a numeric (integer or floating-point) dataset of any
+  /// rank, converted to double, in row-major order.
   std::vector<double> read_series(const std::string& dataset) const;
+  /// A scalar or 1D dataset of 64-bit floats, bit for bit: what wearscale
+  /// saves to read back exactly (checkpoints). Any other type or rank is refused.
+  std::vector<double> read_exact(const std::string& dataset) const;
   double read_scalar(const std::string& dataset) const;
-  /// A 2D dataset as a field; the grid size comes from attributes lx, ly
-  /// (defaults 1 × 1 if absent, e.g. a topography written by another tool).
+  /// A 2D numeric dataset as a field; the grid size comes from the number
+  /// attributes lx, ly (defaults 1 × 1 if absent, e.g. a topography written
+  /// by another tool; InputError if present but not one number each).
   RealField read_field(const std::string& dataset) const;
+
+  /// A string attribute: fixed or variable length (h5py's default), a scalar
+  /// or an array of one. InputError naming it if absent or of another kind.
   std::string string_attribute(const std::string& object, const std::string& name) const;
+  /// The same, or nullopt if the object has no such attribute.
+  std::optional<std::string> string_attribute_if(const std::string& object, const std::string& name) const;
+  /// One number (integer or floating-point, a scalar or an array of one).
   double number_attribute(const std::string& object, const std::string& name) const;
+  /// The same, or nullopt if the object has no such attribute (present but
+  /// malformed is still an InputError).
+  std::optional<double> number_attribute_if(const std::string& object, const std::string& name) const;
+  /// One integer (of an integer type only: a float, NaN included, is refused).
+  std::int64_t integer_attribute(const std::string& object, const std::string& name) const;
+
+  const std::string& name() const { return name_; }
 
  private:
-  std::filesystem::path path_;
+  H5Reader() = default;
+  long long open_attribute(const std::string& object, const std::string& name, bool required) const;
+  std::string name_;
   long long file_ = -1;
 };
 
