@@ -57,6 +57,15 @@ std::filesystem::path resume_folder(const std::filesystem::path& resume, const s
   return resume;
 }
 
+void require_fresh_start(const std::filesystem::path& checkpoint) {
+  std::error_code ec;
+  if (!std::filesystem::exists(checkpoint, ec)) return;
+  const auto dir = checkpoint.parent_path().empty() ? std::filesystem::path(".") : checkpoint.parent_path();
+  throw OutputError(fmt::format("{} holds the checkpoint of an unfinished run; continue it with --resume {}, or delete "
+                                "{} to start afresh",
+                                dir.string(), dir.string(), checkpoint.string()));
+}
+
 CheckpointPolicy checkpoint_policy(const Config& root) {
   const Config r = root.section("run");
   CheckpointPolicy policy;

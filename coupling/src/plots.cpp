@@ -1,11 +1,14 @@
 #include "wearscale/coupling/plots.hpp"
 
 #include <cstdlib>
+#include <fstream>
 
 #include <fmt/format.h>
 
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_set.hpp"
 
 namespace wearscale::coupling {
 
@@ -19,21 +22,46 @@ bool plotting_available() {
   return available;
 }
 
+namespace {
+// A whole PNG: the signature, and the IEND chunk closing it (gnuplot exits 0
+// even when the disk filled up under it, leaving a truncated image).
+bool complete_png(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  char head[8] = {}, tail[12] = {};
+  if (!in.read(head, 8) || std::string_view(head, 8) != "\x89PNG\r\n\x1a\n") return false;
+  in.seekg(-12, std::ios::end);
+  return in.read(tail, 12) && std::string_view(tail + 4, 8) == "IEND\xae\x42\x60\x82";
+}
+
+// The data files of a plot are read where they are now: staged outputs of
+// the run under their temporary names.
+std::string data(const std::filesystem::path& csv) { return OutputSet::readable(csv).string(); }
+}  // namespace
+
 std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png, int width,
                                                  int height) {
   if (!plotting_available()) return std::nullopt;
   const auto partial = partial_path(png);
   const auto script_file = partial_path(png.parent_path() / (png.stem().string() + ".gp"));
-  write_file_atomically(script_file,
-                        fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
-                                    width, height, partial.string(), script));
+  try {
+    write_temporary_file(script_file, fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
+                                                  width, height, partial.string(), script));
+  } catch (const OutputError& e) {
+    throw OutputError(fmt::format("{}; {} was not drawn", e.what(), png.string()));
+  }
   const int status = std::system(fmt::format("gnuplot '{}' 2>/dev/null", script_file.string()).c_str());
-  std::filesystem::remove(script_file);
-  if (status != 0 || !std::filesystem::exists(partial)) {
-    std::error_code ec;
+  std::error_code ec;
+  std::filesystem::remove(script_file, ec);
+  if (status != 0) {
     std::filesystem::remove(partial, ec);
-    log::warn("gnuplot could not draw {}", png.string());
+    log::warn("gnuplot could not draw {} (exit status {})", png.string(), status);
     return std::nullopt;
+  }
+  if (!complete_png(partial)) {  // gnuplot said yes, but the file system did not take it all
+    std::filesystem::remove(partial, ec);
+    throw OutputError(fmt::format("cannot write {}: gnuplot left an incomplete image (is the disk full?); {} was not "
+                                  "written",
+                                  partial.string(), png.string()));
   }
   commit_file(partial, png);
   return png;
@@ -44,10 +72,10 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
   std::string mu, wear;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& c = curves[k];
-    mu += fmt::format("{}'{}' using 1:2 with lines lw 1.5 title '{}'", k ? ", " : "", c.csv.string(), c.label);
+    mu += fmt::format("{}'{}' using 1:2 with lines lw 1.5 title '{}'", k ? ", " : "", data(c.csv), c.label);
     wear += fmt::format("{}'{}' using 1:($3*1e18) with lines lw 1.5 dt 2 title 'pin {}', '' using 1:($4*1e18) with "
                         "lines lw 1.5 title 'disc {}'",
-                        k ? ", " : "", c.csv.string(), c.label, c.label);
+                        k ? ", " : "", data(c.csv), c.label, c.label);
   }
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
@@ -71,7 +99,7 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::files
       "plot '{0}' using (h($1)):(column('mu_mean')) with linespoints pt 7 lw 2 title 'model: time-averaged μ', \\\n"
       "     '{0}' using (h($1)):(column('mu_final')) with linespoints pt 5 lw 2 title 'model: final μ', \\\n"
       "     [0:6] 0.337 + 0.070*x with lines dt 2 lw 2 title 'experiments: μ ≈ 0.337 + 0.070 h (9.1)'\n",
-      table_csv.string());
+      data(table_csv));
   return render_plot(script, png);
 }
 
@@ -81,7 +109,7 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
                             "set title '{}'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
                             "set grid\nplot '{}' every ::1 using ($2*1e9):($3*1e9) with lines lw 2 title 'tangential F_T', "
                             "'' every ::1 using ($2*1e9):($4*1e9) with lines lw 1 title 'normal F_N'\n",
-                            title, history_csv.string()),
+                            title, data(history_csv)),
                 png);
 }
 
@@ -96,7 +124,7 @@ std::optional<std::filesystem::path> plot_junction_strength(const std::filesyste
     const int colour = static_cast<int>(k) + 1;
     plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
                          "title 'DEM, D/L = {:.3g}', ",
-                         runs_csv.string(), c, colour, c);
+                         data(runs_csv), c, colour, c);
     plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
   }
   plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";

@@ -14,6 +14,8 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/xdmf.hpp"
 
@@ -117,6 +119,19 @@ Grid2D resolve_grid(std::size_t nx, std::size_t ny, const TopographySize& given,
   return Grid2D(nx, ny, *lx, *ly);
 }
 
+// Heights spanning more than a thousand times the surface's side are not a
+// surface (slopes beyond 10^3): most often heights in nm beside sizes in m.
+void check_height_span(const RealField& h, const std::string& where) {
+  double lo = h[0], hi = h[0];
+  for (double v : h) lo = std::min(lo, v), hi = std::max(hi, v);
+  const double side = std::max(h.grid().lx, h.grid().ly);
+  if (!(hi - lo <= 1e3 * side))
+    throw InputError(fmt::format("{}: heights from {:g} to {:g} m on a {:g} m × {:g} m surface (peak to valley {:g} "
+                                 "times its side): are heights and sizes in the same unit? allowed: a peak-to-valley "
+                                 "height of at most 1000 times the longer side",
+                                 where, lo, hi, h.grid().lx, h.grid().ly, (hi - lo) / side));
+}
+
 bool is_hdf5_name(const fs::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -126,18 +141,15 @@ bool is_hdf5_name(const fs::path& file) {
 }  // namespace
 
 RealField read_topography_text(const fs::path& file, const TopographySize& size) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw InputError(fmt::format("{}: no such file", name));
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open for reading", name));
-  std::stringstream content;
-  content << in.rdbuf();
-  return parse_topography_text(content.str(), name, size);
+  // The text, then up to one height per two bytes of it: about five times the file in memory.
+  const double budget = memory_limit().bytes / 6.0;
+  return parse_topography_text(
+      read_text_file(file, "topography file", static_cast<std::uintmax_t>(std::min(budget, 1e18))), file.string(), size);
 }
 
 RealField parse_topography_text(std::string_view content, const std::string& name, const TopographySize& size) {
   const fs::path file = name;
+  content = strip_utf8_bom(content);
   std::optional<double> lx, ly;
   std::vector<double> values;
   std::vector<std::string_view> fields;
@@ -192,33 +204,37 @@ RealField parse_topography_text(std::string_view content, const std::string& nam
                                    "add a '# lx = <length>' comment (and '# ly = ...') or pass the size");
   RealField h(grid);
   std::copy(values.begin(), values.end(), h.begin());
+  check_height_span(h, name);
   return h;
 }
 
 RealField read_topography_h5(const fs::path& file, const std::string& dataset, const TopographySize& size) {
-  const H5Reader reader(file);
+  return read_topography_h5(H5Reader(file), dataset, size);
+}
+
+RealField read_topography_h5(const H5Reader& reader, const std::string& dataset, const TopographySize& size) {
   if (!reader.exists(dataset))
     throw InputError(fmt::format("{}: no dataset '{}'; name the height dataset (e.g. --dataset /surface/height)",
-                                 file.string(), dataset));
-  const RealField raw = reader.read_field(dataset);
-  auto attribute = [&](const char* key) -> std::optional<double> {
-    try {
-      return reader.number_attribute(dataset, key);
-    } catch (const InputError&) {
-      return std::nullopt;
-    }
-  };
-  const std::string where = fmt::format("{}: dataset '{}'", file.string(), dataset);
-  const Grid2D grid = resolve_grid(raw.rows(), raw.cols(), size, attribute("lx"), attribute("ly"), where,
+                                 reader.name(), dataset));
+  const std::string where = fmt::format("{}: dataset '{}'", reader.name(), dataset);
+  // Sizes in attributes: one number each, or none (a malformed one is an error, not ignored).
+  const auto lx = reader.number_attribute_if(dataset, "lx"), ly = reader.number_attribute_if(dataset, "ly");
+  const auto shape = reader.shape(dataset);
+  if (shape.size() != 2 || shape[0] < 1 || shape[1] < 1)
+    throw InputError(fmt::format("{}: not a 2D height grid ({} dimensions)", where, shape.size()));
+  require_memory(2.0 * 8.0 * static_cast<double>(shape[0]) * static_cast<double>(shape[1]),
+                 fmt::format("{} ({} × {} heights)", where, shape[0], shape[1]));
+  const Grid2D grid = resolve_grid(shape[0], shape[1], size, lx, ly, where,
                                    "the dataset has no lx/ly attributes, so pass the size");
+  const std::vector<double> raw = reader.read_series(dataset);
   RealField h(grid);
-  for (std::size_t i = 0; i < grid.nx; ++i)
-    for (std::size_t j = 0; j < grid.ny; ++j) {
-      if (!std::isfinite(raw(i, j)))
-        throw InputError(fmt::format("{}: height at row {}, column {} is {}; allowed: finite heights", where, i + 1,
-                                     j + 1, raw(i, j)));
-      h(i, j) = raw(i, j);
-    }
+  for (std::size_t k = 0; k < raw.size(); ++k) {
+    if (!std::isfinite(raw[k]))
+      throw InputError(fmt::format("{}: height at row {}, column {} is {}; allowed: finite heights", where,
+                                   k / grid.ny + 1, k % grid.ny + 1, raw[k]));
+    h[k] = raw[k];
+  }
+  check_height_span(h, where);
   return h;
 }
 
@@ -227,15 +243,18 @@ RealField read_topography(const fs::path& file, const std::string& dataset, cons
 }
 
 fs::path write_surface(const fs::path& file, const RealField& h, const SurfaceAttributes& attributes) {
+  fs::path sidecar = file;
+  sidecar.replace_extension(".xdmf");
   {
     H5Writer writer(file);
     writer.write_field(default_surface_dataset, h, "m");
     for (const auto& [key, value] : attributes) writer.set_attribute(default_surface_dataset, key, value);
     writer.set_attribute("/surface", "description", "surface heights h(x_i, y_j), rows i along x, columns j along y");
+    // The pair goes in sidecar last: an old sidecar never describes a new file.
+    std::error_code ec;
+    fs::remove(sidecar, ec);
     writer.commit();
   }
-  fs::path sidecar = file;
-  sidecar.replace_extension(".xdmf");
   write_xdmf(sidecar, file, h.grid(), {{default_surface_dataset, "height"}});
   return sidecar;
 }
@@ -249,11 +268,7 @@ std::optional<double> read_surface_attribute(const fs::path& file, const std::st
   if (!is_hdf5_name(file)) return std::nullopt;
   const H5Reader reader(file);
   if (!reader.exists(dataset)) return std::nullopt;
-  try {
-    return reader.number_attribute(dataset, name);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
+  return reader.number_attribute_if(dataset, name);
 }
 
 }  // namespace wearscale::bem

@@ -167,7 +167,7 @@ CohesiveMaterial dem_material(const Config& root) {
     }
   }
   if (c.has("restitution")) m.restitution = c.number("restitution", Range{0.0, 1.0, true, false});
-  if (c.has("poisson")) m.poisson = c.number("poisson", Range{-1.0, 0.5, true, true});
+  if (c.has("poisson")) m.poisson = c.number("poisson", Range::open_closed(-1.0, 0.25));  // central forces: ν ≤ 1/4
   if (!(m.poisson <= 0.25))
     throw c.error("poisson",
                   fmt::format("ν = {} cannot be modelled by the DEM pair force: central pair forces give ν ≤ 1/4 "

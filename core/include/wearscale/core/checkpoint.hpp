@@ -111,6 +111,10 @@ class Checkpointer {
 /// folder and `out` (--out, empty if not given) names the same one.
 std::filesystem::path resume_folder(const std::filesystem::path& resume, const std::filesystem::path& out);
 
+/// A fresh run (no --resume) never discards the checkpoint of an unfinished
+/// one: OutputError naming `checkpoint` (and how to continue) if it exists.
+void require_fresh_start(const std::filesystem::path& checkpoint);
+
 /// The [run] keys checkpoint_interval (s, default 600) and checkpoint_steps
 /// (default 0), range-checked.
 CheckpointPolicy checkpoint_policy(const Config& root);
