@@ -185,7 +185,9 @@ std::string checksum(const std::string& fingerprint, const std::string& wisdom,
 }
 }  // namespace
 
-void Checkpointer::load() { load(H5Reader(file_)); }  // InputError if missing or not HDF5
+void Checkpointer::load() {  // InputError if missing, not HDF5, or damaged
+  H5Reader::guarded(file_, [&](const H5Reader& file) { load(file); });
+}
 
 void Checkpointer::load(const H5Reader& h5) {
   const std::string name = h5.name();

@@ -11,6 +11,7 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "hdf5_lock.hpp"
 
 namespace wearscale {
 
@@ -18,10 +19,7 @@ namespace {
 
 // Debian's serial HDF5 is not thread-safe: every call into it from these
 // wrappers holds this lock, so sweeps can run cases on several threads.
-std::recursive_mutex& hdf5_mutex() {
-  static std::recursive_mutex m;
-  return m;
-}
+using detail::hdf5_mutex;
 
 // HDF5 prints its own error stack by default; wearscale reports errors itself.
 void silence_hdf5() {
@@ -330,13 +328,13 @@ void H5Writer::commit() {
 // ---------------------------------------------------------------- reader ---
 
 H5Reader::H5Reader(const std::filesystem::path& path) : name_(path.string()) {
-  std::lock_guard lock(hdf5_mutex());
-  silence_hdf5();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status)) throw InputError(fmt::format("{}: no such file", name_));
   if (!std::filesystem::is_regular_file(status))
     throw InputError(fmt::format("{}: not a regular file; expected an HDF5 file", name_));
+  std::lock_guard lock(hdf5_mutex());
+  silence_hdf5();
   if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(fmt::format("{}: not an HDF5 file", name_));
   file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file_ < 0) throw InputError(fmt::format("{}: cannot open HDF5 file (damaged?)", name_));
@@ -354,6 +352,12 @@ H5Reader H5Reader::from_image(std::string_view bytes, const std::string& name) {
   r.file_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl);
   if (r.file_ < 0) throw InputError(fmt::format("{}: not an HDF5 file, or a damaged one", name));
   return r;
+}
+
+void H5Reader::refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read) {
+  // Seconds a child may take: a hang in HDF5 is a damaged file too.
+  const std::string failed = detail::try_in_child(read, 5.0 + bytes / 20e6);
+  if (!failed.empty()) throw InputError(fmt::format("{}: damaged or not what it claims: {}", name, failed));
 }
 
 H5Reader::H5Reader(H5Reader&& other) noexcept : name_(std::move(other.name_)), file_(other.file_) { other.file_ = -1; }

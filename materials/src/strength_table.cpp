@@ -198,7 +198,7 @@ void validate(const StrengthTable& t) {
 StrengthTable read_strength_table(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(fmt::format("{}: no such strength table", file.string()));
-  return is_hdf5(file) ? parse_strength_table_h5(H5Reader(file)) : read_csv(file);
+  return is_hdf5(file) ? H5Reader::guarded(file, parse_strength_table_h5) : read_csv(file);
 }
 
 void write_strength_table(const std::filesystem::path& file, const StrengthTable& table) {

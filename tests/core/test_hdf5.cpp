@@ -15,6 +15,7 @@
 #include <numeric>
 
 #include "h5_fixture.hpp"
+#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 
@@ -257,4 +258,29 @@ TEST(HDF5, AWriterIntoAnUnwritableFolderFailsAtOnceNamingIt) {
   } catch (const OutputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("/proc/self"));
   }
+}
+
+// A file found by fuzzing (tests/fuzz) that crashes HDF5 1.10 itself when
+// read: a checkpoint whose dataset layout points past the file (an
+// out-of-bounds copy in H5Dread). Read through the guard, the read is tried
+// in a child process first: the file is refused as damaged and the program
+// carries on. An intact file reads as before.
+TEST(HDF5, AFileThatCrashesTheHdf5LibraryIsRefusedAsDamaged) {
+  const fs::path file = fs::path(WEARSCALE_TEST_DATA) / "hdf5_crash_dataset_read.h5";
+  ASSERT_TRUE(fs::exists(file)) << file;
+  Checkpointer checkpoints(file, "", {0.0, 0});
+  EXPECT_THAT(error_of([&] { checkpoints.load(); }),
+              ::testing::HasSubstr("damaged or not what it claims: the HDF5 library crashed reading it (signal"));
+  const auto path = scratch("intact.h5");
+  {
+    H5Writer w(path);
+    w.write_series("/a", std::vector<double>{1.0});
+    w.set_attribute("/", "text", "fine");
+    w.commit();
+  }
+  EXPECT_EQ(H5Reader::guarded(path, [](const H5Reader& r) { return r.string_attribute("/", "text"); }), "fine");
+  EXPECT_THAT(error_of([&] { H5Reader::guarded(path, [](const H5Reader& r) { return r.read_series("/b"); }); }),
+              ::testing::HasSubstr("no dataset '/b'"))
+      << "an ordinary error of the read is reported as such";
+  fs::remove_all(path.parent_path());
 }

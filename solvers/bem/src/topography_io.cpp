@@ -209,7 +209,7 @@ RealField parse_topography_text(std::string_view content, const std::string& nam
 }
 
 RealField read_topography_h5(const fs::path& file, const std::string& dataset, const TopographySize& size) {
-  return read_topography_h5(H5Reader(file), dataset, size);
+  return H5Reader::guarded(file, [&](const H5Reader& r) { return read_topography_h5(r, dataset, size); });
 }
 
 RealField read_topography_h5(const H5Reader& reader, const std::string& dataset, const TopographySize& size) {
@@ -266,9 +266,10 @@ SurfaceAttributes generation_attributes(const RoughSurfaceSpec& spec) {
 
 std::optional<double> read_surface_attribute(const fs::path& file, const std::string& dataset, const std::string& name) {
   if (!is_hdf5_name(file)) return std::nullopt;
-  const H5Reader reader(file);
-  if (!reader.exists(dataset)) return std::nullopt;
-  return reader.number_attribute_if(dataset, name);
+  return H5Reader::guarded(file, [&](const H5Reader& reader) -> std::optional<double> {
+    if (!reader.exists(dataset)) return std::nullopt;
+    return reader.number_attribute_if(dataset, name);
+  });
 }
 
 }  // namespace wearscale::bem
