@@ -1,7 +1,16 @@
-// Polonsky–Keer normal contact on rough surfaces, against its physical floor:
-// one iteration needs two convolutions, i.e. two r2c + c2r FFT pairs.
+// Normal contact on rough surfaces, three solvers side by side in one run:
+//   method 0: NormalContact, preconditioned (the default): u = K p (one FFT
+//             pair), z = S r (one pair), t·Kt by Parseval (one r2c): 2.5 pairs;
+//   method 1: NormalContact, unpreconditioned Polonsky–Keer: 1.5 pairs;
+//   method 2: a textbook Polonsky–Keer (polonsky_keer_reference.hpp): u = K p
+//             and r = K t, two pairs.
+// iter/fft_pair is the time of one iteration over that of one r2c + c2r pair.
 //
-//   build/bench/bench_contact --benchmark_counters_tabular=true
+//   build/bench/bench_contact --benchmark_filter=BM_RoughContact --benchmark_counters_tabular=true
+//
+// BM_ContactLoadRamp: the same surface at 2048² loaded in steps of +1 % from
+// p̄ = 0.03 (warm starts, as the wear maps and the pin-on-disc do): iterations
+// per step.
 //
 // BM_FrictionalRoughSphere: the frictional solver (Appendix A) on the rough
 // sphere of Fig. A.5 on 512² points: L = 500 µm, R = 6 mm, E = 70 GPa,
@@ -18,16 +27,27 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
+#include "polonsky_keer_reference.hpp"
 
 using namespace wearscale;
 using namespace wearscale::bem;
 
 namespace {
+// Process CPU time: on a shared machine the one-thread figures that do not
+// depend on how many other processes compete for the cores.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 RealField rough(std::size_t n) {
   RoughSurfaceSpec spec;
   spec.grid = Grid2D::square(n, 1.0);
@@ -38,7 +58,7 @@ RealField rough(std::size_t n) {
   return generate_surface(spec, RoughnessMeasure::HPrimeRms, 1.0);
 }
 
-double fft_pair_seconds(const Grid2D& g) {
+double fft_pair_seconds(const Grid2D& g, bool cpu = false) {
   auto plan = FFTPlanCache::global().plan(g);
   RealField a(g), b(g);
   ComplexField s = ComplexField::spectrum_of(g);
@@ -47,42 +67,85 @@ double fft_pair_seconds(const Grid2D& g) {
   plan->forward(a, s);
   plan->backward_unnormalized(s, b);
   const auto t0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_seconds();
   for (int r = 0; r < reps; ++r) {
     plan->forward(a, s);
     plan->backward_unnormalized(s, b);
   }
+  if (cpu) return (cpu_seconds() - c0) / reps;
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
 }
 }  // namespace
 
 static void BM_RoughContact(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const int threads = static_cast<int>(state.range(1));
+  const int method = static_cast<int>(state.range(0));
+  const auto n = static_cast<std::size_t>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
   omp_set_num_threads(threads);
   FFTPlanCache::global().clear();
   FFTPlanCache::global().set_threads(threads);
   const RealField h = rough(n);
   NormalContact contact(h, 1.0);
-  const double fft = fft_pair_seconds(h.grid());
-  ContactResult r;
-  double seconds = 0.0;
+  const double fft = fft_pair_seconds(h.grid()), fft_cpu = fft_pair_seconds(h.grid(), true);
+  int iterations = 0;
+  double seconds = 0.0, cpu = 0.0, fraction = 0.0;
   for (auto _ : state) {
     contact.reset();
     const auto t0 = std::chrono::steady_clock::now();
-    r = contact.solve_mean_pressure(0.03, {1e-10, 100000});
+    const double c0 = cpu_seconds();
+    if (method == 2) {
+      const auto r = bench::polonsky_keer_reference(h, 1.0, 0.03, 1e-10, 100000);
+      iterations = r.iterations;
+      fraction = r.contact_fraction;
+    } else {
+      ContactOptions o{1e-10, 100000, method == 0 ? ContactMethod::PreconditionedCG : ContactMethod::PolonskyKeer};
+      const auto r = contact.solve_mean_pressure(0.03, o);
+      iterations = r.iterations;
+      fraction = r.contact_fraction;
+    }
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    cpu = cpu_seconds() - c0;
     state.SetIterationTime(seconds);
   }
-  state.counters["iterations"] = r.iterations;
-  state.counters["contact_%"] = 100.0 * r.contact_fraction;
-  state.counters["ms_per_iter"] = 1e3 * seconds / r.iterations;
+  state.counters["iterations"] = iterations;
+  state.counters["contact_%"] = 100.0 * fraction;
+  state.counters["ms_per_iter"] = 1e3 * seconds / iterations;
   state.counters["fft_pair_ms"] = 1e3 * fft;
-  state.counters["iter/fft_pair"] = seconds / r.iterations / fft;
+  state.counters["iter/fft_pair"] = seconds / iterations / fft;
+  state.counters["cpu_s"] = cpu;  // one thread: the time without the other processes' share
+  state.counters["cpu_iter/fft_pair"] = cpu / iterations / fft_cpu;
   state.counters["threads"] = threads;
 }
 BENCHMARK(BM_RoughContact)
-    ->Args({512, 1})->Args({512, 2})->Args({1024, 1})->Args({1024, 2})->Args({2048, 1})->Args({2048, 2})
+    ->ArgNames({"method", "n", "threads"})
+    ->ArgsProduct({{0, 1, 2}, {512, 1024, 2048, 4096}, {1}})
     ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+
+static void BM_ContactLoadRamp(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  omp_set_num_threads(1);
+  FFTPlanCache::global().clear();
+  FFTPlanCache::global().set_threads(1);
+  const RealField h = rough(n);
+  NormalContact contact(h, 1.0);
+  const int steps = 10;
+  double total = 0.0, worst = 0.0;
+  for (auto _ : state) {
+    contact.reset();
+    contact.solve_mean_pressure(0.03, {1e-10, 100000});
+    const auto t0 = std::chrono::steady_clock::now();
+    total = worst = 0.0;
+    for (int k = 1; k <= steps; ++k) {
+      const int it = contact.solve_mean_pressure(0.03 * (1.0 + 0.01 * k), {1e-10, 100000}).iterations;
+      total += it;
+      worst = std::max(worst, static_cast<double>(it));
+    }
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  state.counters["iterations_per_step"] = total / steps;
+  state.counters["worst_step"] = worst;
+}
+BENCHMARK(BM_ContactLoadRamp)->Arg(512)->Arg(2048)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 
 static void BM_FrictionalRoughSphere(benchmark::State& state) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));

@@ -80,10 +80,21 @@ if(NOT TARGET CLI11::CLI11)
   wearscale_missing("CLI11 (command-line parsing)" "libcli11-dev")
 endif()
 
-# --- OpenSSL (SHA-256: checkpoint checksums, keys of cached results) --------
+# --- OpenSSL (SHA-256: checkpoint checksums, keys of cached results; MD5 of X3P data)
 find_package(OpenSSL QUIET COMPONENTS Crypto)
 if(NOT TARGET OpenSSL::Crypto)
   wearscale_missing("OpenSSL (libcrypto)" "libssl-dev")
+endif()
+
+# --- libzip and pugixml (ISO 25178-72 X3P topographies: XML and data in a ZIP) --
+# (pkg-config: Debian's libzip CMake package also wants the zipcmp tools installed)
+pkg_check_modules(LIBZIP QUIET IMPORTED_TARGET libzip)
+if(NOT LIBZIP_FOUND)
+  wearscale_missing("libzip" "libzip-dev")
+endif()
+find_package(pugixml QUIET)
+if(NOT TARGET pugixml::pugixml)
+  wearscale_missing("pugixml" "libpugixml-dev")
 endif()
 
 # --- OpenMP -------------------------------------------------------------------
@@ -104,4 +115,32 @@ if(WEARSCALE_BUILD_BENCH)
   if(NOT TARGET benchmark::benchmark)
     wearscale_missing("Google Benchmark" "libbenchmark-dev")
   endif()
+endif()
+
+# --- MPI (optional): Open MPI and FFTW's MPI transforms -----------------------
+# WEARSCALE_MPI is ON when both are found; the serial build needs neither.
+find_package(MPI QUIET COMPONENTS C)
+find_library(FFTW3_MPI_LIBRARY NAMES fftw3_mpi)
+find_path(FFTW3_MPI_INCLUDE_DIR NAMES fftw3-mpi.h)
+set(wearscale_mpi_found OFF)
+if(MPI_C_FOUND AND FFTW3_MPI_LIBRARY AND FFTW3_MPI_INCLUDE_DIR)
+  set(wearscale_mpi_found ON)
+endif()
+option(WEARSCALE_MPI "Distributed runs under mpirun/srun (Open MPI, FFTW-MPI); ON when both are found"
+       ${wearscale_mpi_found})
+add_library(wearscale_mpi INTERFACE)
+if(WEARSCALE_MPI)
+  if(NOT MPI_C_FOUND)
+    wearscale_missing("MPI (for WEARSCALE_MPI=ON)" "libopenmpi-dev openmpi-bin")
+  endif()
+  if(NOT FFTW3_MPI_LIBRARY OR NOT FFTW3_MPI_INCLUDE_DIR)
+    wearscale_missing("FFTW-MPI (for WEARSCALE_MPI=ON)" "libfftw3-mpi-dev")
+  endif()
+  target_link_libraries(wearscale_mpi INTERFACE MPI::MPI_C ${FFTW3_MPI_LIBRARY})
+  target_include_directories(wearscale_mpi SYSTEM INTERFACE ${FFTW3_MPI_INCLUDE_DIR})
+  # The C API only: without these, mpi.h also pulls in the removed MPI-2 C++ bindings.
+  target_compile_definitions(wearscale_mpi INTERFACE WEARSCALE_MPI=1 OMPI_SKIP_MPICXX=1 MPICH_SKIP_MPICXX=1)
+  message(STATUS "wearscale: MPI on (${MPIEXEC_EXECUTABLE})")
+else()
+  message(STATUS "wearscale: MPI off (serial build)")
 endif()

@@ -8,6 +8,8 @@
 
 #include "commands.hpp"
 #include "wearscale/bem/contact_study.hpp"
+#include "wearscale/bem/topography_io.hpp"
+#include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_lock.hpp"
@@ -17,7 +19,7 @@ namespace wearscale::app {
 
 namespace {
 struct ContactArgs {
-  std::string case_file, surface, pressure, load, interference, e_star, out;
+  std::string case_file, surface, missing, pressure, load, interference, e_star, out;
   std::string poisson, friction, mu, shear_strength, tangential, tensile_strength;
   std::vector<std::string> overrides;
   bool json = false;
@@ -30,7 +32,9 @@ Command add_contact(CLI::App& app) {
       "Normal or frictional contact of a rigid surface (file, generated rough surface, sphere) on an elastic flat");
   auto a = std::make_shared<ContactArgs>();
   cmd->add_option("case", a->case_file, "Case file with a [contact] table (e.g. cases/rough_contact.toml)");
-  cmd->add_option("--surface", a->surface, "Height file (HDF5 /surface/height, or CSV/text grid): contact.surface");
+  cmd->add_option("--surface", a->surface, "Height file: " + bem::supported_topography_formats() + ": contact.surface");
+  cmd->add_option("--missing", a->missing,
+                  std::string(bem::MissingPointsChoice::doc) + ": contact." + bem::MissingPointsChoice::key);
   cmd->add_option("--pressure", a->pressure, "Imposed mean pressure, e.g. 1e6 or \"1 MPa\": contact.mean_pressure");
   cmd->add_option("--load", a->load, "Imposed normal force on the cell: contact.normal_load");
   cmd->add_option("--interference", a->interference, "Imposed interference: contact.interference");
@@ -51,6 +55,7 @@ Command add_contact(CLI::App& app) {
   return [a]() {
     Config cfg = a->case_file.empty() ? Config::from_string("", "<command line>") : Config::load(a->case_file);
     const std::pair<const std::string*, const char*> flags[] = {{&a->surface, "contact.surface"},
+                                                                {&a->missing, "contact.missing"},
                                                                 {&a->pressure, "contact.mean_pressure"},
                                                                 {&a->load, "contact.normal_load"},
                                                                 {&a->interference, "contact.interference"},

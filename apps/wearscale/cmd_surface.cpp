@@ -173,7 +173,7 @@ int run_generate(const GenerateOptions& o) {
 
 struct AnalyzeOptions {
   std::string file, dataset = bem::default_surface_dataset;
-  std::string size;
+  std::string size, missing = bem::MissingPointsChoice::fallback;
   double q_min = 0.0, q_max = 0.0;
   CLI::Option *qmin_opt = nullptr, *qmax_opt = nullptr;
   bool window = true;
@@ -182,7 +182,12 @@ struct AnalyzeOptions {
 };
 
 int run_analyze(const AnalyzeOptions& o) {
-  RealField h = bem::read_topography(o.file, o.dataset, parse_size(o.size));
+  bem::TopographyOptions read;
+  read.dataset = o.dataset;
+  read.size = parse_size(o.size);
+  read.missing = bem::missing_points_from(o.missing, "--missing");
+  const bem::MeasuredTopography measured = bem::read_measured_topography(o.file, read);
+  RealField h = measured.heights;
   const Grid2D& g = h.grid();
   // Analysed on the memory of a few copies of the grid (window, PSD, spectrum).
   require_memory(64.0 * static_cast<double>(g.size()), fmt::format("surface analyze: a {} × {} topography", g.nx, g.ny));
@@ -243,6 +248,9 @@ int run_analyze(const AnalyzeOptions& o) {
   const char* method = o.window ? "finite-difference" : "spectral";
   if (o.json) {
     nlohmann::json j = {{"file", o.file},
+                        {"format", measured.format},
+                        {"missing_points", measured.missing},
+                        {"missing", bem::name(read.missing)},
                         {"grid", grid_json(g)},
                         {"window", o.window},
                         {"Sa", sa},
@@ -258,6 +266,9 @@ int run_analyze(const AnalyzeOptions& o) {
     j["psd_csv"] = o.psd_out.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.psd_out);
     std::cout << j.dump(2) << '\n';
   } else {
+    std::cout << fmt::format("{:<12} {} ({} × {} points, {:.6g} × {:.6g} m{})\n", "read", measured.format, g.nx, g.ny,
+                             g.lx, g.ly,
+                             measured.missing == 0 ? "" : fmt::format(", {} missing points filled", measured.missing));
     std::cout << fmt::format("{:<12} {:>14.6g} m\n", "Sa", sa);
     std::cout << fmt::format("{:<12} {:>14.6g} m\n", "h_rms", h_rms);
     std::cout << fmt::format("{:<12} {:>14.6g}   ({})\n", "h'_rms", h_prime, method);
@@ -298,9 +309,12 @@ Command add_surface(CLI::App& app) {
   gen->add_flag("--json", g->json, "Print the achieved roughness and the parameters as one JSON object");
 
   auto a = std::make_shared<AnalyzeOptions>();
-  auto* ana = cmd->add_subcommand("analyze", "Roughness, radial PSD and Hurst exponent of a topography (HDF5 or "
-                                             "text grid: rows along x, columns along y)");
-  ana->add_option("file", a->file, "Topography: .h5 (see --dataset) or a text/CSV grid")->required();
+  auto* ana = cmd->add_subcommand("analyze", "Roughness, radial PSD and Hurst exponent of a topography (measured: "
+                                             "X3P, Gwyddion, Digital Surf, SDF, Zygo; or HDF5, text grid)");
+  ana->add_option("file", a->file, "Topography: " + bem::supported_topography_formats() +
+                                       "; text grids have rows along x, columns along y (see docs/topography.md)")
+      ->required();
+  ana->add_option("--missing", a->missing, bem::MissingPointsChoice::doc)->capture_default_str();
   ana->add_option("--dataset", a->dataset, "HDF5 dataset holding the heights")->capture_default_str();
   ana->add_option("--size", a->size, "Side Lx [m] (\"877 um\" also works; Ly from square pixels), or Lx,Ly; "
                                      "overrides the file's sizes; needed for text files without '# lx = ...'");

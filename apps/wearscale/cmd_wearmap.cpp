@@ -27,7 +27,6 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
-#include "wearscale/core/xdmf.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
@@ -121,15 +120,9 @@ int finish(const WearmapCase& c, Config& cfg, const fs::path& out, const wear::W
            const std::function<std::optional<fs::path>(const fs::path&, const fs::path&)>& plot) {
   const std::string stem = fmt::format("wearmap_{}", map.kind);
   OutputSet outputs(out, stem + "_summary.json");  // published together, the summary last
-  const fs::path h5 = out / (stem + ".h5"), xmf = out / (stem + ".xdmf"), csv = out / (stem + ".csv"),
+  const fs::path h5 = out / (stem + ".h5"), csv = out / (stem + ".csv"),
                  png = out / (stem + ".png");
-  wear::write_wear_map_h5(h5, map, cfg.to_toml());
-  // ParaView: the region codes and every R layer on the map grid (x slowest, as stored).
-  std::vector<XdmfField> fields = {{"/region", "region"}};
-  for (const auto& l : map.layers) fields.push_back({"/ratio/" + l.name, l.name});
-  // The map samples cell centres: the first node is half a cell in from (min, min).
-  write_xdmf(xmf, h5, Grid2D(map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min), fields,
-             {map.x.value(0), map.y.value(0)});
+  const fs::path xmf = wear::write_wear_map_h5(h5, map, cfg.to_toml());
   wear::write_wear_map_csv(csv, map);
   nlohmann::json files = {h5.string(), xmf.string(), csv.string()};
   if (const auto p = plot(OutputSet::readable(csv), png)) files.push_back(p->string());

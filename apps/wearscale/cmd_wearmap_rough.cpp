@@ -285,6 +285,7 @@ int run_rough(const WearmapCase& wcase) {
                   "the curve smoothed by a Savitzky-Golay filter of degree {} on {} points (thesis §5.2: 3 on 11); "
                   "count_max_raw: the unsmoothed maximum; found = 0 where no pixel is valid",
                   peaks.front().degree, peaks.front().window);
+  XdmfSidecar sidecar(Grid2D(nl, nd, static_cast<double>(nl), static_cast<double>(nd)));
   {
     H5Writer w(h5);
     w.write_series("/axes/p_N_tilde", spec.loads);
@@ -312,12 +313,13 @@ int run_rough(const WearmapCase& wcase) {
     w.set_attribute("/", "tensile_strength_over_sigma_j", spec.tensile_strength);
     w.set_attribute("/", "energy_balance", spec.options.cumulative ? "cumulative" : "per particle");
     w.set_attribute("/", "case_toml", cfg.to_toml());
+    // ParaView: the maps on the (p̃_N, d*/L) pixel grid in index space, pixel
+    // (l, d) at X = l, Y = d as in the PNGs (the axes' values are in /axes).
+    sidecar.add(w, {{"/maps/count_mean", "count_mean"}, {"/maps/count_sd", "count_sd"},
+                    {"/maps/volume_mean", "volume_mean"}, {"/maps/volume_sd", "volume_sd"}, {"/maps/valid", "valid"}});
     w.commit();
   }
-  // ParaView: the maps on the (p̃_N, d*/L) pixel grid, index space (the axes' values are in /axes).
-  write_xdmf(xmf, h5, Grid2D(nl, nd, 1.0, 1.0),
-             {{"/maps/count_mean", "count_mean"}, {"/maps/count_sd", "count_sd"}, {"/maps/volume_mean", "volume_mean"},
-              {"/maps/volume_sd", "volume_sd"}, {"/maps/valid", "valid"}});
+  sidecar.write(xmf, h5);
   write_csv(csv, names, columns, {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
                                   "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
   write_csv(pcsv, pnames, pcols, {"every detached particle of every seed and pixel; lengths / L"});

@@ -5,7 +5,8 @@
 // (read-only, full, in use by another run: the path and the cause), 1
 // numerical failure (message names solver, step, quantity), 130 stopped by
 // SIGINT/SIGTERM (checkpoints saved, unfinished files removed), 3 internal
-// error (a bug).
+// error (a bug). Under mpirun/srun a rank that fails ends the whole job with
+// its status (MPI_Abort), so that no rank waits for it.
 #include <omp.h>
 
 #include <cstdio>
@@ -20,8 +21,23 @@
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
+
+namespace {
+bool every_rank_refused = false;  // a refusal all ranks reach alike needs no abort
+int run(int argc, char** argv);
+}  // namespace
 
 int main(int argc, char** argv) {
+  wearscale::mpi::Session mpi_session(argc, argv);
+  std::set_terminate([] { wearscale::mpi::abort(3); });
+  const int status = run(argc, argv);
+  if (status != 0 && wearscale::mpi::size() > 1 && !every_rank_refused) wearscale::mpi::abort(status);
+  return status;
+}
+
+namespace {
+int run(int argc, char** argv) {
   using namespace wearscale;
   CLI::App app{"wearscale: friction and adhesive wear across scales (MD → DEM/junctions → BEM pin-on-disc)",
                "wearscale"};
@@ -66,6 +82,15 @@ int main(int argc, char** argv) {
   }
   install_interrupt_handlers();
   app::set_invocation(argc, argv);
+  if (mpi::size() > 1) {
+    // No command distributes its work over ranks yet: P copies of one run would
+    // write the same files at once. Refused on every rank before any work.
+    if (mpi::is_root())
+      log::error("wearscale {}: runs on one rank only for now ({} ranks started); run it without mpirun",
+                 app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name(), mpi::size());
+    every_rank_refused = true;
+    return exit_bad_input;
+  }
   try {
     for (auto* sub : app.get_subcommands())
       if (commands.count(sub) != 0) return commands.at(sub)();
@@ -103,3 +128,4 @@ int main(int argc, char** argv) {
     return 3;
   }
 }
+}  // namespace

@@ -325,6 +325,42 @@ void H5Writer::commit() {
   committed_ = true;
 }
 
+void H5Writer::write_transposed_view(const std::string& view, const std::string& source) {
+  std::lock_guard lock(hdf5_mutex());
+  if (file_ < 0) throw std::logic_error("H5Writer: file already committed");
+  if (!exists(source)) throw std::invalid_argument("H5Writer::write_transposed_view: no dataset " + source);
+  Handle src(H5Dopen2(file_, source.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle src_space(H5Dget_space(src), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  if (H5Sget_simple_extent_ndims(src_space) != 2)
+    throw std::invalid_argument("H5Writer::write_transposed_view: " + source + " is not 2D");
+  H5Sget_simple_extent_dims(src_space, dims, nullptr);
+  const hsize_t swapped[2] = {dims[1], dims[0]};
+  Handle space(H5Screate_simple(2, swapped, nullptr), H5Sclose);
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  // Source row r (1 × cols) fills view column r (cols × 1), element by element.
+  for (hsize_t r = 0; r < dims[0]; ++r) {
+    const hsize_t view_start[2] = {0, r}, view_count[2] = {dims[1], 1};
+    const hsize_t row_start[2] = {r, 0}, row_count[2] = {1, dims[1]};
+    check(H5Sselect_hyperslab(space, H5S_SELECT_SET, view_start, nullptr, view_count, nullptr), "view selection");
+    check(H5Sselect_hyperslab(src_space, H5S_SELECT_SET, row_start, nullptr, row_count, nullptr), "row selection");
+    check(H5Pset_virtual(dcpl, space, ".", source.c_str(), src_space), "virtual mapping of " + view);
+  }
+  check(H5Sselect_all(space), "view extent");
+  Handle g(group(view), H5Oclose);
+  const auto name = split(view).second;
+  if (H5Lexists(g, name.c_str(), H5P_DEFAULT) > 0) check(H5Ldelete(g, name.c_str(), H5P_DEFAULT), "replace " + view);
+  Handle ds(H5Dcreate2(g, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) throw std::runtime_error("HDF5: cannot create view " + view);
+  put_string_attribute(ds, "description", "view of " + source + " with its axes swapped (no copy)");
+}
+
+std::unique_lock<std::recursive_mutex> lock_hdf5() {
+  std::unique_lock lock(hdf5_mutex());
+  silence_hdf5();
+  return lock;
+}
+
 // ---------------------------------------------------------------- reader ---
 
 H5Reader::H5Reader(const std::filesystem::path& path) : name_(path.string()) {
@@ -354,7 +390,7 @@ H5Reader H5Reader::from_image(std::string_view bytes, const std::string& name) {
   return r;
 }
 
-void H5Reader::refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read) {
+void detail::refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read) {
   // Seconds a child may take: a hang in HDF5 is a damaged file too.
   const std::string failed = detail::try_in_child(read, 5.0 + bytes / 20e6);
   if (!failed.empty()) throw InputError(fmt::format("{}: damaged or not what it claims: {}", name, failed));

@@ -43,6 +43,29 @@ TEST(ContactCli, ASphereGivesTheHertzContactRadius) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["results"]["clusters"]["value"], 1);
 }
 
+TEST(ContactCli, AFreeBoundaryGivesTheHertzApproachWithoutImages) {
+  // R = 1, E* = 1, a = 0.04 (64 cells across) on a window of 4 contact diameters: δ = a²/R.
+  const double a = 0.04, load = 4.0 * a * a * a / 3.0;
+  const auto r = run_cli("contact --set contact.grid=256 --set contact.size=0.32 --set contact.sphere.radius=1 "
+                         "--set contact.boundary=free --e-star 1 --load " + std::to_string(load) +
+                         " --out free --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["results"]["interference"]["value"].get<double>(), a * a, 0.01 * a * a);
+  EXPECT_EQ(j["parameters"]["contact"]["boundary"], "free");
+}
+
+TEST(ContactCli, AFreeWindowSmallerThanItsContactIsRefused) {
+  const double a = 0.04, load = 4.0 * a * a * a / 3.0;
+  const auto out = work / "free-small";
+  const auto r = run_cli("contact --set contact.grid=32 --set contact.size=0.05 --set contact.sphere.radius=1 "
+                         "--set contact.boundary=free --e-star 1 --load " + std::to_string(load) + " --out '" +
+                         out.string() + "'", work);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("edge"));
+  EXPECT_FALSE(fs::exists(out / "contact.h5"));
+}
+
 struct BadContact {
   std::string name, args, expected;
 };
@@ -68,7 +91,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadContact{"two_loads", "--load 1", "exactly one of mean_pressure, normal_load, interference"},
         BadContact{"negative_pressure", "--pressure -1", "contact.mean_pressure"},
         BadContact{"typo", "--set contact.tolerence=1e-8", "did you mean 'tolerance'"},
-        BadContact{"missing_file", "--surface /nonexistent.h5", "/nonexistent.h5"}),
+        BadContact{"missing_file", "--surface /nonexistent.h5", "/nonexistent.h5"},
+        BadContact{"unknown_boundary", "--set contact.boundary=fixed", "contact.boundary"},
+        BadContact{"free_with_friction", "--set contact.boundary=free --set contact.friction=coulomb "
+                   "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5", "frictionless contact only"}),
     [](const auto& p) { return p.param.name; });
 
 TEST(ContactCli, PoissonRatioAboveOneHalfIsRefused) {

@@ -441,7 +441,7 @@ INSTANTIATE_TEST_SUITE_P(
                  {}, "sweep.values"},
         // Surfaces (topography files).
         BadFile{"surface_ragged", contact, {{"h.txt", "# lx = 1 mm\n1 2 3\n4 5\n"}}, "h.txt: line 3"},
-        BadFile{"surface_nan", contact, {{"h.txt", "# lx = 1 mm\n1 2\nnan 4\n"}}, "not a finite number"},
+        BadFile{"surface_nan", contact, {{"h.txt", "# lx = 1 mm\n1 2\nnan 4\n"}}, "1 of 4 points (25 %) have no measured height"},
         BadFile{"surface_overflow", contact, {{"h.txt", "# lx = 1 mm\n1 2\n1e999 4\n"}}, "not a finite number"},
         BadFile{"surface_text", contact, {{"h.txt", "# lx = 1 mm\n1 2\n3 x\n"}}, "'x' is not a number"},
         BadFile{"surface_empty_value", contact, {{"h.txt", "# lx = 1 mm\n1,2\n3,,4\n"}}, "an empty value"},

@@ -119,3 +119,76 @@ TEST(SurfaceCli, BadInputIsExitStatus2NamingTheParameter) {
   EXPECT_EQ(bad("surface").status, 2);
   EXPECT_EQ(bad("surface generate --n 2 --size 1 --hurst 0.5 --kl 1 --ks 1 --sa 1 --out y.h5").status, 2);
 }
+
+namespace {
+// An ISO 25178-71 SDF (ASCII) measurement of 48 × 32 points, 0.5 µm × 0.25 µm
+// steps, one point BAD: what an instrument exports. The heights are
+// self-affine (modes of amplitude ∝ |k|^-(1+H), H = 0.8, fixed phases), so
+// that the Hurst fit of `surface analyze` is a result, not a refusal.
+fs::path measured_sdf(const std::string& name) {
+  std::string t = "aISO-1.0\nManufacID = test\nCreateDate = 010120240000\nModDate = 010120240000\n"
+                  "NumPoints = 48\nNumProfiles = 32\nXscale = 5e-07\nYscale = 2.5e-07\nZscale = 1e-09\n"
+                  "Zresolution = -1\nCompression = 0\nDataType = 7\nCheckType = 0\n*\n";
+  const double pi = 3.14159265358979323846;
+  auto height = [&](int r, int c) {  // r along y (32 profiles), c along x (48 points); both sides 24 µm / 8 µm
+    double h = 0.0;
+    for (int kx = -23; kx <= 23; ++kx)
+      for (int ky = 0; ky <= 15; ++ky) {
+        if (ky == 0 && kx <= 0) continue;
+        const double qx = 2 * pi * kx / 24e-6, qy = 2 * pi * ky / 8e-6, q = std::hypot(qx, qy);
+        const double phase = 2 * pi * std::fmod(std::abs(std::sin(12.9898 * kx + 78.233 * ky)) * 43758.5453, 1.0);
+        h += std::pow(q * 1e-6, -1.8) * std::cos(qx * c * 5e-7 + qy * r * 2.5e-7 + phase);
+      }
+    return 10.0 * h;  // nm
+  };
+  for (int r = 0; r < 32; ++r) {
+    for (int c = 0; c < 48; ++c) t += r == 7 && c == 11 ? " BAD" : fmt::format(" {:.6f}", height(r, c));
+    t += "\n";
+  }
+  const auto path = work / name;
+  fs::create_directories(work);
+  std::ofstream(path) << t << "*\n";
+  return path;
+}
+}  // namespace
+
+TEST(SurfaceCli, AnalyzeReadsAnInstrumentFileWithItsSizeAndAsksWhatToDoWithMissingPoints) {
+  const auto file = measured_sdf("measured.sdf");
+  const auto refused = run_cli("surface analyze '" + file.string() + "'", work);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_THAT(refused.err, HasSubstr("1 of 1536 points"));
+  EXPECT_THAT(refused.err, HasSubstr("--missing fill"));
+  const auto r = run_cli("surface analyze '" + file.string() + "' --missing fill --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["format"], "ISO 25178-71 SDF");
+  EXPECT_EQ(j["missing_points"], 1);
+  EXPECT_EQ(j["grid"]["nx"], 48);
+  EXPECT_EQ(j["grid"]["ny"], 32);
+  EXPECT_DOUBLE_EQ(j["grid"]["lx"].get<double>(), 48 * 5e-7);
+  EXPECT_DOUBLE_EQ(j["grid"]["ly"].get<double>(), 32 * 2.5e-7);
+  const auto bad = run_cli("surface analyze '" + file.string() + "' --missing maybe", work);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--missing = 'maybe'"));
+  EXPECT_THAT(bad.err, HasSubstr("refuse | fill"));
+}
+
+TEST(SurfaceCli, AnUnsupportedFormatIsNamedWithTheFormatsThatAreRead) {
+  fs::create_directories(work);
+  std::ofstream(work / "scan.plu", std::ios::binary) << std::string("\x01\x00\x02 plu", 7);
+  const auto r = run_cli("surface analyze scan.plu", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("Sensofar (.plu) is not supported"));
+  EXPECT_THAT(r.err, HasSubstr("ISO 25178-72 X3P (.x3p)"));
+}
+
+TEST(SurfaceCli, ContactTakesAnInstrumentFileAndTheMissingPointsChoice) {
+  const auto file = measured_sdf("contact.sdf");
+  const std::string base = "contact --surface '" + file.string() + "' --e-star 1e11 --pressure 1e7 --out sdf-contact";
+  const auto refused = run_cli(base, work);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_THAT(refused.err, HasSubstr("contact.missing"));
+  const auto r = run_cli(base + " --missing fill --json", work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["parameters"]["contact"]["missing"], "fill");
+}

@@ -181,3 +181,96 @@ TEST(HalfSpace, RefusesUnphysicalMaterials) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("ν ≤ 0.5"));
   }
 }
+
+// --- Free boundary: a window on an unbounded half-space (zero padding, Love's cells) ---
+
+TEST(HalfSpace, FreeCellUnderUniformPressureSinksAsLovesRectangle) {
+  // The centre of a square cell of side h under p sinks by (1−ν²) p h · 4 ln(1+√2) / (πE)
+  // (Love 1929); far away the cell acts as Boussinesq's point load P = p h²,
+  // u = (1−ν²) P / (πE r), the difference being h²/(24 r²) of it.
+  const double e = 3.0, nu = 0.3, l = 2.0;
+  const std::size_t n = 64;
+  const Grid2D grid = Grid2D::square(n, l);
+  HalfSpace body(grid, e, nu, Boundary::Free, Response::Normal);
+  RealField p(grid), u(grid);
+  const std::size_t c = n / 2;
+  p(c, c) = 1.0;
+  body.normal_displacement(p, u);
+  const double h = grid.dx(), es = e / (1.0 - nu * nu);
+  EXPECT_NEAR(u(c, c), 4.0 * h * std::log(1.0 + std::sqrt(2.0)) / (pi * es), 1e-12 * u(c, c));
+  EXPECT_NEAR(body.self_compliance(), u(c, c), 1e-12 * u(c, c));
+  for (std::size_t d : {10ul, 20ul, 31ul}) {
+    const double r = static_cast<double>(d) * h, point = h * h / (pi * es * r);
+    EXPECT_NEAR(u(c + d, c), point, 0.05 * (h * h) / (r * r) * point) << d << " cells away";
+    EXPECT_NEAR(u(c, c - d), point, 0.05 * (h * h) / (r * r) * point) << d << " cells away";
+  }
+  double mean = 0.0;
+  for (double v : u) mean += v;
+  EXPECT_GT(mean, 0.0);  // the true displacement: no zero mode removed
+}
+
+TEST(HalfSpace, FreeCellLoadsFollowBoussinesqAndCerrutiFarAway) {
+  // Point solutions (Johnson 1985, §2.2, (3.19)) for P on one cell, 12 × 5 cells away.
+  const double e = 2.0, nu = 0.25, l = 1.0;
+  const std::size_t n = 48, c = 16;
+  const Grid2D grid = Grid2D::square(n, l);
+  HalfSpace body(grid, e, nu, Boundary::Free);
+  const double h = grid.dx(), g = body.shear_modulus(), force = h * h;
+  const long dx = 12, dy = 5;
+  const double x = dx * h, y = dy * h, r = std::hypot(x, y);
+  // The cell differs from the point by the next term of its expansion, (h²/24) ∇² of
+  // the point solution: about (h/r)²/24 relative (more for xy, which varies faster).
+  const double tol = 0.05 * (h * h) / (r * r);
+  auto load = [&](int component) {
+    VectorField p(grid), u(grid);
+    (component == 0 ? p.x : component == 1 ? p.y : p.z)(c, c) = 1.0;
+    body.displacement(p, u);
+    return std::array<double, 3>{u.x(c + dx, c + dy), u.y(c + dx, c + dy), u.z(c + dx, c + dy)};
+  };
+  const auto from_x = load(0), from_z = load(2);
+  const double xx = force / (2.0 * pi * g) * ((1.0 - nu) / r + nu * x * x / (r * r * r));
+  const double xy = force / (2.0 * pi * g) * nu * x * y / (r * r * r);
+  const double zz = force * (1.0 - nu) / (2.0 * pi * g * r);
+  const double xz = -force * (1.0 - 2.0 * nu) / (4.0 * pi * g) * x / (r * r);  // u_x from p_z, towards the load
+  EXPECT_NEAR(from_x[0], xx, tol * std::abs(xx));
+  EXPECT_NEAR(from_x[1], xy, 4.0 * tol * std::abs(xy));
+  EXPECT_NEAR(from_x[2], -xz, tol * std::abs(xz));  // Betti: u_z from p_x = −(u_x from p_z)
+  EXPECT_NEAR(from_z[0], xz, tol * std::abs(xz));
+  EXPECT_NEAR(from_z[2], zz, tol * std::abs(zz));
+}
+
+TEST(HalfSpace, FreeOperatorIsSymmetricAndPositiveAndMatchesItsNormalBlock) {
+  const Grid2D grid(24, 20, 1.2, 1.0);
+  HalfSpace body(grid, 1.0, 0.3, Boundary::Free);
+  HalfSpace normal = HalfSpace::normal(grid, body.contact_modulus(), Boundary::Free);
+  VectorField p1(grid), p2(grid), u1(grid), u2(grid);
+  RealField uz(grid);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> d;
+  for (auto* f : {&p1.x, &p1.y, &p1.z, &p2.x, &p2.y, &p2.z})
+    for (auto& v : *f) v = d(rng);
+  body.displacement(p1, u1);
+  body.displacement(p2, u2);
+  double w12 = 0.0, w21 = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    w12 += p1.x[k] * u2.x[k] + p1.y[k] * u2.y[k] + p1.z[k] * u2.z[k];
+    w21 += p2.x[k] * u1.x[k] + p2.y[k] * u1.y[k] + p2.z[k] * u1.z[k];
+  }
+  EXPECT_NEAR(w12, w21, 1e-12 * std::abs(w12));
+  EXPECT_GT(HalfSpace::elastic_energy(p1, u1), 0.0);
+  // Parseval's forms on the padded grid equal the sums over the window.
+  auto w = body.workspace();
+  const auto form = body.form(p1, w);
+  double nn = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) nn += p1.z[k] * u1.z[k];
+  VectorField only_z(grid), u_only_z(grid);
+  only_z.z = p1.z;
+  body.displacement(only_z, u_only_z);
+  double nn_direct = 0.0;
+  for (std::size_t k = 0; k < grid.size(); ++k) nn_direct += p1.z[k] * u_only_z.z[k];
+  EXPECT_NEAR(form.nn, nn_direct, 1e-10 * std::abs(nn_direct));
+  EXPECT_NEAR(form.nn + form.tt + 2.0 * form.nt, 2.0 * HalfSpace::elastic_energy(p1, u1) / grid.cell_area(),
+              1e-10 * std::abs(nn));
+  normal.normal_displacement(p1.z, uz);
+  for (std::size_t k = 0; k < grid.size(); ++k) ASSERT_NEAR(uz[k], u_only_z.z[k], 1e-12 * std::abs(u_only_z.z[k]) + 1e-14);
+}

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -235,4 +236,63 @@ TEST(NormalContact, GrowsFromAOnePointContactWhenTheLoadRises) {
   const auto large = contact.solve_mean_pressure(1e-3);
   EXPECT_GT(large.contact_fraction, 5.0 / g.size());
   EXPECT_LT(large.error, 1e-12);
+}
+
+// --- Free boundary: an isolated sphere, no periodic images ---
+
+class FreeHertzTest : public ::testing::TestWithParam<HertzCase> {};
+
+TEST_P(FreeHertzTest, ApproachPeakPressureAndContactRadiusMatchHertzWithoutImageCorrections) {
+  // c.n cells across the contact (64 and more), a window of c.size contact
+  // diameters (padded to twice that). Free: nothing depends on the window but
+  // its being larger than the contact, so the cases differ by their resolution.
+  const auto& c = GetParam();
+  const HertzContact hertz{c.radius, c.load, c.e_star};
+  const double a = hertz.contact_radius(), dx = 2.0 * a / static_cast<double>(c.n);
+  const auto cells = static_cast<std::size_t>(c.size * static_cast<double>(c.n));
+  const Grid2D g = Grid2D::square(cells, static_cast<double>(cells) * dx);
+  NormalContact contact(paraboloid(g, c.radius), c.e_star, Boundary::Free);
+  const auto r = contact.solve_mean_pressure(c.load / g.area(), {1e-10, 1000});
+  // Measured: δ within 3e-5, p0 within 5e-5, a (from the count of cells in
+  // contact) within 0.5 % at 64 cells across; the issue asks for δ within 1 %.
+  EXPECT_NEAR(r.interference, hertz.approach(), 1e-3 * hertz.approach());
+  const double a_num = std::sqrt(r.contact_fraction * g.area() / pi);
+  EXPECT_NEAR(a_num, a, 0.01 * a);
+  const double p_max = *std::max_element(contact.pressure().begin(), contact.pressure().end());
+  EXPECT_NEAR(p_max, hertz.peak_pressure(), 1e-3 * hertz.peak_pressure());
+  EXPECT_NEAR(r.mean_pressure * g.area(), c.load, 1e-10 * c.load);
+  // Outside the contact the surface follows Johnson's (3.42b) towards the far field.
+  const std::size_t mid = cells / 2, off = 3 * c.n / 4;  // r = 1.5 a
+  const double outside = hertz_outside(hertz, static_cast<double>(off) * dx);
+  EXPECT_NEAR(contact.displacement()(mid + off, mid), outside, 2e-3 * outside);
+  RecordProperty("outside_relative_error", std::to_string(contact.displacement()(mid + off, mid) / outside - 1.0));
+  RecordProperty("approach_relative_error", std::to_string(r.interference / hertz.approach() - 1.0));
+  RecordProperty("a_relative_error", std::to_string(a_num / a - 1.0));
+  RecordProperty("p0_relative_error", std::to_string(p_max / hertz.peak_pressure() - 1.0));
+  RecordProperty("iterations", std::to_string(r.iterations));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spheres, FreeHertzTest,
+    ::testing::Values(HertzCase{"pin", 3e-3, 1.0, effective_modulus(73e9, 0.17, 73e9, 0.17), 4.0, 64},
+                      HertzCase{"unit", 1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0, 3.0, 96},
+                      HertzCase{"stiff", 0.05, 20.0, 150e9, 2.5, 128}),
+    [](const auto& p) { return std::string(p.param.name); });
+
+TEST(NormalContact, AFreeWindowTooSmallForItsContactIsRefused) {
+  // The same sphere on a window narrower than its contact (1.5 a wide): the
+  // pressure reaches the border, where the body is missing. Refused, not solved.
+  const HertzContact hertz{1.0, 4.0 * std::pow(0.04, 3) / 3.0, 1.0};
+  const double a = hertz.contact_radius();
+  const Grid2D g = Grid2D::square(48, 1.5 * a);
+  NormalContact contact(paraboloid(g, 1.0), 1.0, Boundary::Free);
+  try {
+    contact.solve_mean_pressure(hertz.load / g.area());
+    FAIL() << "a contact reaching the window's edge must be refused";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("free boundary"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("edge"));
+  }
+  NormalContact inside(paraboloid(g, 1.0), 1.0, Boundary::Free);  // a tenth of the load: a = 0.46 a fits
+  EXPECT_NO_THROW(inside.solve_mean_pressure(0.1 * hertz.load / g.area()));
 }

@@ -19,6 +19,7 @@
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "xdmf_check.hpp"
 
 using namespace wearscale;
 using namespace wearscale::bem;
@@ -114,10 +115,21 @@ TEST(TopographyIo, NonNumbersAreRefusedWithLineAndColumn) {
   EXPECT_THAT(rejection(write_text("trailing.csv", "1,2,\n")), HasSubstr("line 1, column 3"));
 }
 
-TEST(TopographyIo, NanAndInfinityAreRefused) {
-  EXPECT_THAT(rejection(write_text("nan.txt", "1 2\n3 nan\n")), HasSubstr("line 2, column 2: 'nan' is not a finite"));
+TEST(TopographyIo, NanIsAMissingPointAndInfinityIsRefused) {
+  // nan marks a missing point: refused unless the user chooses to fill it.
+  const std::string nan = rejection(write_text("nan.txt", "1 2\n3 nan\n"));
+  EXPECT_THAT(nan, HasSubstr("1 of 4 points"));
+  EXPECT_THAT(nan, HasSubstr("(the first at line 2, column 2)"));
+  EXPECT_THAT(nan, HasSubstr("missing = fill"));
+  TopographyOptions fill;
+  fill.size = {1.0, 1.0};
+  fill.missing = MissingPoints::Fill;
+  const auto filled = read_measured_topography(write_text("nan.txt", "1 2\n3 nan\n"), fill);
+  EXPECT_EQ(filled.missing, 1u);
+  EXPECT_DOUBLE_EQ(filled.heights(1, 1), 2.5) << "the mean of its two measured neighbours (3 and 2)";
   EXPECT_THAT(rejection(write_text("inf.txt", "1 -inf\n3 4\n")), HasSubstr("line 1, column 2"));
   EXPECT_THAT(rejection(write_text("huge.txt", "1 1e400\n3 4\n")), HasSubstr("line 1, column 2"));
+  EXPECT_THAT(rejection(write_text("allnan.txt", "nan nan\nnan nan\n")), HasSubstr("every one of its 4 points"));
 }
 
 TEST(TopographyIo, EmptyFilesMissingFilesAndMissingSizesAreRefused) {
@@ -139,7 +151,8 @@ TEST(TopographyIo, Hdf5RoundTripWithXdmfSidecar) {
   std::stringstream xml_text;
   xml_text << std::ifstream(sidecar).rdbuf();
   const std::string xml = xml_text.str();
-  EXPECT_THAT(xml, HasSubstr("surface.h5:/surface/height"));
+  EXPECT_THAT(xml, HasSubstr("surface.h5:/xdmf/surface/height"));
+  expect_xdmf_describes(sidecar, path, {32, 24}, {"/surface/height"}, std::array<double, 4>{0.0, 0.0, g.dx(), g.dy()});
 
   const RealField back = read_topography(path);
   ASSERT_EQ(back.grid(), g);

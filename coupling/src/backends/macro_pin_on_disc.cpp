@@ -47,6 +47,8 @@ class MacroPinOnDisc final : public Scale {
     s_.nonplanar_slope = c.number_or("nonplanarity.slope", 0.0, Range::closed_open(0.0, 0.2));
     s_.nonplanar_period = c.number_or("nonplanarity.period", 0.05, Range::positive(), units::length);
     s_.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1e-3));
+    s_.boundary = c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? bem::Boundary::Free
+                                                                                   : bem::Boundary::Periodic;
     // Elastic properties of the contact solve: the pin's for both bodies (the
     // thesis, which could not model layered bodies), the pair's, or a value.
     const std::string elastic = c.choice_or("elastic", "pin", {"pin", "pair"});
@@ -86,6 +88,7 @@ class MacroPinOnDisc final : public Scale {
     // before the checkpoint come back; the run then goes on from there.
     std::vector<tribometer::PinOnDiscSample> samples;
     std::vector<Snapshot> snapshots;
+    XdmfSidecar series(model.grid());  // the snapshots in ParaView, the sliding distance as time
     std::size_t n = 0;
     long adaptive_steps = 0;
     double next_step = 0.0;
@@ -98,7 +101,7 @@ class MacroPinOnDisc final : public Scale {
       model.restore(*saved);
       samples = load_samples(*saved);
       snapshots = load_snapshots(*saved);
-      for (const auto& snap : snapshots) write_fields(ctx, model.grid(), snap);
+      for (const auto& snap : snapshots) write_fields(ctx, model.grid(), snap, &series);
       n = static_cast<std::size_t>(saved->scalar("snapshot_counter"));
       adaptive_steps = static_cast<long>(saved->scalar("adaptive_steps"));
       next_step = saved->scalar("next_step");
@@ -124,7 +127,7 @@ class MacroPinOnDisc final : public Scale {
       progress.update(x.distance * 1e3);
       if (fields_every_ > 0 && n++ % fields_every_ == 0) {
         snapshots.push_back(snapshot(model, fmt::format("/macro/fields/{:08.4f}", x.distance)));
-        write_fields(ctx, model.grid(), snapshots.back());
+        write_fields(ctx, model.grid(), snapshots.back(), &series);
       }
     };
     if (integrator_ == "explicit") {
@@ -149,9 +152,14 @@ class MacroPinOnDisc final : public Scale {
     progress.finish();
     report(ctx, model, samples);
     write_fields(ctx, model.grid(), snapshot(model, "/macro/final"));
-    write_xdmf(ctx.output_dir() / "final_surfaces.xdmf", ctx.h5().final_path(), model.grid(),
-               {{"/macro/final/pin", "pin"}, {"/macro/final/disc", "disc"}, {"/macro/final/pressure", "pressure"}});
+    XdmfSidecar(model.grid())
+        .add(ctx.h5(), snapshot_fields("/macro/final"))
+        .write(ctx.output_dir() / "final_surfaces.xdmf", ctx.h5().final_path());
     ctx.add_file(ctx.output_dir() / "final_surfaces.xdmf");
+    if (series.steps() > 0) {
+      series.write(ctx.output_dir() / "fields.xdmf", ctx.h5().final_path(), "s", "m");
+      ctx.add_file(ctx.output_dir() / "fields.xdmf");
+    }
     exchange.put(provides().front(), ctx.results(), provenance_);
   }
 
@@ -162,14 +170,20 @@ class MacroPinOnDisc final : public Scale {
   struct Snapshot {
     std::string group;
     std::vector<double> pin, disc, pressure;  // pin and pressure n×n, disc one value per x column
+    double distance = 0.0;                    // sliding distance [m]
   };
 
   static Snapshot snapshot(const tribometer::PinOnDisc& model, std::string group) {
     return {std::move(group), {model.pin_surface().begin(), model.pin_surface().end()}, model.disc_profile(),
-            {model.contact().pressure().begin(), model.contact().pressure().end()}};
+            {model.contact().pressure().begin(), model.contact().pressure().end()}, model.distance()};
   }
 
-  static void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap) {
+  static std::vector<XdmfField> snapshot_fields(const std::string& group) {
+    return {{group + "/pin", "pin"}, {group + "/disc", "disc"}, {group + "/pressure", "pressure"}};
+  }
+
+  // The snapshot's fields and its distance attribute; a step of `series` if given.
+  static void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap, XdmfSidecar* series = nullptr) {
     RealField pin(g), disc(g), pressure(g);
     std::copy(snap.pin.begin(), snap.pin.end(), pin.begin());
     std::copy(snap.pressure.begin(), snap.pressure.end(), pressure.begin());
@@ -178,6 +192,9 @@ class MacroPinOnDisc final : public Scale {
     ctx.h5().write_field(snap.group + "/pin", pin, "m");
     ctx.h5().write_field(snap.group + "/disc", disc, "m");
     ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa");
+    ctx.h5().set_attribute(snap.group, "distance", snap.distance);
+    ctx.h5().set_attribute(snap.group, "distance_unit", "m");
+    if (series != nullptr) series->add_step(ctx.h5(), snap.distance, snapshot_fields(snap.group));
   }
 
   // The samples so far as columns of the checkpoint, and back.
@@ -210,6 +227,7 @@ class MacroPinOnDisc final : public Scale {
       st.put(fmt::format("snapshot{}/pin", k), snaps[k].pin);
       st.put(fmt::format("snapshot{}/disc", k), snaps[k].disc);
       st.put(fmt::format("snapshot{}/pressure", k), snaps[k].pressure);
+      st.put(fmt::format("snapshot{}/distance", k), snaps[k].distance);
     }
     st.put_text("snapshot_groups", groups);
   }
@@ -222,7 +240,8 @@ class MacroPinOnDisc final : public Scale {
       const auto end = std::min(groups.find('\n', start), groups.size());
       const std::size_t k = out.size();
       out.push_back({groups.substr(start, end - start), st.array(fmt::format("snapshot{}/pin", k)),
-                     st.array(fmt::format("snapshot{}/disc", k)), st.array(fmt::format("snapshot{}/pressure", k))});
+                     st.array(fmt::format("snapshot{}/disc", k)), st.array(fmt::format("snapshot{}/pressure", k)),
+                     st.scalar(fmt::format("snapshot{}/distance", k))});
       start = end + 1;
     }
     return out;

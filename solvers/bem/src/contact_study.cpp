@@ -32,10 +32,13 @@ double bytes_per_point(const std::string& friction) { return friction == "none" 
 RealField build_surface(const Config& c, const std::string& friction) {
   RealField h;
   if (c.has("surface")) {
-    const std::string dataset = c.string_or("dataset", default_surface_dataset);
-    TopographySize size;
-    if (c.has("size")) size.lx = size.ly = c.number("size", Range::positive(), units::length);
-    h = read_topography(c.path("surface"), dataset, size);
+    TopographyOptions read;
+    read.dataset = c.string_or("dataset", default_surface_dataset);
+    if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
+    read.missing = missing_points_from(
+        c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
+        c.full_key(MissingPointsChoice::key));
+    h = read_measured_topography(c.path("surface"), read).heights;
   } else {
     const long n = c.integer("grid", Range::closed(8, 16384));
     require_memory(bytes_per_point(friction) * static_cast<double>(n) * static_cast<double>(n),
@@ -78,6 +81,11 @@ RealField build_surface(const Config& c, const std::string& friction) {
   return h;
 }
 
+// [contact] boundary: "periodic" (a cell of a periodic surface) or "free" (a window on an isolated body).
+Boundary contact_boundary(const Config& c) {
+  return c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? Boundary::Free : Boundary::Periodic;
+}
+
 double contact_modulus(const Config& c) {
   if (c.has("e_star")) return c.number("e_star", Range::positive(), units::pressure);
   const double e = c.number("young", Range::positive(), units::pressure);
@@ -98,14 +106,15 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
   options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
   const auto connectivity =
       c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
+  const Boundary boundary = contact_boundary(c);
   double p0 = 0.0, delta = 0.0;
   if (c.has("mean_pressure")) p0 = c.number("mean_pressure", Range::non_negative(), units::pressure);
   if (c.has("normal_load")) p0 = c.number("normal_load", Range::non_negative(), units::force) / g.area();
   if (c.has("interference")) delta = c.number("interference", Range::any(), units::length);
   config.reject_unknown_keys();  // every check before any work
 
-  log::info("contact: {} , E* = {:g} Pa", g.to_string(), e_star);
-  NormalContact contact(h, e_star);
+  log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), e_star, to_string(boundary));
+  NormalContact contact(h, e_star, boundary);
   const ContactResult r =
       c.has("interference") ? contact.solve_interference(delta, options) : contact.solve_mean_pressure(p0, options);
   const ContactMap map = find_clusters(contact.pressure(), connectivity);
@@ -129,7 +138,9 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
   report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
   report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
   report("contact_area", contact_area(contact.pressure()), "m^2", "real contact area A");
-  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+  report("interference", r.interference, "m",
+         boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
+                                    : "summit depth below the mean deformed surface");
   report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
   report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
   report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
@@ -143,10 +154,11 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
     cy.push_back(cl.centroid_y);
   }
   h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"});
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
+                   {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g,
-             {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
-              {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
+  sidecar.write(out / "contact.xdmf", h5_path);
   write_csv(out / "clusters.csv", {"area_m2", "centroid_x_m", "centroid_y_m"}, {area, cx, cy},
             {"micro-contacts of the solved contact, largest first"});
   return {{"results", results},
@@ -162,6 +174,9 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
     throw c.error("poisson", "frictional contact needs Poisson's ratio: normal and tangential couple through it (4.22)",
                   "−1 < ν ≤ 0.5 (0.5: decoupled)");
   const double nu = c.number("poisson", Range::open_closed(-1.0, 0.5));
+  if (contact_boundary(c) == Boundary::Free)
+    throw c.error("boundary", "a free boundary is implemented for frictionless contact only (friction = \"none\")",
+                  "\"periodic\" with friction");
   if (int(c.has("young")) + int(c.has("e_star")) != 1)
     throw c.error("young", "give exactly one of young, e_star", "one elastic modulus");
   const double young = c.has("young") ? c.number("young", Range::positive(), units::pressure)
@@ -313,8 +328,10 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
     columns.insert(columns.end(), {trailing, leading, initiates});
   }
   h5.write_table("/clusters", names, columns, table_units);
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, xdmf);
   h5.commit();
-  write_xdmf(out / "contact.xdmf", h5_path, g, xdmf);
+  sidecar.write(out / "contact.xdmf", h5_path);
   std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
   if (crack)
     comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));

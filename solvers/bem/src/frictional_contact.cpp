@@ -29,6 +29,10 @@ enum : std::uint8_t { kOpen = 0, kStick = 1, kSlip = 2, kReleased = 3 };
 // are far from it), which costs more than the rest of a pass.
 inline double norm(double x, double y) { return std::sqrt(x * x + y * y); }
 
+void check_grid(const Grid2D& g) {
+  if (g.nx < 2 || g.ny < 2) throw InputError("frictional contact: the grid needs at least 2×2 points");
+}
+
 void check_material(double e, double nu) {
   if (!(e > 0.0) || !std::isfinite(e))
     throw InputError(fmt::format("frictional contact: Young's modulus E = {} is not allowed; allowed: E > 0", e));
@@ -41,12 +45,9 @@ void check_material(double e, double nu) {
 FrictionalContact::FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law)
     : h_(surface), young_(young), poisson_(poisson), law_(law), p_(surface.grid()), u_(surface.grid()),
       t_(surface.grid()), t_old_(surface.grid()), d_(surface.grid()), slip_(surface.grid()), gap_(surface.grid()),
-      map_(surface.grid()),
-      bound_(surface.grid()), state_(surface.size(), kOpen), sx_(ComplexField::spectrum_of(surface.grid())),
-      sy_(ComplexField::spectrum_of(surface.grid())), sz_(ComplexField::spectrum_of(surface.grid())) {
-  const Grid2D& g = surface.grid();
-  check_material(young, poisson);
-  if (g.nx < 2 || g.ny < 2) throw InputError("frictional contact: the grid needs at least 2×2 points");
+      map_(surface.grid()), bound_(surface.grid()), state_(surface.size(), kOpen),
+      body_((check_material(young, poisson), check_grid(surface.grid()), HalfSpace(surface.grid(), young, poisson))),
+      work_(body_.workspace()) {
   double max = -INFINITY;
   for (double v : h_) {
     if (!std::isfinite(v)) throw InputError("frictional contact: the surface has a NaN or infinite height");
@@ -55,88 +56,10 @@ FrictionalContact::FrictionalContact(const RealField& surface, double young, dou
   h_rms_ = h_rms(h_);  // the scale of the convergence measure
   if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
   h_max_ = max;
-
-  plan_ = FFTPlanCache::global().plan(g);
-  const std::size_t cols = g.spectral_ny(), modes = g.spectral_size();
-  for (auto* f : {&fxx_, &fyy_, &fxy_, &fzz_, &ixz_, &iyz_}) f->assign(modes, 0.0);
-  const double shear = young / (2.0 * (1.0 + poisson)), inv_n = 1.0 / static_cast<double>(g.size());
-  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
-  const std::size_t last = nyq_y ? cols - 1 : cols;  // the Nyquist column is its own mirror
-  self_compliance_ = 0.0;
-  for (std::size_t i = 0; i < g.nx; ++i)
-    for (std::size_t j = 0; j < cols; ++j) {
-      const std::size_t m = i * cols + j;
-      // (2.35), (4.3), (4.22); the odd coupling dropped at Nyquist frequencies, as in HalfSpace.
-      const GreenTensor f = HalfSpace::green_tensor(g.wavenumber_x(i), g.wavenumber_y(j), shear, poisson,
-                                                    !(nyq_x && i == g.nx / 2), !(nyq_y && j == g.ny / 2));
-      fxx_[m] = f[0][0].real() * inv_n;
-      fyy_[m] = f[1][1].real() * inv_n;
-      fxy_[m] = f[0][1].real() * inv_n;
-      fzz_[m] = f[2][2].real() * inv_n;
-      ixz_[m] = f[0][2].imag() * inv_n;
-      iyz_[m] = f[1][2].imag() * inv_n;
-      self_compliance_ += (j == 0 || j == last ? 1.0 : 2.0) * fzz_[m];
-    }
 }
 
 void FrictionalContact::reset() {
   for (RealField* f : {&p_.x, &p_.y, &p_.z}) f->fill(0.0);
-}
-
-void FrictionalContact::apply(const VectorField& p, VectorField& u) {
-  plan_->forward(p.x, sx_);
-  plan_->forward(p.y, sy_);
-  plan_->forward(p.z, sz_);
-  // û = F p̂ (A.4) in real arithmetic (std::complex products call __muldc3).
-  double* a = reinterpret_cast<double*>(sx_.data());
-  double* b = reinterpret_cast<double*>(sy_.data());
-  double* c = reinterpret_cast<double*>(sz_.data());
-  const std::size_t modes = fxx_.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t m = 0; m < modes; ++m) {
-    const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
-    const double fxx = fxx_[m], fyy = fyy_[m], fxy = fxy_[m], fzz = fzz_[m], gx = ixz_[m], gy = iyz_[m];
-    a[2 * m] = fxx * xr + fxy * yr - gx * zi;  // i g z = (−g z_i, g z_r)
-    a[2 * m + 1] = fxx * xi + fxy * yi + gx * zr;
-    b[2 * m] = fxy * xr + fyy * yr - gy * zi;
-    b[2 * m + 1] = fxy * xi + fyy * yi + gy * zr;
-    c[2 * m] = gx * xi + gy * yi + fzz * zr;  // −i g x = (g x_i, −g x_r)
-    c[2 * m + 1] = -gx * xr - gy * yr + fzz * zi;
-  }
-  plan_->backward_unnormalized(sx_, u.x);
-  plan_->backward_unnormalized(sy_, u.y);
-  plan_->backward_unnormalized(sz_, u.z);
-}
-
-FrictionalContact::BlockForm FrictionalContact::quadratic_form(const VectorField& t) {
-  plan_->forward(t.x, sx_);
-  plan_->forward(t.y, sy_);
-  plan_->forward(t.z, sz_);
-  const Grid2D& g = grid();
-  const std::size_t cols = g.spectral_ny(), rows = g.nx;
-  const std::size_t last = g.ny % 2 == 0 ? cols - 1 : cols;
-  const double* a = reinterpret_cast<const double*>(sx_.data());
-  const double* b = reinterpret_cast<const double*>(sy_.data());
-  const double* c = reinterpret_cast<const double*>(sz_.data());
-  double nn = 0.0, tt = 0.0, nt = 0.0;
-#pragma omp parallel for reduction(+ : nn, tt, nt) schedule(static)
-  for (std::size_t r = 0; r < rows; ++r) {
-    double row_nn = 0.0, row_tt = 0.0, row_nt = 0.0;
-    for (std::size_t j = 0; j < cols; ++j) {
-      const std::size_t m = r * cols + j;
-      const double w = (j == 0 || j == last) ? 1.0 : 2.0;  // modes stored once for ±q_y
-      const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
-      // The blocks of t̂ᴴ F t̂ (F Hermitian: each is real); Im(conj(x) z) = x_r z_i − x_i z_r.
-      row_nn += w * fzz_[m] * (zr * zr + zi * zi);
-      row_tt += w * (fxx_[m] * (xr * xr + xi * xi) + fyy_[m] * (yr * yr + yi * yi) +
-                     2.0 * fxy_[m] * (xr * yr + xi * yi));
-      row_nt -= w * (ixz_[m] * (xr * zi - xi * zr) + iyz_[m] * (yr * zi - yi * zr));
-    }
-    nn += row_nn;
-    tt += row_tt;
-    nt += row_nt;
-  }
-  return {nn, tt, nt};  // Σ_x t·(F * t) = (1/N) Σ_q t̂ᴴ F t̂, the 1/N being in the kernel
 }
 
 bool FrictionalContact::project_tangential(double target_x, double target_y, int iteration, bool free_only) {
@@ -284,13 +207,12 @@ bool FrictionalContact::project_tangential(double target_x, double target_y, int
                                    target_x, target_y, capacity_));
 }
 
-FrictionalResult FrictionalContact::solve(const MeanTraction& load, const FrictionalOptions& opt) {
+void FrictionalContact::check_load(const MeanTraction& load) const {
   if (!(load.normal >= 0.0) || !std::isfinite(load.normal))
     throw InputError(
         fmt::format("frictional contact: mean normal traction {} is not allowed; allowed: ≥ 0", load.normal));
   if (!std::isfinite(load.x) || !std::isfinite(load.y))
     throw InputError("frictional contact: the mean tangential traction must be finite");
-  if (!(opt.tolerance > 0.0)) throw InputError("frictional contact: the tolerance must be > 0");
   const double q0 = norm(load.x, load.y);
   const bool coulomb = law_.kind() == FrictionLaw::Kind::Coulomb;
   const double mu = coulomb ? law_.parameter() : 0.0;
@@ -300,30 +222,17 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
         "⟨p_N⟩ = {:g} Pa: the contact slides as a whole (gross sliding); "
         "allowed: ‖⟨p_T⟩‖ ≤ μ⟨p_N⟩ = {:g} Pa",
         q0, law_.to_string(), load.normal, mu * load.normal));
-  history_.clear();
-  bound_updates_ = 0;
-  const std::size_t n = h_.size();
-  const double nn = static_cast<double>(n);
-  double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
-  const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data();
-  const double *dx = d_.x.data(), *dy = d_.y.data(), *dz = d_.z.data();
-  double* bound = bound_.data();
-  const double* h = h_.data();
-  std::uint8_t* state = state_.data();
+}
 
-  if (load.normal == 0.0) {
-    reset();
-    for (RealField* f : {&u_.x, &u_.y, &u_.z}) f->fill(0.0);
-    std::fill(state_.begin(), state_.end(), kOpen);
-    shift_n_ = -h_max_;
-    shift_x_ = shift_y_ = 0.0;
-    all_sliding_ = false;
-    return finish(0, 0.0, 0.0, 0.0, load);
-  }
-  // Warm start: the previous traction rescaled to the new mean; else uniform.
+// Warm start: the previous traction rescaled to the new mean; else uniform.
+// The friction bound of the first subproblem: σ_m,T (A.3), or μ p_N (A.2) of
+// that traction (lagged; see the header).
+void FrictionalContact::warm_start(const MeanTraction& load) {
+  const std::size_t n = h_.size();
+  double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
   double mean = 0.0;
   for (std::size_t k = 0; k < n; ++k) mean += pz[k];
-  mean /= nn;
+  mean /= static_cast<double>(n);
   if (mean > 0.0 && std::isfinite(mean)) {
     const double alpha = load.normal / mean;
     for (std::size_t k = 0; k < n; ++k) {
@@ -336,334 +245,432 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
     p_.x.fill(0.0);
     p_.y.fill(0.0);
   }
-  // The friction bound of the current subproblem: σ_m,T (A.3), or μ p_N (A.2)
-  // of the last converged traction (lagged; see the header).
-  const FrictionLaw law = law_;
-  for (std::size_t k = 0; k < n; ++k) bound[k] = law.max_tangential(pz[k]);
+  for (std::size_t k = 0; k < n; ++k) bound_[k] = law_.max_tangential(pz[k]);
   for (RealField* f : {&t_.x, &t_.y, &t_.z, &t_old_.x, &t_old_.y, &t_old_.z}) f->fill(0.0);
   project_tangential(load.x, load.y, 0, false);
+}
 
-  double first_error = 0.0, rn_old = 0.0, rt_old = 0.0, bound_change = 1.0, best_change = INFINITY;
-  int restarts = 0, stalled = 0;
-  bool settled = false;
-  bool conjugate_n = false, conjugate_t = false;
-  for (int it = 0; it < opt.max_iterations; ++it) {
-    apply(p_, u_);  // u = F * p   (Algorithm 1, line 5)
-
-    // Pass 1: gap shifts. Normal: the mean gap on the contact (Polonsky–Keer);
-    // tangential: the mean displacement of the stick zone I_s, the rigid
-    // tangential displacement δ_T (A.13). Without a stick zone, the contact's.
-    double n_c = 0.0, n_s = 0.0, sum_n = 0.0, sum_sx = 0.0, sum_sy = 0.0, sum_cx = 0.0, sum_cy = 0.0,
-           sum_p = 0.0;
-#pragma omp parallel for reduction(+ : n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p) \
-    schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!(pz[k] > 0.0)) continue;
-      n_c += 1.0;
-      sum_p += pz[k];
-      sum_n += uz[k] - h[k];
-      sum_cx += ux[k];
-      sum_cy += uy[k];
-      if (bound[k] > 0.0 && norm(px[k], py[k]) < (1.0 - kOnCone) * bound[k]) {
-        n_s += 1.0;
-        sum_sx += ux[k];
-        sum_sy += uy[k];
-      }
+// Pass 1: gap shifts. Normal: the mean gap on the contact (Polonsky–Keer);
+// tangential: the mean displacement of the stick zone I_s, the rigid
+// tangential displacement δ_T (A.13). Without a stick zone, the contact's.
+FrictionalContact::GapShifts FrictionalContact::measure_shifts(int iteration) const {
+  const std::size_t n = h_.size();
+  const double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
+  const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data();
+  const double *bound = bound_.data(), *h = h_.data();
+  double n_c = 0.0, n_s = 0.0, sum_n = 0.0, sum_sx = 0.0, sum_sy = 0.0, sum_cx = 0.0, sum_cy = 0.0, sum_p = 0.0;
+#pragma omp parallel for reduction(+ : n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(pz[k] > 0.0)) continue;
+    n_c += 1.0;
+    sum_p += pz[k];
+    sum_n += uz[k] - h[k];
+    sum_cx += ux[k];
+    sum_cy += uy[k];
+    if (bound[k] > 0.0 && norm(px[k], py[k]) < (1.0 - kOnCone) * bound[k]) {
+      n_s += 1.0;
+      sum_sx += ux[k];
+      sum_sy += uy[k];
     }
-    if (n_c == 0.0) throw NumericalError(kSolver, it, "contact area", "the contact vanished (no point with p_N > 0)");
-    const double sn = sum_n / n_c;
-    const bool sliding = all_sliding_;
-    if (n_s == 0.0 && !sliding && capacity_ > 0.0) {
-      // Every point on the cone, yet the load is below what friction can carry:
-      // a fan of sliding directions with no stick zone to refer the slip to.
-      // Restart the tangential traction from the same fraction of p_T,max everywhere.
-      if (++restarts > 50)
-        throw NumericalError(kSolver, it, "stick zone", "the stick zone vanished again after 50 restarts");
-      const double ratio = capacity_ > 0.0 ? q0 / capacity_ : 0.0, ex = q0 > 0.0 ? load.x / q0 : 0.0,
-                   ey = q0 > 0.0 ? load.y / q0 : 0.0;
+  }
+  if (n_c == 0.0)
+    throw NumericalError(kSolver, iteration, "contact area", "the contact vanished (no point with p_N > 0)");
+  GapShifts s;
+  s.contact_points = n_c;
+  s.pressure_sum = sum_p;
+  s.normal = sum_n / n_c;
+  // Every point on the cone, yet the load is below what friction can carry:
+  // a fan of sliding directions with no stick zone to refer the slip to.
+  s.stick_zone_lost = n_s == 0.0 && !all_sliding_ && capacity_ > 0.0;
+  const bool stick_zone = n_s > 0.0 && !all_sliding_;
+  s.x = stick_zone ? sum_sx / n_s : sum_cx / n_c;
+  s.y = stick_zone ? sum_sy / n_s : sum_cy / n_c;
+  return s;
+}
+
+// Restarts the tangential traction from the same fraction of p_T,max everywhere.
+void FrictionalContact::restart_tangential(const MeanTraction& load, int iteration, Iterate& state) {
+  if (++state.restarts > 50)
+    throw NumericalError(kSolver, iteration, "stick zone", "the stick zone vanished again after 50 restarts");
+  const std::size_t n = h_.size();
+  double *px = p_.x.data(), *py = p_.y.data();
+  const double *pz = p_.z.data(), *bound = bound_.data();
+  const double q0 = norm(load.x, load.y);
+  const double ratio = capacity_ > 0.0 ? q0 / capacity_ : 0.0, ex = q0 > 0.0 ? load.x / q0 : 0.0,
+               ey = q0 > 0.0 ? load.y / q0 : 0.0;
 #pragma omp parallel for schedule(static)
-      for (std::size_t k = 0; k < n; ++k) {
-        const double b = pz[k] > 0.0 ? bound[k] : 0.0;
-        px[k] = ratio * b * ex;
-        py[k] = ratio * b * ey;
-      }
-      conjugate_n = conjugate_t = false;
-      continue;
-    }
-    const bool stick_zone = n_s > 0.0 && !sliding;
-    const double sx = stick_zone ? sum_sx / n_s : sum_cx / n_c, sy = stick_zone ? sum_sy / n_s : sum_cy / n_c;
-    shift_n_ = sn;
-    shift_x_ = sx;
-    shift_y_ = sy;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double b = pz[k] > 0.0 ? bound[k] : 0.0;
+    px[k] = ratio * b * ex;
+    py[k] = ratio * b * ey;
+  }
+  state.conjugate_n = state.conjugate_t = false;
+}
 
-    // Pass 2: the gradient (A.13) of the shifted gap, projected on what each
-    // point may do. Stick points move freely. A point on the friction cone
-    // stays on it, its p_T only turning, unless it slides the wrong way
-    // (g_T·p_T > 0): then it is released into the stick zone.
-    double err_n = 0.0, err_t = 0.0, b_sum = 0.0, rn_new = 0.0, rt_new = 0.0, penetrating = 0.0;
+// Pass 2: the gradient (A.13) of the shifted gap, projected on what each
+// point may do. Stick points move freely. A point on the friction cone
+// stays on it, its p_T only turning, unless it slides the wrong way
+// (g_T·p_T > 0): then it is released into the stick zone.
+FrictionalContact::Residual FrictionalContact::gradient(const GapShifts& shifts) {
+  const std::size_t n = h_.size();
+  const double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
+  const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data();
+  const double *bound = bound_.data(), *h = h_.data();
+  double *dx = d_.x.data(), *dy = d_.y.data(), *dz = d_.z.data();
+  std::uint8_t* state = state_.data();
+  const double sn = shifts.normal, sx = shifts.x, sy = shifts.y;
+  const bool sliding = all_sliding_;
+  double err_n = 0.0, err_t = 0.0, b_sum = 0.0, rn_new = 0.0, rt_new = 0.0, penetrating = 0.0;
 #pragma omp parallel for reduction(+ : err_n, err_t, b_sum, rn_new, rt_new, penetrating) schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      const double gn = uz[k] - h[k] - sn;
-      double ax = 0.0, ay = 0.0, an = 0.0;
-      if (!(pz[k] > 0.0)) {
-        state[k] = kOpen;
-        penetrating += gn < 0.0 ? 1.0 : 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double gn = uz[k] - h[k] - sn;
+    double ax = 0.0, ay = 0.0, an = 0.0;
+    if (!(pz[k] > 0.0)) {
+      state[k] = kOpen;
+      penetrating += gn < 0.0 ? 1.0 : 0.0;
+    } else {
+      const double gx = ux[k] - sx, gy = uy[k] - sy;
+      const double b = bound[k], r = norm(px[k], py[k]);
+      err_n += pz[k] * std::abs(gn);
+      err_t += b * norm(gx, gy) + px[k] * gx + py[k] * gy;  // (A.14), the slip direction checked
+      b_sum += b;
+      an = gn;
+      if (!(b > 0.0)) {  // frictionless point: p_T stays 0
+        state[k] = kSlip;
+      } else if (r >= (1.0 - kOnCone) * b) {
+        const double nx = px[k] / r, ny = py[k] / r, along = gx * nx + gy * ny;
+        const bool release = along > 0.0 && !sliding;  // in full sliding p_T is fixed
+        state[k] = release ? kReleased : kSlip;
+        ax = release ? gx : (sliding ? 0.0 : gx - along * nx);
+        ay = release ? gy : (sliding ? 0.0 : gy - along * ny);
       } else {
-        const double gx = ux[k] - sx, gy = uy[k] - sy;
-        const double b = bound[k], r = norm(px[k], py[k]);
-        err_n += pz[k] * std::abs(gn);
-        err_t += b * norm(gx, gy) + px[k] * gx + py[k] * gy;  // (A.14), the slip direction checked
-        b_sum += b;
-        an = gn;
-        if (!(b > 0.0)) {  // frictionless point: p_T stays 0
-          state[k] = kSlip;
-        } else if (r >= (1.0 - kOnCone) * b) {
-          const double nx = px[k] / r, ny = py[k] / r, along = gx * nx + gy * ny;
-          const bool release = along > 0.0 && !sliding;  // in full sliding p_T is fixed
-          state[k] = release ? kReleased : kSlip;
-          ax = release ? gx : (sliding ? 0.0 : gx - along * nx);
-          ay = release ? gy : (sliding ? 0.0 : gy - along * ny);
-        } else {
-          state[k] = kStick;
-          ax = gx;
-          ay = gy;
-        }
+        state[k] = kStick;
+        ax = gx;
+        ay = gy;
       }
-      d_.x[k] = ax;
-      d_.y[k] = ay;
-      d_.z[k] = an;
-      rn_new += an * an;
-      rt_new += ax * ax + ay * ay;
     }
-    const double error_n = err_n / (sum_p * h_rms_);
-    const double error_t = (sliding || !(b_sum > 0.0)) ? 0.0 : err_t / (b_sum * h_rms_);
-    const double error = error_n + error_t;
-    if (!std::isfinite(error)) throw NumericalError(kSolver, it, "cost (A.14)", "not finite (NaN in u or p)");
-    if (it == 0) first_error = error;
-    history_.push_back(error);
-    if (history_.size() > kHistory) history_.erase(history_.begin());
+    dx[k] = ax;
+    dy[k] = ay;
+    dz[k] = an;
+    rn_new += an * an;
+    rt_new += ax * ax + ay * ay;
+  }
+  Residual r;
+  r.error_n = err_n / (shifts.pressure_sum * h_rms_);
+  r.error_t = (sliding || !(b_sum > 0.0)) ? 0.0 : err_t / (b_sum * h_rms_);
+  r.error = r.error_n + r.error_t;
+  r.rn = rn_new;
+  r.rt = rt_new;
+  r.penetrates = penetrating > 0.0;
+  return r;
+}
 
-    // A subproblem is solved (loosely while its bound is still far from the
-    // law's): compare its bound with the law's, and start the next one.
-    const double subproblem_tolerance = settled ? opt.tolerance : std::max(opt.tolerance, 1e-2 * bound_change);
-    if (error < subproblem_tolerance && penetrating == 0.0) {
-      if (!settled) {
-        double change = 0.0, total = 0.0;
+// A subproblem is solved (loosely while its bound is still far from the
+// law's): compare its bound with the law's, and start the next one, or
+// accept the solution (Solved) once the bound holds.
+FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual& res, const MeanTraction& load,
+                                                                  int it, Iterate& state) {
+  const double tolerance = tolerance_;
+  const double subproblem_tolerance =
+      state.settled ? tolerance : std::max(tolerance, 1e-2 * state.bound_change);
+  if (!(res.error < subproblem_tolerance && !res.penetrates)) return Subproblem::Open;
+  const std::size_t n = h_.size();
+  const double nn = static_cast<double>(n), q0 = norm(load.x, load.y);
+  double *px = p_.x.data(), *py = p_.y.data();
+  const double* pz = p_.z.data();
+  double* bound = bound_.data();
+  const std::uint8_t* st = state_.data();
+  const FrictionLaw law = law_;
+  if (!state.settled) {
+    double change = 0.0, total = 0.0;
 #pragma omp parallel for reduction(+ : change, total) schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const double b = law.max_tangential(pz[k]);
+      change += std::abs(b - bound[k]);
+      total += b;
+    }
+    change = total > 0.0 ? change / total : 0.0;
+    // A subproblem whose bound cannot carry the load while the law's can
+    // is not a solution of the law: move on to the law's bound.
+    const bool short_of_load = overloaded_ && q0 <= total / nn * (1.0 + 1e-9);
+    if (change > tolerance || short_of_load) {
+      if (change < 0.5 * state.best_change) {
+        state.best_change = change;
+        state.stalled = 0;
+      } else if (++state.stalled >= kStalledUpdates && !short_of_load) {
+        // The bound cycles (Tresca with ν < 0.5: edge points that gain
+        // σ_m,T on entering the contact lift their neighbours off, see
+        // the header): keep the last one and solve it to the tolerance.
+        state.settled = true;
+      }
+      if (!state.settled) {
+#pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
           const double b = law.max_tangential(pz[k]);
-          change += std::abs(b - bound[k]);
-          total += b;
-        }
-        change = total > 0.0 ? change / total : 0.0;
-        // A subproblem whose bound cannot carry the load while the law's can
-        // is not a solution of the law: move on to the law's bound.
-        const bool short_of_load = overloaded_ && q0 <= total / nn * (1.0 + 1e-9);
-        if (change > opt.tolerance || short_of_load) {
-          if (change < 0.5 * best_change) {
-            best_change = change;
-            stalled = 0;
-          } else if (++stalled >= kStalledUpdates && !short_of_load) {
-            // The bound cycles (Tresca with ν < 0.5: edge points that gain
-            // σ_m,T on entering the contact lift their neighbours off, see
-            // the header): keep the last one and solve it to the tolerance.
-            settled = true;
+          if (st[k] == kSlip && bound[k] > 0.0) {  // sliding points stay on the cone
+            px[k] *= b / bound[k];
+            py[k] *= b / bound[k];
           }
-          if (!settled) {
-#pragma omp parallel for schedule(static)
-            for (std::size_t k = 0; k < n; ++k) {
-              const double b = law.max_tangential(pz[k]);
-              if (state[k] == kSlip && bound[k] > 0.0) {  // sliding points stay on the cone
-                px[k] *= b / bound[k];
-                py[k] *= b / bound[k];
-              }
-              bound[k] = b;
-            }
-            bound_change = change;
-            project_tangential(load.x, load.y, it, true);
-            conjugate_n = conjugate_t = false;
-            ++bound_updates_;
-            continue;
-          }
+          bound[k] = b;
         }
+        state.bound_change = change;
+        project_tangential(load.x, load.y, it, true);
+        state.conjugate_n = state.conjugate_t = false;
+        ++bound_updates_;
+        return Subproblem::Updated;
       }
-      if (error < opt.tolerance) {
-        double law_capacity = 0.0;
+    }
+  }
+  if (!(res.error < tolerance)) return Subproblem::Open;
+  double law_capacity = 0.0;
 #pragma omp parallel for reduction(+ : law_capacity) schedule(static)
-        for (std::size_t k = 0; k < n; ++k) law_capacity += law.max_tangential(pz[k]);
-        law_capacity /= nn;
-        if (overloaded_ && q0 <= law_capacity * (1.0 + 1e-9))
-          throw NumericalError(kSolver, it, "mean tangential traction",
-                               fmt::format("the last friction bound carries {:g} Pa of the {:g} Pa imposed while the "
-                                           "law carries {:g} Pa (its contact edges kept changing)",
-                                           capacity_, q0, law_capacity));
-        capacity_ = law_capacity;
-        if (overloaded_)  // the law's bound cannot carry the load either
-          throw InputError(fmt::format(
-              "frictional contact: the tangential load ‖⟨p_T⟩‖ = {:g} Pa exceeds what {} friction can carry on "
-              "this contact, ⟨p_T,max⟩ = σ_m,T A/A0 = {:g} Pa: the contact slides as a whole (gross sliding); "
-              "allowed: ‖⟨p_T⟩‖ ≤ {:g} Pa",
-              q0, law_.to_string(), capacity_, capacity_));
-        return finish(it, error, error_n, error_t, load);
-      }
-    }
+  for (std::size_t k = 0; k < n; ++k) law_capacity += law.max_tangential(pz[k]);
+  law_capacity /= nn;
+  if (overloaded_ && q0 <= law_capacity * (1.0 + 1e-9))
+    throw NumericalError(kSolver, it, "mean tangential traction",
+                         fmt::format("the last friction bound carries {:g} Pa of the {:g} Pa imposed while the "
+                                     "law carries {:g} Pa (its contact edges kept changing)",
+                                     capacity_, q0, law_capacity));
+  capacity_ = law_capacity;
+  if (overloaded_)  // the law's bound cannot carry the load either
+    throw InputError(fmt::format(
+        "frictional contact: the tangential load ‖⟨p_T⟩‖ = {:g} Pa exceeds what {} friction can carry on "
+        "this contact, ⟨p_T,max⟩ = σ_m,T A/A0 = {:g} Pa: the contact slides as a whole (gross sliding); "
+        "allowed: ‖⟨p_T⟩‖ ≤ {:g} Pa",
+        q0, law_.to_string(), capacity_, capacity_));
+  return Subproblem::Solved;
+}
 
-    // Search directions (Algorithm 1, line 8), one conjugate sequence for the
-    // normal and one for the tangential traction: t = d + β t_old, with zero
-    // sum (the imposed means stay imposed); at sliding points p_T only turns.
-    std::swap(t_old_, t_);
-    double *tx = t_.x.data(), *ty = t_.y.data(), *tz = t_.z.data();
-    const double *tx_old = t_old_.x.data(), *ty_old = t_old_.y.data(), *tz_old = t_old_.z.data();
-    double turn_curvature = 0.0;
-    auto build_normal = [&](double beta) {
-      double sum = 0.0;
+// The normal direction t_N = d_N + β t_N,old on the contact, shifted to zero
+// sum; returns Σ ∂J/∂p_N t_N (Algorithm 1, line 13).
+double FrictionalContact::normal_direction(double beta, double n_c) {
+  const std::size_t n = h_.size();
+  double* tz = t_.z.data();
+  const double *tz_old = t_old_.z.data(), *dz = d_.z.data();
+  const std::uint8_t* state = state_.data();
+  double sum = 0.0;
 #pragma omp parallel for reduction(+ : sum) schedule(static)
-      for (std::size_t k = 0; k < n; ++k) {
-        tz[k] = state[k] == kOpen ? 0.0 : dz[k] + beta * tz_old[k];
-        sum += tz[k];
-      }
-      const double shift = sum / n_c;
-      double slope = 0.0;  // Σ ∂J/∂p_N t_N   (Algorithm 1, line 13)
+  for (std::size_t k = 0; k < n; ++k) {
+    tz[k] = state[k] == kOpen ? 0.0 : dz[k] + beta * tz_old[k];
+    sum += tz[k];
+  }
+  const double shift = sum / n_c;
+  double slope = 0.0;
 #pragma omp parallel for reduction(+ : slope) schedule(static)
-      for (std::size_t k = 0; k < n; ++k) {
-        if (state[k] == kOpen) continue;
-        tz[k] -= shift;
-        slope += dz[k] * tz[k];
-      }
-      return slope;
-    };
-    auto build_tangential = [&](double beta) {
-      double sum_x = 0.0, sum_y = 0.0, n_free = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (state[k] == kOpen) continue;
+    tz[k] -= shift;
+    slope += dz[k] * tz[k];
+  }
+  return slope;
+}
+
+// The tangential direction: free (stick, released) points move along
+// d_T + β t_T,old, shifted to zero sum; sliding points only turn on the cone.
+// Returns Σ ∂J/∂p_T·t_T and sets the turn's curvature.
+double FrictionalContact::tangential_direction(double beta, const GapShifts& shifts, double& turn_curvature) {
+  const std::size_t n = h_.size();
+  double *tx = t_.x.data(), *ty = t_.y.data();
+  const double *tx_old = t_old_.x.data(), *ty_old = t_old_.y.data(), *dx = d_.x.data(), *dy = d_.y.data();
+  const double *px = p_.x.data(), *py = p_.y.data(), *ux = u_.x.data(), *uy = u_.y.data();
+  const std::uint8_t* state = state_.data();
+  const bool sliding = all_sliding_;
+  const double sx = shifts.x, sy = shifts.y;
+  double sum_x = 0.0, sum_y = 0.0, n_free = 0.0;
 #pragma omp parallel for reduction(+ : sum_x, sum_y, n_free) schedule(static)
-      for (std::size_t k = 0; k < n; ++k) {
-        double ax = 0.0, ay = 0.0;
-        if (state[k] == kStick || state[k] == kReleased) {
-          ax = dx[k] + beta * tx_old[k];
-          ay = dy[k] + beta * ty_old[k];
-          n_free += 1.0;
-        } else if (state[k] == kSlip && !sliding) {
-          const double r = norm(px[k], py[k]);
-          if (r > 0.0) {  // keep the turn only
-            const double nx = px[k] / r, ny = py[k] / r;
-            ax = dx[k] + beta * tx_old[k];
-            ay = dy[k] + beta * ty_old[k];
-            const double along = ax * nx + ay * ny;
-            ax -= along * nx;
-            ay -= along * ny;
-          }
-        }
-        tx[k] = ax;
-        ty[k] = ay;
-        sum_x += ax;
-        sum_y += ay;
+  for (std::size_t k = 0; k < n; ++k) {
+    double ax = 0.0, ay = 0.0;
+    if (state[k] == kStick || state[k] == kReleased) {
+      ax = dx[k] + beta * tx_old[k];
+      ay = dy[k] + beta * ty_old[k];
+      n_free += 1.0;
+    } else if (state[k] == kSlip && !sliding) {
+      const double r = norm(px[k], py[k]);
+      if (r > 0.0) {  // keep the turn only
+        const double nx = px[k] / r, ny = py[k] / r;
+        ax = dx[k] + beta * tx_old[k];
+        ay = dy[k] + beta * ty_old[k];
+        const double along = ax * nx + ay * ny;
+        ax -= along * nx;
+        ay -= along * ny;
       }
-      const bool shift = n_free > 0.0 && !sliding;
-      const double cx = shift ? sum_x / n_free : 0.0, cy = shift ? sum_y / n_free : 0.0;
-      double slope = 0.0, curvature = 0.0;  // Σ ∂J/∂p_T·t_T
+    }
+    tx[k] = ax;
+    ty[k] = ay;
+    sum_x += ax;
+    sum_y += ay;
+  }
+  const bool shift = n_free > 0.0 && !sliding;
+  const double cx = shift ? sum_x / n_free : 0.0, cy = shift ? sum_y / n_free : 0.0;
+  double slope = 0.0, curvature = 0.0;
 #pragma omp parallel for reduction(+ : slope, curvature) schedule(static)
-      for (std::size_t k = 0; k < n; ++k) {
-        const double gx = ux[k] - sx, gy = uy[k] - sy;
-        if (state[k] == kStick || state[k] == kReleased) {
-          tx[k] -= cx;
-          ty[k] -= cy;
-        } else if (state[k] == kSlip && (tx[k] != 0.0 || ty[k] != 0.0)) {
-          // Turning on the circle ‖p_T‖ = p_T,max adds the curvature of the
-          // constraint, its multiplier ‖g_T‖/p_T,max, to the model's t·Ft.
-          const double r = norm(px[k], py[k]);
-          const double speed = std::max(-(gx * px[k] + gy * py[k]) / r, 0.0);
-          curvature += speed / r * (tx[k] * tx[k] + ty[k] * ty[k]);
-        }
-        if (state[k] != kOpen) slope += gx * tx[k] + gy * ty[k];
-      }
-      turn_curvature = curvature;
-      return slope;
-    };
-    // A block whose residual grew (the other one moved it through the
-    // coupling) restarts from its gradient.
-    const double beta_n = conjugate_n && rn_old > 0.0 && rn_new < kBetaMax * rn_old ? rn_new / rn_old : 0.0;
-    const double beta_t = conjugate_t && rt_old > 0.0 && rt_new < kBetaMax * rt_old ? rt_new / rt_old : 0.0;
-    double slope_n = build_normal(beta_n);
-    if (!(slope_n > 0.0) && beta_n != 0.0) slope_n = build_normal(0.0);  // not a descent direction: restart
-    double slope_t = build_tangential(beta_t);
-    if (!(slope_t > 0.0) && beta_t != 0.0) slope_t = build_tangential(0.0);
-    if (!(slope_n > 0.0)) slope_n = 0.0;  // no descent along this block: no step on it
-    if (!(slope_t > 0.0)) slope_t = 0.0;
-    rn_old = rn_new;
-    rt_old = rt_new;
-
-    // Step lengths: the minimum of the quadratic model along τ_N t_N + τ_T t_T,
-    //   [t_N·Ft_N  t_N·Ft_T] [τ_N]   [Σ ∂J/∂p_N t_N]
-    //   [t_T·Ft_N  t_T·Ft_T] [τ_T] = [Σ ∂J/∂p_T·t_T],
-    // the forms by Parseval from the spectra of t (decoupled for ν = 0.5).
-    BlockForm form = quadratic_form(t_);
-    form.tt += turn_curvature;
-    double tau_n = 0.0, tau_t = 0.0;
-    const double det = form.nn * form.tt - form.nt * form.nt;
-    if (form.tt > 0.0 && form.nn > 0.0 && det > 1e-14 * form.nn * form.tt) {
-      tau_n = (form.tt * slope_n - form.nt * slope_t) / det;
-      tau_t = (form.nn * slope_t - form.nt * slope_n) / det;
-      if (tau_n < 0.0 || tau_t < 0.0)  // the coupling would reverse one: one step along t (line 13)
-        tau_n = tau_t = (slope_n + slope_t) / (form.nn + 2.0 * form.nt + form.tt);
-    } else if (form.nn > 0.0) {
-      tau_n = slope_n / form.nn;
-    } else if (form.tt > 0.0) {
-      tau_t = slope_t / form.tt;
-    } else if (slope_n == 0.0) {
-      // No descent direction (a contact of one point) while points outside
-      // still penetrate: admit them with a cell's own stiffness.
-      tau_n = 1.0 / self_compliance_;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double gx = ux[k] - sx, gy = uy[k] - sy;
+    if (state[k] == kStick || state[k] == kReleased) {
+      tx[k] -= cx;
+      ty[k] -= cy;
+    } else if (state[k] == kSlip && (tx[k] != 0.0 || ty[k] != 0.0)) {
+      // Turning on the circle ‖p_T‖ = p_T,max adds the curvature of the
+      // constraint, its multiplier ‖g_T‖/p_T,max, to the model's t·Ft.
+      const double r = norm(px[k], py[k]);
+      const double speed = std::max(-(gx * px[k] + gy * py[k]) / r, 0.0);
+      curvature += speed / r * (tx[k] * tx[k] + ty[k] * ty[k]);
     }
-    if (!std::isfinite(tau_n) || !std::isfinite(tau_t) || tau_n < 0.0 || tau_t < 0.0)
-      throw NumericalError(kSolver, it, "step length",
-                           fmt::format("τ_N = {}, τ_T = {} (t·Ft: NN {}, TT {}, NT {})", tau_n, tau_t, form.nn,
-                                       form.tt, form.nt));
+    if (state[k] != kOpen) slope += gx * tx[k] + gy * ty[k];
+  }
+  turn_curvature = curvature;
+  return slope;
+}
 
-    // Descend (line 14): p_N ≥ 0 and re-admit penetrating points (Polonsky–
-    // Keer); sliding points stay on the cone, turning towards −g_T.
-    double overlap = 0.0, new_sum = 0.0;
+// Search directions (Algorithm 1, line 8), one conjugate sequence for the
+// normal and one for the tangential traction: t = d + β t_old, with zero
+// sum (the imposed means stay imposed); at sliding points p_T only turns.
+FrictionalContact::Slopes FrictionalContact::search_directions(const GapShifts& shifts, Iterate& state,
+                                                               const Residual& res) {
+  std::swap(t_old_, t_);
+  // A block whose residual grew (the other one moved it through the
+  // coupling) restarts from its gradient.
+  const double beta_n =
+      state.conjugate_n && state.rn_old > 0.0 && res.rn < kBetaMax * state.rn_old ? res.rn / state.rn_old : 0.0;
+  const double beta_t =
+      state.conjugate_t && state.rt_old > 0.0 && res.rt < kBetaMax * state.rt_old ? res.rt / state.rt_old : 0.0;
+  Slopes s;
+  s.normal = normal_direction(beta_n, shifts.contact_points);
+  if (!(s.normal > 0.0) && beta_n != 0.0) s.normal = normal_direction(0.0, shifts.contact_points);  // not descent: restart
+  s.tangential = tangential_direction(beta_t, shifts, s.turn_curvature);
+  if (!(s.tangential > 0.0) && beta_t != 0.0) s.tangential = tangential_direction(0.0, shifts, s.turn_curvature);
+  if (!(s.normal > 0.0)) s.normal = 0.0;  // no descent along this block: no step on it
+  if (!(s.tangential > 0.0)) s.tangential = 0.0;
+  state.rn_old = res.rn;
+  state.rt_old = res.rt;
+  return s;
+}
+
+// Step lengths: the minimum of the quadratic model along τ_N t_N + τ_T t_T,
+//   [t_N·Ft_N  t_N·Ft_T] [τ_N]   [Σ ∂J/∂p_N t_N]
+//   [t_T·Ft_N  t_T·Ft_T] [τ_T] = [Σ ∂J/∂p_T·t_T],
+// the forms by Parseval from the spectra of t (decoupled for ν = 0.5).
+std::pair<double, double> FrictionalContact::step_lengths(const Slopes& slopes, int it) {
+  HalfSpace::BlockForm form = body_.form(t_, work_);
+  form.tt += slopes.turn_curvature;
+  const double slope_n = slopes.normal, slope_t = slopes.tangential;
+  double tau_n = 0.0, tau_t = 0.0;
+  const double det = form.nn * form.tt - form.nt * form.nt;
+  if (form.tt > 0.0 && form.nn > 0.0 && det > 1e-14 * form.nn * form.tt) {
+    tau_n = (form.tt * slope_n - form.nt * slope_t) / det;
+    tau_t = (form.nn * slope_t - form.nt * slope_n) / det;
+    if (tau_n < 0.0 || tau_t < 0.0)  // the coupling would reverse one: one step along t (line 13)
+      tau_n = tau_t = (slope_n + slope_t) / (form.nn + 2.0 * form.nt + form.tt);
+  } else if (form.nn > 0.0) {
+    tau_n = slope_n / form.nn;
+  } else if (form.tt > 0.0) {
+    tau_t = slope_t / form.tt;
+  } else if (slope_n == 0.0) {
+    // No descent direction (a contact of one point) while points outside
+    // still penetrate: admit them with a cell's own stiffness.
+    tau_n = 1.0 / body_.self_compliance();
+  }
+  if (!std::isfinite(tau_n) || !std::isfinite(tau_t) || tau_n < 0.0 || tau_t < 0.0)
+    throw NumericalError(kSolver, it, "step length",
+                         fmt::format("τ_N = {}, τ_T = {} (t·Ft: NN {}, TT {}, NT {})", tau_n, tau_t, form.nn,
+                                     form.tt, form.nt));
+  return {tau_n, tau_t};
+}
+
+// Descend (line 14): p_N ≥ 0 and re-admit penetrating points (Polonsky–
+// Keer); sliding points stay on the cone, turning towards −g_T. Then p_N
+// rescaled to its mean (A.8c) and p_T into the friction cone with its mean (line 15).
+void FrictionalContact::descend(double tau_n, double tau_t, const MeanTraction& load, int it, Iterate& st) {
+  const std::size_t n = h_.size();
+  const double nn = static_cast<double>(n);
+  double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data(), *bound = bound_.data();
+  const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data(), *h = h_.data();
+  const double *tx = t_.x.data(), *ty = t_.y.data(), *tz = t_.z.data();
+  const std::uint8_t* state = state_.data();
+  const double sn = shift_n_, sx = shift_x_, sy = shift_y_;
+  double overlap = 0.0, new_sum = 0.0;
 #pragma omp parallel for reduction(+ : overlap, new_sum) schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      if (state[k] == kOpen) {
-        const double gn = uz[k] - h[k] - sn;
-        const bool readmit = gn < 0.0;
-        pz[k] = readmit ? -tau_n * gn : 0.0;
-        px[k] = py[k] = 0.0;
-        overlap += readmit ? 1.0 : 0.0;
-        new_sum += pz[k];
-        continue;
-      }
-      pz[k] = std::max(pz[k] - tau_n * tz[k], 0.0);
-      if (pz[k] == 0.0) bound[k] = 0.0;  // friction lost in this subproblem is not regained in it
-      double ax = px[k] - tau_t * tx[k], ay = py[k] - tau_t * ty[k];
-      const double r0 = norm(px[k], py[k]);
-      if (state[k] == kSlip && r0 > 0.0) {
-        // The outward push of the slip, taken out again by the projection
-        // below, keeps the turn towards −g_T: small where the point slides fast.
-        const double nx = px[k] / r0, ny = py[k] / r0;
-        const double along = (ux[k] - sx) * nx + (uy[k] - sy) * ny;
-        ax -= tau_t * along * nx;
-        ay -= tau_t * along * ny;
-      }
-      const double b = pz[k] > 0.0 ? bound[k] : 0.0, r = norm(ax, ay);
-      const double s = !(b > 0.0) ? 0.0 : (state[k] == kSlip && r > 0.0 ? b / r : 1.0);
-      px[k] = s * ax;
-      py[k] = s * ay;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (state[k] == kOpen) {
+      const double gn = uz[k] - h[k] - sn;
+      const bool readmit = gn < 0.0;
+      pz[k] = readmit ? -tau_n * gn : 0.0;
+      px[k] = py[k] = 0.0;
+      overlap += readmit ? 1.0 : 0.0;
       new_sum += pz[k];
+      continue;
     }
-    if (!(new_sum > 0.0)) throw NumericalError(kSolver, it, "normal traction", "all pressures vanished");
-    const double alpha = load.normal * nn / new_sum;  // impose ⟨p_N⟩ = p_N,0   (A.8c)
+    pz[k] = std::max(pz[k] - tau_n * tz[k], 0.0);
+    if (pz[k] == 0.0) bound[k] = 0.0;  // friction lost in this subproblem is not regained in it
+    double ax = px[k] - tau_t * tx[k], ay = py[k] - tau_t * ty[k];
+    const double r0 = norm(px[k], py[k]);
+    if (state[k] == kSlip && r0 > 0.0) {
+      // The outward push of the slip, taken out again by the projection
+      // below, keeps the turn towards −g_T: small where the point slides fast.
+      const double nx = px[k] / r0, ny = py[k] / r0;
+      const double along = (ux[k] - sx) * nx + (uy[k] - sy) * ny;
+      ax -= tau_t * along * nx;
+      ay -= tau_t * along * ny;
+    }
+    const double b = pz[k] > 0.0 ? bound[k] : 0.0, r = norm(ax, ay);
+    const double s = !(b > 0.0) ? 0.0 : (state[k] == kSlip && r > 0.0 ? b / r : 1.0);
+    px[k] = s * ax;
+    py[k] = s * ay;
+    new_sum += pz[k];
+  }
+  if (!(new_sum > 0.0)) throw NumericalError(kSolver, it, "normal traction", "all pressures vanished");
+  const double alpha = load.normal * nn / new_sum;  // impose ⟨p_N⟩ = p_N,0   (A.8c)
 #pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) pz[k] *= alpha;
-    // Into the friction cone, with ⟨p_T⟩ = p_T,0 (line 15).
-    project_tangential(load.x, load.y, it, true);
-    conjugate_n = overlap == 0.0;
-    conjugate_t = overlap == 0.0;  // releases do not restart it (as points leaving the contact in PK)
+  for (std::size_t k = 0; k < n; ++k) pz[k] *= alpha;
+  project_tangential(load.x, load.y, it, true);
+  st.conjugate_n = overlap == 0.0;
+  st.conjugate_t = overlap == 0.0;  // releases do not restart it (as points leaving the contact in PK)
+}
+
+FrictionalResult FrictionalContact::solve(const MeanTraction& load, const FrictionalOptions& opt) {
+  check_load(load);
+  if (!(opt.tolerance > 0.0)) throw InputError("frictional contact: the tolerance must be > 0");
+  tolerance_ = opt.tolerance;
+  history_.clear();
+  bound_updates_ = 0;
+  if (load.normal == 0.0) {
+    reset();
+    for (RealField* f : {&u_.x, &u_.y, &u_.z}) f->fill(0.0);
+    std::fill(state_.begin(), state_.end(), kOpen);
+    shift_n_ = -h_max_;
+    shift_x_ = shift_y_ = 0.0;
+    all_sliding_ = false;
+    return finish(0, 0.0, 0.0, 0.0, load);
+  }
+  warm_start(load);
+  Iterate state;
+  for (int it = 0; it < opt.max_iterations; ++it) {
+    body_.displacement(p_, u_, work_);  // u = F * p   (Algorithm 1, line 5)
+    const GapShifts shifts = measure_shifts(it);
+    if (shifts.stick_zone_lost) {
+      restart_tangential(load, it, state);
+      continue;
+    }
+    shift_n_ = shifts.normal;
+    shift_x_ = shifts.x;
+    shift_y_ = shifts.y;
+    const Residual res = gradient(shifts);
+    if (!std::isfinite(res.error)) throw NumericalError(kSolver, it, "cost (A.14)", "not finite (NaN in u or p)");
+    if (it == 0) state.first_error = res.error;
+    history_.push_back(res.error);
+    if (history_.size() > kHistory) history_.erase(history_.begin());
+    const Subproblem sub = check_subproblem(res, load, it, state);
+    if (sub == Subproblem::Solved) return finish(it, res.error, res.error_n, res.error_t, load);
+    if (sub == Subproblem::Updated) continue;
+    const Slopes slopes = search_directions(shifts, state, res);
+    const auto [tau_n, tau_t] = step_lengths(slopes, it);
+    descend(tau_n, tau_t, load, it, state);
   }
   throw NumericalError(kSolver, opt.max_iterations, "cost (A.14)",
                        fmt::format("no convergence to {:g} in {} iterations (ε = {:.3g} at the first iteration, "
                                    "{} updates of the friction bound); last {} errors: {:.3g}",
-                                   opt.tolerance, opt.max_iterations, first_error, bound_updates_, history_.size(),
-                                   fmt::join(history_, ", ")));
+                                   opt.tolerance, opt.max_iterations, state.first_error, bound_updates_,
+                                   history_.size(), fmt::join(history_, ", ")));
 }
 
 FrictionalResult FrictionalContact::finish(int iterations, double error, double error_n, double error_t,

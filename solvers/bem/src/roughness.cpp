@@ -39,14 +39,11 @@ double h_prime_rms(const RealField& h) {
   const Grid2D& g = h.grid();
   ComplexField spectrum = ComplexField::spectrum_of(g);
   FFTPlanCache::global().plan(g)->forward(h, spectrum);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < g.nx; ++i) {
-    const double qx = g.wavenumber_x(i);
-    for (std::size_t j = 0; j < g.spectral_ny(); ++j) {
-      const double qy = g.wavenumber_y(j);
-      sum += mode_multiplicity(g, j) * (qx * qx + qy * qy) * std::norm(spectrum(i, j));
-    }
-  }
+  const std::size_t cols = g.spectral_ny();
+  const double sum = hermitian_sum<double>(g, [&](std::size_t m, double w, double& s) {
+    const double qx = g.wavenumber_x(m / cols), qy = g.wavenumber_y(m % cols);
+    s += w * (qx * qx + qy * qy) * std::norm(spectrum[m]);
+  });
   const double n = static_cast<double>(g.size());
   return std::sqrt(sum / (n * n));  // (1.6) via Parseval: ⟨|∇h|²⟩ = Σ|q|²|ĥ|²/N²
 }

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/bem/spectral_modes.hpp"
 #include "wearscale/core/errors.hpp"
 
 namespace wearscale::bem {
@@ -39,80 +40,85 @@ ModeStress mode_stress(double qx, double qy, cplx px, cplx py, cplx pz, double d
 }
 }  // namespace
 
-SubsurfaceStress::SubsurfaceStress(const Grid2D& grid, double poisson) : grid_(grid), poisson_(poisson) {
-  if (!(poisson > -1.0 && poisson <= 0.5))
-    throw InputError(fmt::format(
-        "subsurface stress: Poisson's ratio ν = {} is not allowed; allowed: −1 < ν ≤ 0.5", poisson));
-  if (grid.nx < 2 || grid.ny < 2 || !(grid.lx > 0) || !(grid.ly > 0))
-    throw InputError(fmt::format("subsurface stress: grid {} is not allowed; allowed: ≥ 2×2 points, sizes > 0",
-                                 grid.to_string()));
+SubsurfaceStress::SubsurfaceStress(const Grid2D& grid, double poisson)
+    : owned_(std::make_unique<const HalfSpace>(grid, 1.0, poisson, Boundary::Periodic, Response::Normal)),
+      body_(owned_.get()) {
+  setup();
+}
+
+SubsurfaceStress::SubsurfaceStress(const HalfSpace& body) : body_(&body) { setup(); }
+
+void SubsurfaceStress::setup() {
+  if (body_->boundary() != Boundary::Periodic)
+    throw InputError(fmt::format("subsurface stress: the stresses of a {} half-space are not implemented; allowed: "
+                                 "a periodic one",
+                                 to_string(body_->boundary())));
+  const Grid2D& grid = body_->grid();
+  work_ = body_->workspace();
   plan_ = FFTPlanCache::global().plan(grid);
   for (ComplexField* f : {&px_, &py_, &pz_, &sxx_, &syy_, &szz_, &sxy_, &sxz_, &syz_})
     *f = ComplexField::spectrum_of(grid);
 }
 
 void SubsurfaceStress::set_traction(const VectorField& p) {
-  if (!(p.grid() == grid_)) throw std::invalid_argument("SubsurfaceStress::set_traction: grid differs");
-  plan_->forward(p.x, px_);
-  plan_->forward(p.y, py_);
-  plan_->forward(p.z, pz_);
+  if (!(p.grid() == grid())) throw std::invalid_argument("SubsurfaceStress::set_traction: grid differs");
+  body_->spectrum(p.x, px_, work_);
+  body_->spectrum(p.y, py_, work_);
+  body_->spectrum(p.z, pz_, work_);
 }
 
 void SubsurfaceStress::stress(double depth, StressField& out) {
   if (!(depth >= 0.0) || !std::isfinite(depth))
     throw InputError(fmt::format("subsurface stress: depth {} m is not allowed; allowed: ≥ 0", depth));
-  if (!(out.grid() == grid_)) throw std::invalid_argument("SubsurfaceStress::stress: grid differs");
-  const std::size_t rows = px_.rows(), cols = px_.cols();
-  const bool nyq_x = grid_.nx % 2 == 0, nyq_y = grid_.ny % 2 == 0;
-  const double nu = poisson_;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < rows; ++i) {
-    const double qx = grid_.wavenumber_x(i);
-    const bool flip_x = nyq_x && i == grid_.nx / 2;
-    for (std::size_t j = 0; j < cols; ++j) {
-      const double qy = grid_.wavenumber_y(j);
-      const cplx px = px_(i, j), py = py_(i, j), pz = pz_(i, j);
-      ModeStress m{};
-      if (i == 0 && j == 0) {
-        // Uniform traction, no mean lateral strain.
-        m.zz = -pz;
-        m.xz = -px;
-        m.yz = -py;
-        m.xx = m.yy = -nu / (1.0 - nu) * pz;
-      } else {
-        // At Nyquist frequencies (whose sign is ambiguous) keep the part even in q.
-        const bool flip_y = nyq_y && j == grid_.ny / 2;
-        int count = 0;
-        for (double sx : {1.0, -1.0}) {
-          if (sx < 0.0 && !flip_x) continue;
-          for (double sy : {1.0, -1.0}) {
-            if (sy < 0.0 && !flip_y) continue;
-            const ModeStress a = mode_stress(sx * qx, sy * qy, px, py, pz, depth, nu);
-            m.xx += a.xx;
-            m.yy += a.yy;
-            m.zz += a.zz;
-            m.xy += a.xy;
-            m.xz += a.xz;
-            m.yz += a.yz;
-            ++count;
-          }
+  const Grid2D& g = grid();
+  if (!(out.grid() == g)) throw std::invalid_argument("SubsurfaceStress::stress: grid differs");
+  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
+  const double nu = poisson();
+  for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t) {
+    const double qx = g.wavenumber_x(i);
+    const bool flip_x = nyq_x && i == g.nx / 2;
+    const double qy = g.wavenumber_y(j);
+    const cplx px = px_(i, j), py = py_(i, j), pz = pz_(i, j);
+    ModeStress m{};
+    if (i == 0 && j == 0) {
+      // Uniform traction, no mean lateral strain.
+      m.zz = -pz;
+      m.xz = -px;
+      m.yz = -py;
+      m.xx = m.yy = -nu / (1.0 - nu) * pz;
+    } else {
+      // At Nyquist frequencies (whose sign is ambiguous) keep the part even in q.
+      const bool flip_y = nyq_y && j == g.ny / 2;
+      int count = 0;
+      for (double sx : {1.0, -1.0}) {
+        if (sx < 0.0 && !flip_x) continue;
+        for (double sy : {1.0, -1.0}) {
+          if (sy < 0.0 && !flip_y) continue;
+          const ModeStress a = mode_stress(sx * qx, sy * qy, px, py, pz, depth, nu);
+          m.xx += a.xx;
+          m.yy += a.yy;
+          m.zz += a.zz;
+          m.xy += a.xy;
+          m.xz += a.xz;
+          m.yz += a.yz;
+          ++count;
         }
-        const double w = 1.0 / count;
-        m.xx *= w;
-        m.yy *= w;
-        m.zz *= w;
-        m.xy *= w;
-        m.xz *= w;
-        m.yz *= w;
       }
-      sxx_(i, j) = m.xx;
-      syy_(i, j) = m.yy;
-      szz_(i, j) = m.zz;
-      sxy_(i, j) = m.xy;
-      sxz_(i, j) = m.xz;
-      syz_(i, j) = m.yz;
+      const double w = 1.0 / count;
+      m.xx *= w;
+      m.yy *= w;
+      m.zz *= w;
+      m.xy *= w;
+      m.xz *= w;
+      m.yz *= w;
     }
-  }
+    sxx_(i, j) = m.xx;
+    syy_(i, j) = m.yy;
+    szz_(i, j) = m.zz;
+    sxy_(i, j) = m.xy;
+    sxz_(i, j) = m.xz;
+    syz_(i, j) = m.yz;
+  });
   plan_->backward(sxx_, out.xx);
   plan_->backward(syy_, out.yy);
   plan_->backward(szz_, out.zz);

@@ -53,7 +53,7 @@ void PinOnDiscSetup::validate_laws() const {
 
 PinOnDisc::PinOnDisc(const PinOnDiscSetup& setup)
     : setup_((setup.validate(), setup.validate_laws(), setup)), pin_(Grid2D::square(setup.grid, setup.size)), profile_(pin_.grid()),
-      disc_(setup.grid, 0.0), contact_(RealField(pin_.grid()), setup.e_star), pin_rate_(pin_.grid().size()),
+      disc_(setup.grid, 0.0), contact_(RealField(pin_.grid()), setup.e_star, setup.boundary), pin_rate_(pin_.grid().size()),
       disc_rate_(setup.grid) {
   const Grid2D& g = pin_.grid();
   const double r2max = setup.pin_radius * setup.pin_radius;

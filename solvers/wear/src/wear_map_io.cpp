@@ -8,13 +8,17 @@
 
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/xdmf.hpp"
 
 namespace wearscale::wear {
 
 namespace {
-// A map-shaped field (nx × ny, y fastest) spanning the axes' ranges.
+// The map's points as a grid spanning the axes' ranges.
+Grid2D map_grid(const WearMap& map) { return {map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min}; }
+
+// A map-shaped field (nx × ny, y fastest).
 RealField as_field(const WearMap& map, std::span<const double> values) {
-  RealField f(Grid2D(map.x.n, map.y.n, map.x.max - map.x.min, map.y.max - map.y.min));
+  RealField f(map_grid(map));
   std::copy(values.begin(), values.end(), f.begin());
   return f;
 }
@@ -26,7 +30,8 @@ std::string legend(const WearMap& map) {
 }
 }  // namespace
 
-void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map, std::string_view case_toml) {
+std::filesystem::path write_wear_map_h5(const std::filesystem::path& path, const WearMap& map,
+                                        std::string_view case_toml) {
   H5Writer h5(path);
   h5.set_attribute("/", "kind", map.kind);
   if (!case_toml.empty()) h5.set_attribute("/", "case_toml", case_toml);
@@ -45,7 +50,17 @@ void write_wear_map_h5(const std::filesystem::path& path, const WearMap& map, st
     h5.write_field("/ratio/" + l.name, as_field(map, l.values));
     h5.set_attribute("/ratio/" + l.name, "description", l.description);
   }
+  // ParaView: the region codes and every layer; the map samples cell
+  // centres, so the first node is half a cell in from (min, min).
+  std::vector<XdmfField> fields = {{"/region", "region"}};
+  for (const auto& l : map.layers) fields.push_back({"/ratio/" + l.name, l.name});
+  XdmfSidecar sidecar(map_grid(map), {map.x.value(0), map.y.value(0)});
+  sidecar.add(h5, fields);
   h5.commit();
+  auto xmf = path;
+  xmf.replace_extension(".xdmf");
+  sidecar.write(xmf, path);
+  return xmf;
 }
 
 void write_wear_map_csv(const std::filesystem::path& path, const WearMap& map) {

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -55,6 +56,10 @@ class H5Writer {
   void set_attribute(const std::string& object, const std::string& name, double value);
   /// A 64-bit integer attribute (counts, steps: read back exactly).
   void set_integer_attribute(const std::string& object, const std::string& name, std::int64_t value);
+  /// A read-only view `view` of the 2D dataset `source` (already written,
+  /// rows × cols) with its axes swapped (cols × rows): an HDF5 virtual
+  /// dataset of this file, one mapping per source row, no data copied.
+  void write_transposed_view(const std::string& view, const std::string& source);
 
   /// Writes the file and moves it to its final name (with its OutputSet, if
   /// one is open for the folder and the mode says so). Without it, nothing appears.
@@ -73,6 +78,27 @@ class H5Writer {
   bool committed_ = false;
 };
 
+namespace detail {
+/// "" if `read` ran to its end (returned or threw) in a child process within
+/// `timeout_seconds`; else why not ("the HDF5 library crashed reading it
+/// (signal 11, Segmentation fault)"). Called inside a child, just "".
+std::string try_in_child(const std::function<void()>& read, double timeout_seconds);
+/// InputError "<name>: damaged or not what it claims: …" unless `read` runs
+/// to its end in a child (a timeout of 5 s plus 1 s per 20 MB of `bytes`).
+void refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read);
+}  // namespace detail
+
+/// `read()`, a reader of the HDF5 file `file` through the C API (lock_hdf5),
+/// guarded as H5Reader::guarded: tried in a child process first, the file
+/// refused as damaged if HDF5 crashes or hangs there.
+template <class Read>
+auto guarded_hdf5_read(const std::filesystem::path& file, Read&& read) {
+  std::error_code ec;
+  const double bytes = static_cast<double>(std::filesystem::file_size(file, ec));
+  detail::refuse_if_damaged(file.string(), ec ? 0.0 : bytes, [&] { (void)read(); });
+  return read();
+}
+
 class H5Reader {
  public:
   /// Opens an HDF5 file; InputError if missing or not HDF5.
@@ -88,15 +114,12 @@ class H5Reader {
   /// gives (topographies, strength tables, checkpoints).
   template <class Read>
   static auto guarded(const std::filesystem::path& file, Read&& read) {
-    std::error_code ec;
-    const double bytes = static_cast<double>(std::filesystem::file_size(file, ec));
-    refuse_if_damaged(file.string(), ec ? 0.0 : bytes, [&] { read(H5Reader(file)); });
-    return read(H5Reader(file));
+    return guarded_hdf5_read(file, [&] { return read(H5Reader(file)); });
   }
   /// The same on a file image in memory (fuzzing).
   template <class Read>
   static auto guarded_image(std::string_view bytes, const std::string& name, Read&& read) {
-    refuse_if_damaged(name, static_cast<double>(bytes.size()), [&] { read(from_image(bytes, name)); });
+    detail::refuse_if_damaged(name, static_cast<double>(bytes.size()), [&] { read(from_image(bytes, name)); });
     return read(from_image(bytes, name));
   }
   ~H5Reader();
@@ -136,17 +159,13 @@ class H5Reader {
 
  private:
   H5Reader() = default;
-  static void refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read);
   long long open_attribute(const std::string& object, const std::string& name, bool required) const;
   std::string name_;
   long long file_ = -1;
 };
 
-namespace detail {
-/// "" if `read` ran to its end (returned or threw) in a child process within
-/// `timeout_seconds`; else why not ("the HDF5 library crashed reading it
-/// (signal 11, Segmentation fault)"). Called inside a child, just "".
-std::string try_in_child(const std::function<void()>& read, double timeout_seconds);
-}  // namespace detail
+/// Holds the lock of the (not thread-safe) HDF5 library, with its error
+/// printing off, for code that calls the HDF5 C API directly.
+[[nodiscard]] std::unique_lock<std::recursive_mutex> lock_hdf5();
 
 }  // namespace wearscale

@@ -7,6 +7,8 @@
 //   surface = "rough.h5"        # or [contact.rough] / [contact.sphere] on grid × size
 //   e_star = "37.6 GPa"         # or young + poisson (rigid surface on an elastic flat)
 //   mean_pressure = "1 MPa"     # or normal_load (per cell) or interference
+//   boundary = "periodic"       # or "free": the grid is a window on an isolated body
+//                               # (zero-padded half-space; frictionless only)
 //
 // Frictional contact (Appendix A) adds, with poisson given (and young or e_star):
 //   friction = "coulomb"        # "none" (default) | "coulomb" | "tresca"

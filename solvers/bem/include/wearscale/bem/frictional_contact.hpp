@@ -42,7 +42,9 @@
 // (Mindlin's sphere, ν = 0.3, n = 243: converges up to Q/μP = 0.947).
 //
 // Convergence is measured by the cost (A.14), see FrictionalResult::error.
+#include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "wearscale/bem/friction_law.hpp"
@@ -123,13 +125,43 @@ class FrictionalContact {
   const std::vector<double>& history() const { return history_; }
 
  private:
-  void apply(const VectorField& p, VectorField& u);  // u = F * p
-  // Σ_x t·(F * t) split into its normal (nn), tangential (tt) and coupling
-  // (nt, counted once) blocks, by Parseval.
-  struct BlockForm {
-    double nn, tt, nt;
+  // The phases of one iteration of Algorithm 1 (see the .cpp) and what they pass on.
+  struct Iterate {  // carried from one iteration to the next
+    double rn_old = 0.0, rt_old = 0.0;  // Σ d² of the normal and tangential gradients
+    bool conjugate_n = false, conjugate_t = false;  // false restarts that block's steepest descent
+    double bound_change = 1.0, best_change = INFINITY;  // relative change of the friction bound
+    int restarts = 0, stalled = 0;  // tangential restarts; bound updates without progress
+    bool settled = false;           // the bound is kept (see the header)
+    double first_error = 0.0;
   };
-  BlockForm quadratic_form(const VectorField& t);
+  struct GapShifts {           // pass 1: the rigid-body shifts of the gaps
+    double contact_points = 0.0;  // |contact|
+    double pressure_sum = 0.0;    // Σ p_N
+    double normal = 0.0;          // mean normal gap on the contact
+    double x = 0.0, y = 0.0;      // δ_T: mean displacement of the stick zone (or of the contact)
+    bool stick_zone_lost = false; // every point on the cone below the friction capacity
+  };
+  struct Residual {            // pass 2: the projected gradient and the cost (A.14)
+    double error = 0.0, error_n = 0.0, error_t = 0.0;
+    double rn = 0.0, rt = 0.0;    // Σ d_N², Σ ‖d_T‖²
+    bool penetrates = false;      // some open point has g_N < 0
+  };
+  struct Slopes {              // the search directions' Σ ∂J/∂p·t and the cone's curvature
+    double normal = 0.0, tangential = 0.0, turn_curvature = 0.0;
+  };
+  enum class Subproblem { Open, Updated, Solved };
+
+  void check_load(const MeanTraction& load) const;
+  void warm_start(const MeanTraction& load);
+  GapShifts measure_shifts(int iteration) const;
+  void restart_tangential(const MeanTraction& load, int iteration, Iterate& state);
+  Residual gradient(const GapShifts& shifts);
+  Subproblem check_subproblem(const Residual& residual, const MeanTraction& load, int iteration, Iterate& state);
+  Slopes search_directions(const GapShifts& shifts, Iterate& state, const Residual& residual);
+  double normal_direction(double beta, double contact_points);
+  double tangential_direction(double beta, const GapShifts& shifts, double& turn_curvature);
+  std::pair<double, double> step_lengths(const Slopes& slopes, int iteration);
+  void descend(double tau_n, double tau_t, const MeanTraction& load, int iteration, Iterate& state);
   // Brings p_T into the discs ‖p_T‖ ≤ p_T,max(p_N) with the imposed mean,
   // shifting only the points off the cone if `free_only` (and they can carry
   // it); returns false if the discs cannot carry it (gross sliding).
@@ -143,16 +175,14 @@ class FrictionalContact {
   RealField gap_, map_;
   RealField bound_;                  // p_T,max of the current subproblem at points in contact
   std::vector<std::uint8_t> state_;  // per point: open, stick, slip (on the cone), released
-  ComplexField sx_, sy_, sz_;        // spectra
-  // The Green tensor (A.4) on the half spectrum, 1/N folded in:
-  // F = [[xx, xy, i xz], [xy, yy, i yz], [−i xz, −i yz, zz]].
-  std::vector<double> fxx_, fyy_, fxy_, fzz_, ixz_, iyz_;
-  std::shared_ptr<const FFTPlan> plan_;
-  double h_rms_ = 1.0, h_max_ = 0.0, self_compliance_ = 1.0;
+  HalfSpace body_;                   // the Green tensor (A.4), all blocks
+  HalfSpace::Workspace work_;
+  double h_rms_ = 1.0, h_max_ = 0.0;
   double shift_n_ = 0.0, shift_x_ = 0.0, shift_y_ = 0.0;  // gap shifts of the last iteration
   bool all_sliding_ = false, overloaded_ = false;
   double capacity_ = 0.0;  // ⟨p_T,max⟩ at the last projection
   int bound_updates_ = 0;
+  double tolerance_ = 1e-10;  // of the solve under way
   std::vector<double> history_;
 };
 

@@ -2,7 +2,13 @@
 // Frictionless normal contact of a rigid surface on a periodic elastic flat
 // (§2.3.2): minimise ½∫p u − ∫p h under the Hertz–Signorini–Moreau conditions
 // p ≥ 0, g ≥ 0, p g = 0 (2.43) with the constrained conjugate gradient of
-// Polonsky & Keer (1999).
+// Polonsky & Keer (1999), preconditioned by default: the gradient (the gap
+// on the contact) is mapped to a pressure by S = E*|q|/2, the inverse of the
+// half-space's normal block, before it enters the conjugate directions
+// (Vollebregt, J. Comput. Phys. 2014). Unpreconditioned, the iterations grow
+// with the resolution (the spectrum of the operator on the contact spreads as
+// 1/q); preconditioned they grow only logarithmically, at the price of one
+// FFT pair more per iteration (see docs/bem.md for the measured table).
 //
 // Heights h are positive towards the elastic body; u > 0 moves its surface
 // away (into the solid). The gap is g = u − h + d, d the rigid-body level.
@@ -15,13 +21,19 @@
 #include <span>
 #include <vector>
 
-#include "wearscale/core/fft.hpp"
+#include "wearscale/bem/half_space.hpp"
 
 namespace wearscale::bem {
+
+enum class ContactMethod {
+  PreconditionedCG,  ///< Polonsky–Keer with the FFT preconditioner S (default)
+  PolonskyKeer,      ///< the textbook, unpreconditioned Polonsky–Keer iteration
+};
 
 struct ContactOptions {
   double tolerance = 1e-12;   ///< on ε above
   int max_iterations = 10000;
+  ContactMethod method = ContactMethod::PreconditionedCG;
 };
 
 struct ContactResult {
@@ -35,8 +47,16 @@ struct ContactResult {
 
 class NormalContact {
  public:
-  /// `surface` heights on a periodic grid; `e_star` the contact modulus (1.12).
-  NormalContact(const RealField& surface, double e_star);
+  /// `surface` heights on the grid; `e_star` the contact modulus (1.12).
+  /// Periodic: the grid is one cell of a periodic surface. Free: it is a window
+  /// on an isolated body (a sphere, a pin, an asperity) and u the true
+  /// displacement, so `interference` is the approach of the rigid body towards
+  /// the far field (Hertz's δ) with no image correction; a solution whose
+  /// pressure reaches the outermost ring of cells is refused (InputError: the
+  /// window is too small for the contact).
+  NormalContact(const RealField& surface, double e_star, Boundary boundary = Boundary::Periodic);
+  /// The elastic body, its normal block only (HalfSpace::normal).
+  const HalfSpace& half_space() const { return body_; }
 
   /// Replaces the rigid surface, keeping the last pressure as a warm start.
   void set_surface(const RealField& surface);
@@ -68,17 +88,46 @@ class NormalContact {
   const std::vector<double>& history() const { return history_; }
 
  private:
-  void convolve(const RealField& in, RealField& out, double scale);
-  double quadratic_form(const RealField& t);  // Σ_x t (K t)
+  // The phases of one Polonsky–Keer iteration (see the .cpp) and what they pass on.
+  struct ContactGap {          // pass 1: the gap on the contact S = {p > 0}
+    double points = 0.0;       // |S|
+    double mean = 0.0;         // ḡ, the mean gap on S
+    double norm2 = 0.0;        // Σ_S (g − ḡ)²
+    double direction_mean = 0.0;  // mean over S of the previous direction
+  };
+  struct Descent {             // pass 2: the search direction and the error
+    double error = 0.0;        // ε (see above)
+    double slope = 0.0;        // Σ g t
+    bool penetrates = false;   // some point outside S has g < 0
+  };
+  struct Iterate {             // carried from one iteration to the next
+    double alpha = 1.0;        // the pressure is α·p_ (the rescaling to p0 folded into the next pass)
+    double residual_old = 0.0; // Σ_S r z of the last iteration (z = r unpreconditioned: Σ_S (g − ḡ)²)
+    bool conjugate = false;    // δ of Polonsky–Keer: false restarts steepest descent
+  };
+  ContactGap measure_gap(int iteration) const;
+  // Polonsky–Keer: the direction straight from the gap (and the error), in one pass.
+  Descent search_direction(const ContactGap& gap, double beta);
+  // Preconditioned: the residual r = g − ḡ on S (into gap_) and the error, then,
+  // after z = S r (into z_), the direction from z.
+  Descent residual(const ContactGap& gap);
+  void preconditioned_direction(const ContactGap& gap, Iterate& state, Descent& descent);
+  double step_length(const Descent& descent, int iteration);
+  // Descends by τ, projects on p ≥ 0, re-admits penetrating points and rescales to p0.
+  void descend(double tau, double g_mean, double p0, int iteration, Iterate& state);
   ContactResult finish(int iterations, double error, double g_mean);
+  ContactResult solve(double p0, const ContactOptions& options);
+  // InputError if a free window's contact reaches its border.
+  void check_window() const;
 
-  RealField h_, p_, u_, t_, gap_;
-  ComplexField spectrum_;
-  std::vector<double> kernel_;  // 2/(E* q)/N on the half spectrum; 0 at q = 0
-  std::shared_ptr<const FFTPlan> plan_;
+  RealField h_, p_, u_, t_, gap_, z_;  // z_: the preconditioned residual (empty unless used)
+  HalfSpace body_;
+  HalfSpace::Workspace work_;
+  // The pressure a penetrating point is re-admitted with, per unit gap and step:
+  // 1 (Polonsky–Keer) or S at offset 0 (preconditioned) [Pa/m].
+  double readmit_stiffness_ = 1.0;
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
-  double self_compliance_ = 1.0;  // u at a cell per unit pressure on that cell [m/Pa]
   std::vector<double> history_;
 };
 

@@ -50,4 +50,38 @@ inline double mode_multiplicity(const Grid2D& g, std::size_t j) {
   return (j == 0 || 2 * j == g.ny) ? 1.0 : 2.0;
 }
 
+/// f(i, j, m) for every mode (i, j) of the r2c half spectrum, m = i·(ny/2+1) + j
+/// its storage index; rows in parallel.
+template <class F>
+void for_each_mode(const Grid2D& g, F&& f) {
+  const std::size_t rows = g.nx, cols = g.spectral_ny();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < cols; ++j) f(i, j, i * cols + j);
+}
+
+/// The sum over the whole nx × ny spectrum of a Hermitian-symmetric quantity
+/// known on the r2c half: term(m, w, sum) adds w times the value of stored mode
+/// m to `sum` (an accumulator with +=), w = mode_multiplicity. Parseval's
+/// Σ_x a(x) b(x) = (1/N) Σ_q â(q) conj(b̂(q)) is its main use.
+template <class Sum, class Term>
+Sum hermitian_sum(const Grid2D& g, Term&& term) {
+  const std::size_t rows = g.nx, cols = g.spectral_ny();
+  const std::size_t last = g.ny % 2 == 0 ? cols - 1 : cols;  // the Nyquist column is its own mirror
+  Sum total{};
+#pragma omp parallel
+  {
+    Sum local{};
+#pragma omp for schedule(static) nowait
+    for (std::size_t i = 0; i < rows; ++i) {
+      Sum row{};
+      for (std::size_t j = 0; j < cols; ++j) term(i * cols + j, (j == 0 || j == last) ? 1.0 : 2.0, row);
+      local += row;
+    }
+#pragma omp critical(wearscale_hermitian_sum)
+    total += local;
+  }
+  return total;
+}
+
 }  // namespace wearscale::bem

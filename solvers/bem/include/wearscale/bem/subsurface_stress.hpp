@@ -33,18 +33,24 @@ class SubsurfaceStress {
  public:
   /// InputError unless −1 < ν ≤ 0.5 (stresses from tractions do not depend on E).
   SubsurfaceStress(const Grid2D& grid, double poisson);
+  /// The stresses in `body` (periodic; it must outlive this object). InputError for a
+  /// free boundary: its stresses are not implemented (the periodic solution would show
+  /// the images of the load).
+  explicit SubsurfaceStress(const HalfSpace& body);
 
   /// Takes the surface tractions (their spectra are kept for every depth).
   void set_traction(const VectorField& traction);
   /// σ at depth z ≥ 0 below every grid point (z = 0: the surface). InputError if z < 0.
   void stress(double depth, StressField& out);
 
-  const Grid2D& grid() const { return grid_; }
-  double poisson() const { return poisson_; }
+  const Grid2D& grid() const { return body_->grid(); }
+  double poisson() const { return body_->poisson(); }
 
  private:
-  Grid2D grid_;
-  double poisson_;
+  void setup();
+  std::unique_ptr<const HalfSpace> owned_;  // the body of the (grid, ν) constructor
+  const HalfSpace* body_;
+  HalfSpace::Workspace work_;
   std::shared_ptr<const FFTPlan> plan_;
   ComplexField px_, py_, pz_;                   // traction spectra
   ComplexField sxx_, syy_, szz_, sxy_, sxz_, syz_;  // stress spectra (overwritten by the c2r)

@@ -1,13 +1,24 @@
 #pragma once
 // Reading measured or generated topographies, writing surfaces.
 //
+// Formats, recognised by their content (the extension only names what is
+// missing): ISO 25178-72 X3P (.x3p), Gwyddion (.gwy) and Gwyddion Simple
+// Field (.gsf), Digital Surf (.sur), ISO 25178-71 SDF (.sdf, ASCII and
+// binary), Zygo (.datx, HDF5), wearscale's HDF5 (.h5), Gwyddion's ASCII
+// matrix export and plain text grids. Each reader takes the physical size,
+// the units and the missing-data mask from the file; docs/topography.md
+// says how each format is read.
+//
 // Text grids: one row per x index i, one value per y index j, separated by
 // commas, semicolons, spaces or tabs; lines starting with '#' are comments,
 // and the comments "# lx = <length>" / "# ly = <length>" give the sizes
 // (a number in metres, or a number with a unit: "# lx = 877 um"). A first
 // non-comment line with no number at all is taken as a column header and
-// skipped. HDF5: a 2D dataset, its sizes in attributes lx, ly (as written by
+// skipped; "nan" marks a missing point. A Gwyddion ASCII export ("# Channel:",
+// "# Width:", "# Height:", "# Value units:") has rows along y instead.
+// HDF5: a 2D dataset, its sizes in attributes lx, ly (as written by
 // write_surface or H5Writer::write_field).
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,6 +39,54 @@ struct TopographySize {
   std::optional<double> lx, ly;
 };
 
+/// What to do with the points a measurement marks as missing (NaN, masked,
+/// non-measured): an explicit choice of the user, never a silent one.
+enum class MissingPoints { Refuse, Fill };
+
+/// The declaration of that choice: the option `surface analyze --missing`,
+/// the case key contact.missing, their help and the error that stops a
+/// file with missing points all come from here.
+struct MissingPointsChoice {
+  static constexpr const char* key = "missing";
+  static constexpr const char* fallback = "refuse";
+  static constexpr const char* allowed = "refuse | fill";
+  static constexpr const char* doc =
+      "Points the file marks as missing (NaN, masked, non-measured): refuse (default) stops and says how many "
+      "and where; fill fills them by harmonic (Laplace) interpolation from the measured points around them";
+};
+/// "refuse" or "fill"; InputError naming `option` otherwise.
+MissingPoints missing_points_from(std::string_view text, const std::string& option);
+const char* name(MissingPoints m);
+
+struct TopographyOptions {
+  std::string dataset = default_surface_dataset;   ///< wearscale's HDF5: the heights' dataset
+  TopographySize size;                              ///< overrides the file's sizes
+  MissingPoints missing = MissingPoints::Refuse;
+  /// Larger grids are refused before anything is allocated, so no header
+  /// can make the reader take more memory than the file could fill.
+  std::size_t max_points = std::size_t(1) << 28;
+};
+
+/// A topography and what the file said of it.
+struct MeasuredTopography {
+  RealField heights;       ///< metres, on the file's grid and size
+  std::string format;      ///< e.g. "ISO 25178-72 X3P"
+  std::size_t missing = 0; ///< points the file marks as missing (filled, if chosen)
+};
+
+/// Any supported format, recognised by its content. InputError naming the
+/// file for a format wearscale does not read (with the list of those it
+/// does), a malformed or truncated file, a missing size, non-finite
+/// heights, and missing points unless `options.missing` fills them.
+MeasuredTopography read_measured_topography(const std::filesystem::path& file, const TopographyOptions& options = {});
+/// The same from a file's bytes (every format but the HDF5-based ones);
+/// `name` stands for the file in messages and tells the format when the
+/// content does not.
+MeasuredTopography parse_measured_topography(std::string_view bytes, const std::string& name,
+                                             const TopographyOptions& options = {});
+/// "ISO 25178-72 X3P (.x3p), …": the formats wearscale reads, for messages and help.
+std::string supported_topography_formats();
+
 /// A height grid from a text/CSV file. InputError naming the file, line and
 /// column for ragged rows, non-numbers, NaN or infinities, and for an empty
 /// file or a missing size (neither a "# lx =" comment nor `size`). Either
@@ -47,7 +106,7 @@ RealField read_topography_h5(const std::filesystem::path& file, const std::strin
 RealField read_topography_h5(const H5Reader& file, const std::string& dataset = default_surface_dataset,
                              const TopographySize& size = {});
 
-/// By extension: .h5/.hdf5/.hdf → read_topography_h5, anything else → text.
+/// Any format (read_measured_topography), missing points refused.
 RealField read_topography(const std::filesystem::path& file, const std::string& dataset = default_surface_dataset,
                           const TopographySize& size = {});
 

@@ -35,6 +35,7 @@ struct PinOnDiscSetup {
   double nonplanar_slope = 0.0;     ///< slope of the rotating tilt of the disc
   double nonplanar_period = 0.05;   ///< its rotation period in sliding distance [m]
   double tolerance = 1e-10;         ///< BEM orthogonality error
+  bem::Boundary boundary = bem::Boundary::Periodic;  ///< of the BEM cell: periodic images, or an isolated pin (free)
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
   materials::InterfaceLaw on_substrate;  ///< pin on the substrate (e.g. SiO2/Si)
   bool like_on_like = true;         ///< pin and layer of one material: wear shared ½/½ on the layer

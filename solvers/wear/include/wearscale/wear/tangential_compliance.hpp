@@ -5,57 +5,56 @@
 // normal load does not change ΔE_el, (4.19)–(4.23)).
 //
 // The micro-contact map is a window of L × L on an unbounded half-space
-// (non-periodic): the kernel is Cerruti's (4.3) integrated exactly over a
-// cell, and u = G * p is a linear convolution, evaluated by FFT on a
-// zero-padded 2n × 2n grid. (A periodic operator has no zero mode for the
-// mean shear, its kernel has zero mean, and unloading a region could raise
-// the energy; (5.3) needs u' < u everywhere, which the positive kernel gives.)
-#include <memory>
+// (non-periodic): the x → x block of bem::HalfSpace with a free boundary,
+// Cerruti's (4.3) integrated exactly over a cell, u = G * p a linear
+// convolution by FFT on a zero-padded 2n × 2n grid. (A periodic operator has
+// no zero mode for the mean shear, its kernel has zero mean, and unloading a
+// region could raise the energy; (5.3) needs u' < u everywhere, which the
+// positive kernel gives.) The kernel is also kept in real space for the
+// sums over small regions.
 #include <vector>
 
-#include "wearscale/core/fft.hpp"
+#include "wearscale/bem/half_space.hpp"
 
 namespace wearscale::wear {
 
 class TangentialCompliance {
  public:
   /// Scratch of the padded grid for one solve (one per thread).
-  struct Workspace {
-    RealField padded;
-    ComplexField spectrum;
-  };
+  using Workspace = bem::HalfSpace::Workspace;
 
   /// InputError unless G > 0, −1 < ν ≤ 0.5 and the grid has square cells.
   TangentialCompliance(const Grid2D& grid, double shear_modulus, double poisson);
 
-  const Grid2D& grid() const { return grid_; }
-  double shear_modulus() const { return shear_modulus_; }
-  double poisson() const { return poisson_; }
-  Workspace workspace() const;
+  const Grid2D& grid() const { return body_.grid(); }
+  double shear_modulus() const { return body_.shear_modulus(); }
+  double poisson() const { return body_.poisson(); }
+  Workspace workspace() const { return body_.workspace(); }
 
   /// u_x = G * p_x on the window (one r2c and one c2r of the padded grid).
   /// Threads may call this concurrently, each with its own workspace.
-  void displacement(const RealField& traction, RealField& u, Workspace& w) const;
+  void displacement(const RealField& traction, RealField& u, Workspace& w) const {
+    body_.shear_displacement(traction, u, w);
+  }
 
   /// G(di, dj): u_x at cell offset (di, dj) per unit p_x on one cell [m/Pa]:
   /// (4.3) integrated over the cell, (1/4πG) Σ_corners ± [2(1−ν) x asinh(y/|x|) + 2 y asinh(x/|y|)].
   double kernel(long di, long dj) const {
     const std::size_t a = static_cast<std::size_t>(di < 0 ? -di : di), b = static_cast<std::size_t>(dj < 0 ? -dj : dj);
-    return table_[a * grid_.ny + b];
+    return table_[a * grid().ny + b];
   }
 
   /// The cell-integrated kernel at any offset (in cells), for checks.
-  static double cell_kernel(double di, double dj, double cell, double shear_modulus, double poisson);
+  static double cell_kernel(double di, double dj, double cell, double shear_modulus, double poisson) {
+    return bem::HalfSpace::cell_response(bem::Block::xx, di, dj, cell, cell, shear_modulus, poisson);
+  }
 
   /// E_el = ½ ΔA Σ p_x u_x   (4.2)
   double energy(const RealField& traction, const RealField& u) const;
 
  private:
-  Grid2D grid_, padded_;
-  double shear_modulus_, poisson_;
-  std::shared_ptr<const FFTPlan> plan_;
-  std::vector<double> table_;                // G(|di|, |dj|), 0 ≤ di < nx, 0 ≤ dj < ny
-  std::vector<std::complex<double>> spectrum_;  // DFT of G on the padded grid, /N_padded folded in
+  bem::HalfSpace body_;        // free boundary, x → x block
+  std::vector<double> table_;  // G(|di|, |dj|), 0 ≤ di < nx, 0 ≤ dj < ny
 };
 
 }  // namespace wearscale::wear

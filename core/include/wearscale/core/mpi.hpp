@@ -1,0 +1,45 @@
+#pragma once
+// The MPI layer: one process among the ranks of an `mpirun -np P` or `srun`
+// job. The C++ side owns MPI: main() holds a Session, which initialises MPI
+// when the process was started by a launcher (Open MPI, PMI/PMIx, Slurm) and
+// finalises it at exit; a process started on its own stays serial (rank 0 of
+// 1, no MPI call), and so does a build without WEARSCALE_MPI. A rank that
+// fails calls abort(): the whole job ends, no rank waits for it forever.
+#include <cstddef>
+#include <span>
+
+namespace wearscale::mpi {
+
+/// Built with MPI (WEARSCALE_MPI).
+bool built_with_mpi();
+
+/// Initialises MPI (threads: funnelled, OpenMP inside a rank) if a launcher
+/// started this process; MPI_Finalize when it goes out of scope.
+class Session {
+ public:
+  Session(int& argc, char**& argv);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+/// True between a Session's initialisation of MPI and its end.
+bool active();
+/// This process's rank in the job and the number of ranks (0 and 1 when serial).
+int rank();
+int size();
+inline bool is_root() { return rank() == 0; }
+
+/// Ends every rank of the job with `code` (MPI_Abort); std::exit(code) when serial.
+[[noreturn]] void abort(int code);
+/// Waits for every rank.
+void barrier();
+
+/// Sums over the ranks, the result on every rank (MPI_Allreduce; the ranks'
+/// parts added in rank order, so the result does not depend on timing).
+double sum(double local);
+void sum(std::span<double> values);
+long long sum(long long local);
+double max(double local);
+
+}  // namespace wearscale::mpi

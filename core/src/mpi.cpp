@@ -1,0 +1,123 @@
+#include "wearscale/core/mpi.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+#include <vector>
+
+#ifdef WEARSCALE_MPI
+#include <mpi.h>
+#endif
+
+namespace wearscale::mpi {
+
+namespace {
+bool g_active = false;
+int g_rank = 0, g_size = 1;
+
+#ifdef WEARSCALE_MPI
+// A launcher's variables: Open MPI's mpirun, PMI (MPICH, Intel MPI) and PMIx (Slurm's srun).
+bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(v) != nullptr) return true;
+  return false;
+}
+#endif
+}  // namespace
+
+bool built_with_mpi() {
+#ifdef WEARSCALE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+Session::Session(int& argc, char**& argv) {
+#ifdef WEARSCALE_MPI
+  if (!launched_by_mpi()) return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  // Errors in MPI calls end the job (the default handler), never return codes left unchecked.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
+  MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &g_size);
+  g_active = true;
+#else
+  (void)argc;
+  (void)argv;
+#endif
+}
+
+Session::~Session() {
+#ifdef WEARSCALE_MPI
+  if (g_active) MPI_Finalize();
+#endif
+  g_active = false;
+  g_rank = 0;
+  g_size = 1;
+}
+
+bool active() { return g_active; }
+int rank() { return g_rank; }
+int size() { return g_size; }
+
+void abort(int code) {
+#ifdef WEARSCALE_MPI
+  if (g_active && g_size > 1) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+  std::exit(code);
+}
+
+void barrier() {
+#ifdef WEARSCALE_MPI
+  if (g_active) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+void sum(std::span<double> values) {
+#ifdef WEARSCALE_MPI
+  if (!g_active || g_size == 1) return;
+  // Gather every rank's values and add them in rank order on every rank: the
+  // same bits whatever the reduction tree of the MPI library.
+  const int n = static_cast<int>(values.size());
+  thread_local std::vector<double> all;  // kept: no allocation per call in solver loops
+  all.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(g_size));
+  MPI_Allgather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD);
+  for (int k = 0; k < n; ++k) {
+    double s = 0.0;
+    for (int r = 0; r < g_size; ++r) s += all[static_cast<std::size_t>(r) * static_cast<std::size_t>(n) + k];
+    values[static_cast<std::size_t>(k)] = s;
+  }
+#else
+  (void)values;
+#endif
+}
+
+double sum(double local) {
+  sum(std::span<double>(&local, 1));
+  return local;
+}
+
+long long sum(long long local) {
+#ifdef WEARSCALE_MPI
+  if (g_active && g_size > 1) {
+    long long total = 0;
+    MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    return total;
+  }
+#endif
+  return local;
+}
+
+double max(double local) {
+#ifdef WEARSCALE_MPI
+  if (g_active && g_size > 1) {
+    double m = local;
+    MPI_Allreduce(&local, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return m;
+  }
+#endif
+  return local;
+}
+
+}  // namespace wearscale::mpi
