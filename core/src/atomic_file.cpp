@@ -62,9 +62,14 @@ void write_all(int fd, const void* data, std::size_t size, const std::filesystem
 }
 
 void commit_file(const std::filesystem::path& partial, const std::filesystem::path& final_path, Commit mode) {
-  fsync_path(partial, O_RDONLY, true);
-  if (mode == Commit::WithItsSet && OutputSet::stage(partial, final_path)) return;
-  if (::rename(partial.c_str(), final_path.c_str()) != 0) io_error("cannot rename to", final_path, errno);
+  try {
+    fsync_path(partial, O_RDONLY, true);
+    if (mode == Commit::WithItsSet && OutputSet::stage(partial, final_path)) return;
+    if (::rename(partial.c_str(), final_path.c_str()) != 0) io_error("cannot rename to", final_path, errno);
+  } catch (const OutputError&) {
+    remove_quietly(partial);  // a file that cannot be committed is never left behind (e.g. a plot's image)
+    throw;
+  }
   const auto dir = final_path.parent_path().empty() ? std::filesystem::path(".") : final_path.parent_path();
   fsync_path(dir, O_RDONLY | O_DIRECTORY, false);
 }

@@ -27,7 +27,7 @@ enum class Commit {
 /// rename is atomic within a file system), then fsyncs the folder. With
 /// Commit::WithItsSet and an OutputSet open for the folder, the file is only
 /// staged: it reaches its final name when the set commits. OutputError if the
-/// file system refuses.
+/// file system refuses (the temporary file then removed).
 void commit_file(const std::filesystem::path& partial, const std::filesystem::path& final_path,
                  Commit mode = Commit::WithItsSet);
 
