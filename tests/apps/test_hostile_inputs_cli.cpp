@@ -139,6 +139,15 @@ INSTANTIATE_TEST_SUITE_P(
                 {"a DEM sample of about", "particles (box 20 ×"}},
         Hostile{"dem_poisson_0.5", "dem patch-test --nu 0.5 --out OUT", {}, 2,
                 {"key 'dem.poisson' = 0.5: out of range; allowed: (-1, 0.25]"}},
+        // A grid within the readers' cap (2^28 points) but beyond the memory limit: refused before it is
+        // allocated (the text formats are also bounded by their length; HDF5 and X3P data may be compressed).
+        Hostile{"dataset_of_12000_squared", contact_h5,
+                [](const fs::path& dir) { h5fixture::File(dir / "h.h5").dataset("/surface/height", {12000, 12000}, {}); },
+                2, {"h.h5: dataset '/surface/height' (12000 × 12000 heights) needs 3.35 GiB", "this process may use"},
+                "WEARSCALE_MEMORY_LIMIT=2GiB"},
+        // A device is not a topography file.
+        Hostile{"topography_dev_zero", "surface analyze /dev/zero --psd-out OUT/psd.csv", {}, 2,
+                {"/dev/zero: not a regular file"}},
         // Case files that are not files.
         Hostile{"run_dev_zero", "run /dev/zero --out OUT", {}, 2, {"/dev/zero: not a regular file"}},
         Hostile{"multi_line_set", "run '" + pin_on_disc + "' --out OUT --set \"$(printf 'scale.macro.grid=32\\nscale.macro.size=1')\"",

@@ -164,6 +164,8 @@ TEST(Resume, AKilledRunResumesToTheResultsOfAnUninterruptedRunBitForBit) {
   r = run_cli(args + " --resume part", dir);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("already complete"));
+  EXPECT_THAT(r.err, HasSubstr("kept part/run.h5"));
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("wrote"))) << "it wrote nothing, and says so";
   EXPECT_EQ(inode_of(dir / "part" / "run.h5"), inode);
   fs::remove_all(dir);
 }
