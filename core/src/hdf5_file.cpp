@@ -392,8 +392,10 @@ H5Reader H5Reader::from_image(std::string_view bytes, const std::string& name) {
 
 void detail::refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read) {
   // Seconds a child may take: a hang in HDF5 is a damaged file too.
-  const std::string failed = detail::try_in_child(read, 5.0 + bytes / 20e6);
-  if (!failed.empty()) throw InputError(fmt::format("{}: damaged or not what it claims: {}", name, failed));
+  const detail::Trial trial = detail::try_in_child(read, 5.0 + bytes / 20e6);
+  if (!trial.failure.empty())
+    throw InputError(fmt::format("{}: damaged or not what it claims: {}", name, trial.failure));
+  if (!trial.input_error.empty()) throw InputError(trial.input_error);
 }
 
 H5Reader::H5Reader(H5Reader&& other) noexcept : name_(std::move(other.name_)), file_(other.file_) { other.file_ = -1; }

@@ -79,12 +79,17 @@ class H5Writer {
 };
 
 namespace detail {
-/// "" if `read` ran to its end (returned or threw) in a child process within
-/// `timeout_seconds`; else why not ("the HDF5 library crashed reading it
-/// (signal 11, Segmentation fault)"). Called inside a child, just "".
-std::string try_in_child(const std::function<void()>& read, double timeout_seconds);
+/// What `read` did in a child process within `timeout_seconds`.
+struct Trial {
+  std::string failure;      ///< why it did not run to its end ("the HDF5 library crashed reading it (signal 11, …)"); "" if it did
+  std::string input_error;  ///< the message of the InputError it raised, if any
+};
+/// Called inside a child, an empty Trial.
+Trial try_in_child(const std::function<void()>& read, double timeout_seconds);
 /// InputError "<name>: damaged or not what it claims: …" unless `read` runs
-/// to its end in a child (a timeout of 5 s plus 1 s per 20 MB of `bytes`).
+/// to its end in a child (a timeout of 5 s plus 1 s per 20 MB of `bytes`);
+/// the child's own InputError if it raised one (the read is then not
+/// repeated in this process).
 void refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read);
 }  // namespace detail
 
