@@ -47,7 +47,8 @@ namespace {
 // One row per swept value: the headline figures of the pin-on-disc runs when
 // present, else every figure.
 void print_sweep_table(const coupling::RunSummary& summary) {
-  const std::vector<std::string> preferred = {"mu_mean", "mu_final", "pin_wear", "disc_wear", "substrate_reached_at"};
+  const std::vector<std::string> preferred = {"mu_mean", "mu_final", "pin_wear", "disc_wear", "substrate_reached_at",
+                                              "grooves"};
   std::vector<std::string> columns;
   const auto& first = summary.runs.front().results;
   for (const auto& c : preferred)
@@ -55,11 +56,14 @@ void print_sweep_table(const coupling::RunSummary& summary) {
       if (r.results.contains(c) && std::find(columns.begin(), columns.end(), c) == columns.end()) columns.push_back(c);
   if (columns.empty())
     for (const auto& [name, v] : first.items()) columns.push_back(name);
+  const bool series = !summary.series_key.empty();
   std::cout << fmt::format("{:<28}", summary.sweep_key);
+  if (series) std::cout << fmt::format(" {:<28}", summary.series_key);
   for (const auto& c : columns) std::cout << fmt::format(" {:>20}", c);
   std::cout << '\n';
   for (std::size_t k = 0; k < summary.runs.size(); ++k) {
     std::cout << fmt::format("{:<28}", summary.sweep_values[k]);
+    if (series) std::cout << fmt::format(" {:<28}", summary.series_values[k]);
     for (const auto& c : columns) {
       const auto& res = summary.runs[k].results;
       std::cout << (res.contains(c) ? fmt::format(" {:>20.6g}", res[c]["value"].get<double>()) : fmt::format(" {:>20}", "-"));

@@ -43,10 +43,13 @@ nlohmann::json RunSummary::to_json() const {
     j["results"] = results;
   } else {
     nlohmann::json runs_json = nlohmann::json::array();
-    for (std::size_t k = 0; k < runs.size(); ++k)
+    for (std::size_t k = 0; k < runs.size(); ++k) {
       runs_json.push_back({{"value", sweep_values[k]}, {"output_dir", runs[k].output_dir.string()},
                            {"results", runs[k].results}});
+      if (!series_key.empty()) runs_json.back()["series"] = series_values[k];
+    }
     j["sweep"] = {{"key", sweep_key}, {"values", sweep_values}, {"runs", runs_json}};
+    if (!series_key.empty()) j["sweep"]["series"] = {{"key", series_key}, {"values", series_values}};
   }
   return j;
 }
@@ -64,11 +67,12 @@ std::string utc_now() {
 
 // The case (parsed afresh by `parse`) with its --set overrides, and `extra`
 // (a sweep value) from `origin`.
-Config load(const CaseLoader& parse, const RunOptions& options, const std::string& extra = {},
-            const std::string& origin = {}) {
+// The case with the overrides, then the `extra` ones (value, where it comes from).
+Config load(const CaseLoader& parse, const RunOptions& options,
+            const std::vector<std::pair<std::string, std::string>>& extra = {}) {
   Config cfg = parse();
   for (const auto& o : options.overrides) cfg.override_value(o);
-  if (!extra.empty()) cfg.override_value(extra, origin);
+  for (const auto& [value, origin] : extra) cfg.override_value(value, origin);
   return cfg;
 }
 
@@ -290,7 +294,11 @@ void check_sweep(const Config& probe, const std::string& key, const std::vector<
 // A sweep checked and ready: every run prepared, nothing written yet.
 struct SweepPlan {
   RunSummary sweep;
-  std::vector<std::string> labels;
+  std::vector<std::string> values;      // the swept key's values
+  std::vector<std::string> labels;      // their run folders' names
+  std::string series_key;               // [sweep.series] key, or ""
+  std::vector<std::string> series;      // its values
+  std::vector<std::string> run_series;  // the series value of each run
   std::string table_name;
   bool parallel = true;
   std::vector<PreparedRun> runs;
@@ -302,19 +310,39 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   const auto values = probe.values_as_text("sweep.values");
   plan.table_name = probe.string_or("sweep.table", "sweep.csv");
   plan.parallel = probe.boolean_or("sweep.parallel", true);
+  // [sweep.series]: the sweep once more per value of a second key.
+  plan.series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
+  plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
+  const std::vector<std::string>& series = plan.series;
+  plan.values = values;
   for (const auto& v : values) plan.labels.push_back(label_of(key, v));
   check_sweep(probe, key, values, plan.labels, plan.table_name);
+  if (!plan.series_key.empty() && !probe.has(plan.series_key))
+    throw probe.error("sweep.series.key", "the series key is not in the case (give it a value there first)",
+                      "a key of the case");
   RunSummary& sweep = plan.sweep;
   sweep.case_name = probe.string("case.name");
   sweep.output_dir = options.output_dir ? *options.output_dir
                                         : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
   sweep.sweep_key = key;
-  sweep.sweep_values = values;
+  sweep.series_key = plan.series_key;
   // Every run is checked before any starts.
   const std::string where = probe.where("sweep.values");
-  for (std::size_t k = 0; k < values.size(); ++k)
-    plan.runs.push_back(prepare(load(parse, options, key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)),
-                                sweep.output_dir / plan.labels[k]));
+  std::vector<std::string> run_value;
+  for (const auto& sv : series) {
+    const auto folder =
+        plan.series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(plan.series_key, sv);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      std::vector<std::pair<std::string, std::string>> extra{
+          {key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)}};
+      if (!plan.series_key.empty()) extra.push_back({plan.series_key + "=" + sv, probe.where("sweep.series.values")});
+      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k]));
+      run_value.push_back(values[k]);
+      plan.run_series.push_back(sv);
+    }
+  }
+  sweep.sweep_values = run_value;
+  if (!plan.series_key.empty()) sweep.series_values = plan.run_series;
   return plan;
 }
 
@@ -322,9 +350,12 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   SweepPlan plan = plan_sweep(parse, options, probe);
   RunSummary& sweep = plan.sweep;
   std::vector<PreparedRun>& runs = plan.runs;
-  const std::vector<std::string>& labels = plan.labels;
   const std::string& key = sweep.sweep_key;
-  const std::vector<std::string>& values = sweep.sweep_values;
+  const std::vector<std::string>& values = plan.values;            // the swept key's values
+  const std::vector<std::string>& run_value = sweep.sweep_values;  // ... of each run
+  const std::vector<std::string>& run_series = plan.run_series;
+  const std::string& series_key = plan.series_key;
+  const std::vector<std::string>& series = plan.series;
   const std::string& table_name = plan.table_name;
   const bool parallel = plan.parallel;
   // Resuming, every checkpoint is read (and its FFT plans imported) before any run makes a plan.
@@ -341,6 +372,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   sweep.scales = runs.front().summary.scales;
   sweep.parameters = runs.front().summary.parameters;
   sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
+  if (!series_key.empty()) sweep.parameters["sweep"]["series"] = {{"key", series_key}, {"values", series}};
 
   // The thread budget (-j) shared out: runs side by side, the rest inside each run.
   const unsigned budget = static_cast<unsigned>(threads);
@@ -378,19 +410,15 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     rethrow_interrupted(e, command, sweep.output_dir);
   }
 
-  // The sweep table: the swept value, then every headline figure of the runs.
+  // The sweep tables (one per series value): the swept value, then every
+  // headline figure of the runs.
   OutputSet outputs(sweep.output_dir, "summary.json");
   std::vector<std::string> names;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  std::vector<std::vector<double>> columns(names.size());
-  for (std::size_t k = 0; k < runs.size(); ++k)
-    for (std::size_t c = 0; c < names.size(); ++c) {
-      const auto& res = runs[k].summary.results;
-      columns[c].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
-    }
-  std::vector<double> numeric;  // the swept values as numbers, if they all are (else the table keeps the text)
+  // The swept values as numbers, if they all are (else the tables keep the text).
+  std::vector<double> numeric;
   for (const auto& v : values) try {
       numeric.push_back(units::parse_quantity(v).value);
     } catch (const std::exception&) {
@@ -398,33 +426,60 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
       break;
     }
   const bool numeric_values = numeric.size() == values.size();
-  std::vector<std::span<const double>> spans;
-  if (numeric_values) spans.emplace_back(numeric);
-  for (const auto& c : columns) spans.emplace_back(c);
-  const auto table = sweep.output_dir / table_name;
-  const std::vector<std::string> comments{
-      fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
-  if (numeric_values) {
-    std::vector<std::string> header{key};
-    header.insert(header.end(), names.begin(), names.end());
-    write_csv(table, header, spans, comments);
-  } else {
-    write_csv(table, key, values, names, spans, comments);
+  std::vector<SweepTable> tables;
+  for (std::size_t first = 0; first < runs.size(); first += values.size()) {
+    std::vector<std::vector<double>> columns(names.size());
+    for (std::size_t k = first; k < first + values.size(); ++k)
+      for (std::size_t c = 0; c < names.size(); ++c) {
+        const auto& res = runs[k].summary.results;
+        columns[c].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+      }
+    std::vector<std::span<const double>> spans;
+    if (numeric_values) spans.emplace_back(numeric);
+    for (const auto& c : columns) spans.emplace_back(c);
+    const std::filesystem::path base(table_name);
+    const std::string label = series_key.empty() ? "" : label_of(series_key, run_series[first]);
+    const auto table = sweep.output_dir / (label.empty() ? base : std::filesystem::path(base.stem().string() + "_" + label +
+                                                                                        base.extension().string()));
+    std::vector<std::string> comments{
+        fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
+    if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
+    if (numeric_values) {
+      std::vector<std::string> header{key};
+      header.insert(header.end(), names.begin(), names.end());
+      write_csv(table, header, spans, comments);
+    } else {
+      write_csv(table, key, values, names, spans, comments);
+    }
+    sweep.files.push_back(table);
+    tables.push_back({label.empty() ? "model" : label, table});
   }
-  sweep.files.push_back(table);
 
   std::vector<FrictionCurve> curves;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     sweep.runs.push_back(runs[k].summary);
     const auto csv = runs[k].summary.output_dir / "friction.csv";
-    if (std::filesystem::exists(csv)) curves.push_back({labels[k], csv});
+    const std::string label = label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k]));
+    if (std::filesystem::exists(csv)) curves.push_back({label, csv});
   }
   if (!curves.empty())
     if (auto png = plot_friction_curves(curves, sweep.output_dir / "friction_curves.png", sweep.case_name))
       sweep.files.push_back(*png);
+  std::vector<FrictionCurve> profiles;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const auto csv = runs[k].summary.output_dir / "disc_profile.csv";
+    if (std::filesystem::exists(csv)) profiles.push_back({curves.size() == runs.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
+  }
+  if (!profiles.empty()) {
+    const std::string thickness = "materials.layer.thickness";  // one oxide for all runs: its interface is drawn
+    const bool one_oxide = key != thickness && series_key != thickness && probe.has(thickness);
+    const double h = one_oxide ? probe.number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
+    if (auto png = plot_disc_profiles(profiles, sweep.output_dir / "disc_profiles.png", sweep.case_name, h))
+      sweep.files.push_back(*png);
+  }
   if (key == "materials.layer.thickness" && numeric_values &&
       std::find(names.begin(), names.end(), "mu_mean") != names.end())
-    if (auto png = plot_friction_vs_thickness(table, sweep.output_dir / "friction_vs_thickness.png"))
+    if (auto png = plot_friction_vs_thickness(tables, sweep.output_dir / "friction_vs_thickness.png"))
       sweep.files.push_back(*png);
   sweep.files.push_back(sweep.output_dir / "summary.json");
   outputs.commit(sweep.to_json());

@@ -1,5 +1,6 @@
 #include "wearscale/coupling/plots.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
@@ -67,39 +68,105 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
   return png;
 }
 
+namespace {
+constexpr const char* kColours[] = {"1f77b4", "d62728", "2ca02c", "ff7f0e", "9467bd", "8c564b",
+                                    "e377c2", "7f7f7f", "bcbd22", "17becf"};
+std::string colour(std::size_t k) { return kColours[k % (sizeof kColours / sizeof *kColours)]; }
+
+// A label in gnuplot's enhanced text, in single quotes: '_' printed as itself.
+std::string literal(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') out += '\\';
+    if (c == '\'') out += '\'';
+    out += c;
+  }
+  return out;
+}
+
+bool has_column(const std::filesystem::path& csv, const std::string& name) {
+  std::ifstream in(OutputSet::readable(csv));  // a staged output is read under its temporary name
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') return ("," + line + ",").find("," + name + ",") != std::string::npos;
+  return false;
+}
+}  // namespace
+
 std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
                                                           const std::filesystem::path& png, const std::string& title) {
   std::string mu, wear;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& c = curves[k];
-    mu += fmt::format("{}'{}' using 1:2 with lines lw 1.5 title '{}'", k ? ", " : "", data(c.csv), c.label);
-    wear += fmt::format("{}'{}' using 1:($3*1e18) with lines lw 1.5 dt 2 title 'pin {}', '' using 1:($4*1e18) with "
-                        "lines lw 1.5 title 'disc {}'",
-                        k ? ", " : "", data(c.csv), c.label, c.label);
+    const std::string rgb = colour(k);
+    if (has_column(c.csv, "friction_moving_average")) {
+      mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1 lc rgb '#B0{}' notitle, "
+                        "'' using 1:(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
+                        k ? ", " : "", data(c.csv), rgb, rgb, literal(c.label));
+    } else {
+      mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
+                        data(c.csv), rgb, literal(c.label));
+    }
+    wear += fmt::format("{}'{}' using 1:(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' title 'pin {}', "
+                        "'' using 1:(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' title 'disc {}'",
+                        k ? ", " : "", data(c.csv), rgb, literal(c.label), rgb, literal(c.label));
   }
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
       "set multiplot layout 2,1 title '{}'\n"
       "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right\n"
-      "plot {}\n"
+      "set label 1 'faint: raw μ; full: moving average' at graph 0.01, graph 0.95 font ',9'\n"
+      "plot {}\nunset label 1\n"
       "set ylabel 'worn volume [µm³]'\nset xlabel 'sliding distance s [m]'\nset autoscale y\n"
       "plot {}\nunset multiplot\n",
-      title, mu, wear);
+      literal(title), mu, wear);
   return render_plot(script, png);
 }
 
-std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
+std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<FrictionCurve>& profiles,
+                                                        const std::filesystem::path& png, const std::string& title,
+                                                        double layer_thickness) {
+  std::string curves;
+  for (std::size_t k = 0; k < profiles.size(); ++k)
+    curves += fmt::format("{}'{}' using ($1*1e3):(-$2*1e6) with lines lw 2 lc rgb '#{}' title '{}'", k ? ", " : "",
+                          data(profiles[k].csv), colour(k), literal(profiles[k].label));
+  if (layer_thickness > 0.0 && std::isfinite(layer_thickness))
+    curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
+                          -layer_thickness * 1e6);
+  return render_plot(fmt::format("set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
+                                 "set title '{}'\nset xlabel 'across the track x [mm]'\nset ylabel 'disc surface [µm]'\n"
+                                 "set grid\nset key outside right\nplot {}\n",
+                                 literal(title), curves),
+                     png);
+}
+
+std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vector<SweepTable>& tables,
                                                                 const std::filesystem::path& png) {
-  // Column 1: thickness [m] (inf for bulk); the table names its μ columns.
+  // Column 1: thickness [m] (inf for bulk); the tables name their μ columns.
+  std::string curves;
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const auto& t = tables[k];
+    const std::string rgb = colour(k), file = data(t.csv);
+    curves += fmt::format(
+        "'{0}' using (finite($1)):(column('mu_final')) with linespoints pt 7 ps 1.3 lw 2 lc rgb '#{1}' "
+        "title '{2}: final μ', \\\n"
+        "'{0}' using (bulk($1)):(column('mu_final')) with points pt 5 ps 1.8 lc rgb '#{1}' title '{2}: bulk SiO_2', \\\n"
+        "'{0}' using (finite($1)):(column('mu_mean')) with linespoints pt 6 dt 3 lw 1 lc rgb '#{1}' "
+        "title '{2}: mean μ', \\\n",
+        file, rgb, literal(t.label));
+  }
   const std::string script = fmt::format(
-      "set datafile separator ','\nset datafile commentschars '#'\n"
-      "h(x) = (x > 1) ? 6 : x*1e6   # bulk (inf) drawn at 6 µm, as in Fig. 9.25\n"
-      "set xlabel 'oxide layer thickness h_{{layer}} [µm] (bulk at 6)'\nset ylabel 'friction coefficient μ'\n"
-      "set xrange [-0.3:6.5]\nset yrange [0:1]\nset grid\nset key top left\n"
-      "plot '{0}' using (h($1)):(column('mu_mean')) with linespoints pt 7 lw 2 title 'model: time-averaged μ', \\\n"
-      "     '{0}' using (h($1)):(column('mu_final')) with linespoints pt 5 lw 2 title 'model: final μ', \\\n"
-      "     [0:6] 0.337 + 0.070*x with lines dt 2 lw 2 title 'experiments: μ ≈ 0.337 + 0.070 h (9.1)'\n",
-      data(table_csv));
+      "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
+      "finite(x) = (x > 1) ? 1/0 : x*1e6   # oxide thicknesses [µm]\n"
+      "bulk(x) = (x > 1) ? 6 : 1/0         # bulk (inf) placed at 6 µm, as in Fig. 9.25\n"
+      "set xlabel 'oxide layer thickness h_{{layer}} [µm]'\nset ylabel 'friction coefficient μ'\n"
+      "set xrange [-0.3:6.6]\nset yrange [0:1]\nset grid\nset key top left font ',9'\n"
+      "set xtics ('0' 0, '1' 1, '2' 2, '3' 3, '4' 4, 'bulk' 6)\n"
+      "set label 1 'bulk SiO_2 is drawn at 6 µm (the thesis places it there, Fig. 9.25)' at graph 0.35, graph 0.06 "
+      "font ',9'\n"
+      "plot {}     [0:3] 0.337 + 0.070*x with lines dt 2 lw 2 lc rgb 'black' title 'experiments: μ ≈ 0.337 + 0.070 h "
+      "(9.1)'\n",
+      curves);
   return render_plot(script, png);
 }
 
@@ -116,15 +183,17 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
 std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
                                                             const std::filesystem::path& png, const std::string& title,
                                                             const std::vector<double>& contact_ratios, double sigma,
-                                                            double p_crit) {
+                                                            double p_crit, double length) {
   std::string plots;
   const double s = sigma / 1e9, pc = p_crit / 1e9;
   for (std::size_t k = 0; k < contact_ratios.size(); ++k) {
     const double c = contact_ratios[k];
     const int colour = static_cast<int>(k) + 1;
+    const std::string label = length > 0.0 ? fmt::format("DEM, D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
+                                           : fmt::format("DEM, D/L = {:.3g}", c);
     plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
-                         "title 'DEM, D/L = {:.3g}', ",
-                         data(runs_csv), c, colour, c);
+                         "title '{}', ",
+                         data(runs_csv), c, colour, label);
     plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
   }
   plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";

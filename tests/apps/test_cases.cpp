@@ -47,12 +47,13 @@ TEST_P(CaseRegression, ReproducesItsGoldFigures) {
       EXPECT_NEAR(got, want, tol) << where << ": " << name;
     }
   };
-  if (gold.contains("runs")) {  // a sweep: figures per swept value
+  if (gold.contains("runs")) {  // a sweep: figures per swept value ("VALUE SERIES" with a [sweep.series])
     ASSERT_TRUE(out.contains("sweep")) << "the case should be a sweep";
     for (const auto& [value, expected] : gold["runs"].items()) {
       bool found = false;
       for (const auto& run : out["sweep"]["runs"])
-        if (run["value"] == value) {
+        if ((run.contains("series") ? run["value"].get<std::string>() + " " + run["series"].get<std::string>()
+                                    : run["value"].get<std::string>()) == value) {
           compare(run["results"], expected, file.filename().string() + " at " + value);
           found = true;
         }

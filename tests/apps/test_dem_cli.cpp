@@ -56,3 +56,36 @@ TEST(DemCli, BadInputNamesTheKeyAndExitsWithTwo) {
   EXPECT_THAT(r.err, HasSubstr("SiO2"));
   EXPECT_FALSE(fs::exists(work / "bad" / "junction.dump"));
 }
+
+// Silent garbage is refused (#17, #18): a lattice whose second neighbours
+// fall within the cohesive reach exits 2 with the smallest valid d0 (it
+// reported ν = 2.2), a sample that never comes to rest exits 1 (it reported
+// E = 0.71, ν = 0.25); neither writes a result.
+TEST(DemCli, PatchTestRefusesGarbageInsteadOfReportingIt) {
+  fs::create_directories(work);
+  auto r = run_cli("dem patch-test --nu 0.1 --d0 70 --length 8 --no-strengths --out near --json", work);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_THAT(r.err, HasSubstr("second neighbours"));
+  EXPECT_THAT(r.err, HasSubstr("d0 ≥ 74.99"));
+  EXPECT_FALSE(fs::exists(work / "near" / "patch_test.json"));
+  r = run_cli("dem patch-test --length 8 --no-strengths --set dem.patch_test.time_step=0.4 --out hot --json", work);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_THAT(r.err, HasSubstr("numerical failure"));
+  EXPECT_FALSE(fs::exists(work / "hot" / "patch_test.json"));
+}
+
+// nano/dem's Si keys (#18): `amorphous` names case materials (or "none"),
+// `max_poisson` stays at most the pair force's 1/4; refused before any run.
+TEST(DemCli, NanoDemRefusesUnknownAmorphousMaterialsAndPoissonAboveAQuarter) {
+  fs::create_directories(work);
+  const std::string si = "run '" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/junction_sio2_si.toml' --out bad_si";
+  auto r = run_cli(si + " --set scale.nano.amorphous=Unobtainium", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("scale.nano.amorphous"));
+  EXPECT_THAT(r.err, HasSubstr("no material 'Unobtainium'"));
+  r = run_cli(si + " --set scale.nano.max_poisson=0.3", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("scale.nano.max_poisson"));
+  EXPECT_THAT(r.err, HasSubstr("(-1, 0.25]"));
+  EXPECT_FALSE(fs::exists(work / "bad_si" / "summary.json"));
+}

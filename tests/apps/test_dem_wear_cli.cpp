@@ -32,7 +32,7 @@ TEST(DemWearCli, RoughShearRefusesBadKeysWithTheAllowedRange) {
   EXPECT_THAT(r.err, HasSubstr("dem.rough_shear.roughness"));
   EXPECT_THAT(r.err, HasSubstr("0.5"));
   EXPECT_THAT(r.err, HasSubstr("[0, 0.1]"));
-  r = run_cli(rough + " --set 'dem.rough_shear.depth=\"5 nm\"'", work);  // < 2.8 d_l = 10.5 nm
+  r = run_cli(rough + " --set 'dem.rough_shear.depth=\"3 nm\"'", work);  // < d_l = 3.75 nm, the largest particle
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("dem.rough_shear.depth"));
   r = run_cli(rough + " --set dem.rough_shear.hurts=0.7", work);  // a typo is not a default

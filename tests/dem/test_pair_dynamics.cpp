@@ -10,6 +10,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "shaken_hcp_block.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
@@ -40,7 +41,7 @@ Simulation pair(double gap, double v, CohesiveLaw law, Box box = open_box(), Vec
   return Simulation(std::move(p), box, std::move(law), NeighborSettings{2.0, 0, true});
 }
 
-double critical_step(const Simulation& s) { return std::get<CohesiveLaw>(s.law()).critical_time_step(s.particles()); }
+using test_support::critical_step;
 
 }  // namespace
 
@@ -146,15 +147,7 @@ namespace {
 // too. d = 100 lies in [d_min, d_c] = [30, 150], so second neighbours (gap
 // 41) are beyond δ_f = 30 and the touching lattice is at equilibrium.
 Simulation shaken_block(double restitution, double step_fraction) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double radius = 50.0;
-  HcpLattice lattice{2.0 * radius, 4, 3, 3};
-  Particles p;
-  for (const auto& x : lattice.sites()) p.add({x, radius, 1.0, {0.02 * u(rng), 0.02 * u(rng), 0.02 * u(rng)}, 0, 0});
-  Simulation sim(std::move(p), lattice.box(), CohesiveLaw({table_6_4(restitution)}), NeighborSettings{2.0, 0, true});
-  sim.set_time_step(step_fraction * critical_step(sim));
-  return sim;
+  return test_support::shaken_hcp_block(4, 3, 3, table_6_4(restitution), step_fraction, 7);
 }
 }  // namespace
 

@@ -85,6 +85,39 @@ TEST(SimulationState, ARunSavedBeforeItsFirstStepStartsLikeANewOne) {
   expect_same_state(straight, resumed);
 }
 
+// A state saved before lists knew several periodic images (format 1: shift
+// indices into the 27 nearest images, no "images" entry) still resumes bit
+// for bit.
+TEST(SimulationState, AStateOfFormatOneResumesBitForBit) {
+  Simulation straight = stirred_block();
+  straight.run(300);
+  Simulation first = stirred_block();
+  first.run(170);
+  CheckpointState saved;
+  first.save_state(saved);
+  PeriodicImages now;
+  const auto& reach = saved.array("dem.list.images");
+  for (std::size_t a = 0; a < 3; ++a) now.reach[a] = static_cast<int>(reach[a]);
+  const PeriodicImages nearest;  // the 27 of format 1
+  CheckpointState old;
+  for (const auto& [name, values] : saved.arrays()) {
+    if (name == "dem.list.images") continue;
+    std::vector<double> v = values;
+    if (name == "dem.list.shifts")
+      for (double& s : v) {
+        const auto shift = now.shift(static_cast<std::uint8_t>(s));
+        s = nearest.index(shift[0], shift[1], shift[2]);
+      }
+    old.put(name, v);
+  }
+  for (const auto& [name, text] : saved.texts()) old.put_text(name, text);
+  old.put_text("dem.format", "wearscale-dem-state-1");
+  Simulation resumed = make_anchor_block({4, 10});
+  resumed.restore_state(old);
+  resumed.run(130);
+  expect_same_state(straight, resumed);
+}
+
 TEST(SimulationState, RefusesAStateThatIsNotADemState) {
   Simulation sim = stirred_block();
   CheckpointState other;

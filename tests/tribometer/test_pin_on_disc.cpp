@@ -11,20 +11,16 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
+#include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
 using namespace wearscale::tribometer;
 
 namespace {
-const materials::StrengthLaw si(materials::shipped_table("thesis", "Si"));
-const materials::StrengthLaw sio2(materials::shipped_table("thesis", "SiO2"));
-
 PinOnDiscSetup thesis(double layer, double distance) {
-  PinOnDiscSetup s;
-  s.on_layer = materials::interface_law("SiO2", sio2, "SiO2", sio2);
-  s.on_substrate = materials::interface_law("SiO2", sio2, "Si", si);
-  s.layer_thickness = layer;
+  PinOnDiscSetup s = test_support::thesis_setup(layer);
   s.distance = distance;
   return s;
 }
@@ -36,11 +32,17 @@ std::vector<PinOnDiscSample> run(const PinOnDiscSetup& s) {
   return out;
 }
 
-double mean_friction(const std::vector<PinOnDiscSample>& x) {
-  double sum = 0.0;
-  for (const auto& e : x) sum += e.friction;
-  return sum / static_cast<double>(x.size());
+FrictionAverage average(const std::vector<PinOnDiscSample>& x) {
+  std::vector<double> s, integral;
+  for (const auto& e : x) {
+    s.push_back(e.distance);
+    integral.push_back(e.friction_integral);
+  }
+  return FrictionAverage(s, integral);
 }
+
+// μ averaged over the sliding distance (the integral the integrator carries).
+double mean_friction(const std::vector<PinOnDiscSample>& x) { return average(x).mean(x.front().distance, x.back().distance); }
 
 // First distance at which the pin touches the substrate.
 double transition(const std::vector<PinOnDiscSample>& x) {
@@ -48,6 +50,8 @@ double transition(const std::vector<PinOnDiscSample>& x) {
     if (e.substrate_contact > 0.0) return e.distance;
   return std::numeric_limits<double>::infinity();
 }
+
+double converged_transition(const PinOnDiscSetup& setup) { return test_support::converged_crossing(setup); }
 }  // namespace
 
 TEST(PinOnDisc, BareSiliconSlidesAtMuSiThroughout) {
@@ -101,21 +105,58 @@ TEST(PinOnDisc, ThickerOxideDelaysTheTransitionRaisesMuAndSparesTheDisc) {
   EXPECT_GT(thin.back().disc_wear, thick.back().disc_wear);
 }
 
-TEST(PinOnDisc, AdaptiveIntegrationFollowsTheExplicitCurveWithFewerSolves) {
-  const auto setup = thesis(0.5e-6, 0.05);
-  const auto explicit_run = run(setup);
+// The adaptive (implicit, ARKODE) integrator against the explicit thesis
+// step, converged (μ_mean within 0.1 % from dt = 0.02 s to 0.00125 s), on a
+// reduced grid through the oxide transition: μ_mean, μ_final (last 5 %), both
+// worn volumes within 1 %, the substrate reached within one explicit step of
+// where the explicit stepping converges to, at most a third of the contact
+// solves.
+class AdaptiveAgainstExplicit : public ::testing::TestWithParam<double> {};
+
+TEST_P(AdaptiveAgainstExplicit, AgreesWithinOnePercentWithAThirdOfTheContactSolves) {
+  auto setup = thesis(GetParam(), 0.2);
+  setup.grid = 64;
+  PinOnDisc stepped(setup);
+  std::vector<PinOnDiscSample> reference;
+  stepped.run([&](const PinOnDiscSample& x) { reference.push_back(x); });
   PinOnDisc model(setup);
   std::vector<PinOnDiscSample> adaptive;
   run_adaptive(model, {}, [&](const PinOnDiscSample& x) { adaptive.push_back(x); });
-  EXPECT_NEAR(adaptive.back().distance, 0.05, 1e-12);
-  EXPECT_LT(model.contact_solves(), static_cast<int>(explicit_run.size()));
-  // Same wear and the same transition, to a few %.
-  const double v_exp = explicit_run.back().pin_wear + explicit_run.back().disc_wear;
-  const double v_ada = adaptive.back().pin_wear + adaptive.back().disc_wear;
-  EXPECT_NEAR(v_ada, v_exp, 0.03 * v_exp);
-  EXPECT_NEAR(transition(adaptive), transition(explicit_run), 0.005);
-  RecordProperty("explicit_solves", std::to_string(explicit_run.size()));
+  EXPECT_NEAR(adaptive.back().distance, 0.2, 1e-12);
+  const auto window = final_window(0.0, 0.2, 0.0);
+  const auto a = average(adaptive), e = average(reference);
+  EXPECT_NEAR(a.mean(0.0, 0.2), e.mean(0.0, 0.2), 0.01 * e.mean(0.0, 0.2));
+  EXPECT_NEAR(a.mean(window.from, window.to), e.mean(window.from, window.to), 0.01 * e.mean(window.from, window.to));
+  EXPECT_NEAR(adaptive.back().pin_wear, reference.back().pin_wear, 0.01 * reference.back().pin_wear);
+  EXPECT_NEAR(adaptive.back().disc_wear, reference.back().disc_wear, 0.01 * reference.back().disc_wear);
+  const double explicit_step = setup.velocity * setup.time_step;
+  EXPECT_NEAR(transition(adaptive), converged_transition(setup), explicit_step);
+  // Not against the thesis step's own crossing: its chattering contact and
+  // FFTW's measured plans (chosen by timing, so by the machine's load) move
+  // it by up to two steps from run to run (here 39.84 and 40.16 mm at 1 µm).
+  EXPECT_LE(3 * model.contact_solves(), stepped.contact_solves());
+  RecordProperty("explicit_solves", std::to_string(stepped.contact_solves()));
   RecordProperty("adaptive_solves", std::to_string(model.contact_solves()));
+}
+
+INSTANTIATE_TEST_SUITE_P(OxideThickness, AdaptiveAgainstExplicit, ::testing::Values(0.5e-6, 1e-6),
+                         [](const auto& p) { return p.param < 0.75e-6 ? "half_micron" : "one_micron"; });
+
+TEST(PinOnDisc, AdaptiveStepsResolveARotatingTiltAndRefuseAResolvedTrack) {
+  auto setup = thesis(2e-6, 0.02);
+  setup.grid = 32;
+  setup.nonplanar_slope = 0.02;
+  EXPECT_DOUBLE_EQ(adaptive_step_cap(setup, {}), 0.05 / 20);
+  PinOnDisc model(setup);
+  double previous = 0.0, widest = 0.0;
+  run_adaptive(model, {}, [&](const PinOnDiscSample& x) {
+    widest = std::max(widest, x.distance - previous);
+    previous = x.distance;
+  });
+  EXPECT_LE(widest, 0.05 / 20 * (1 + 1e-9));
+  setup.track = Track::Resolved;
+  PinOnDisc resolved(setup);
+  EXPECT_THROW(run_adaptive(resolved, {}, [](const PinOnDiscSample&) {}), InputError);
 }
 
 TEST(PinOnDisc, BadParametersAreRefusedByName) {

@@ -15,6 +15,7 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
+#include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 
 namespace wearscale::coupling {
@@ -46,6 +47,16 @@ class MacroPinOnDisc final : public Scale {
     s_.time_step = c.number_or("time_step", 0.02, Range::open_closed(0.0, s_.distance / s_.velocity), units::time);
     s_.nonplanar_slope = c.number_or("nonplanarity.slope", 0.0, Range::closed_open(0.0, 0.2));
     s_.nonplanar_period = c.number_or("nonplanarity.period", 0.05, Range::positive(), units::length);
+    // Which material the pin meets: the worn disc's depth ("disc", physical),
+    // or with the tilt added ("tilted", the reading that reproduces Figs. 9.23-9.25).
+    s_.layer_test = c.choice_or("nonplanarity.layer_test", "disc", {"disc", "tilted"}) == "tilted"
+                        ? tribometer::LayerTest::Tilted
+                        : tribometer::LayerTest::Disc;
+    // The disc track: averaged along the sliding direction (§9.3.2) or the
+    // whole circumference resolved (the wear where the pin is, the tilt turning
+    // with the disc, once per revolution).
+    s_.track = c.choice_or("track", "averaged", {"averaged", "resolved"}) == "resolved" ? tribometer::Track::Resolved
+                                                                                        : tribometer::Track::Averaged;
     s_.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1e-3));
     s_.boundary = c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? bem::Boundary::Free
                                                                                    : bem::Boundary::Periodic;
@@ -61,6 +72,8 @@ class MacroPinOnDisc final : public Scale {
     adaptive_.absolute_tolerance =
         c.number_or("adaptive.atol", defaults.absolute_tolerance, Range::positive(), units::length);
     adaptive_.max_step = c.number_or("adaptive.max_step", defaults.max_step, Range::positive(), units::length);
+    adaptive_.steps_per_period =
+        static_cast<int>(c.integer_or("adaptive.steps_per_period", defaults.steps_per_period, Range::closed(4, 10000)));
     fields_every_ = static_cast<std::size_t>(c.integer_or("fields_every", 0, Range::non_negative()));
     s_.validate();
     // Every step keeps a sample (the series, its copy in each checkpoint and in run.h5): a time step
@@ -70,6 +83,29 @@ class MacroPinOnDisc final : public Scale {
                    fmt::format("{}: key '{}': {:.3g} steps of {:g} s over {:g} m", c.where("time_step"),
                                c.full_key("time_step"), steps, s_.time_step, s_.distance),
                    "a longer time_step or a shorter distance");
+    if (s_.track == tribometer::Track::Resolved) {
+      const double revolution = s_.tilt_period();
+      const double cell = s_.size / static_cast<double>(s_.grid);
+      if (c.has("nonplanarity.period") &&
+          std::lround(s_.nonplanar_period / cell) != static_cast<long>(s_.track_cells()))  // not the same whole track
+        throw c.error("nonplanarity.period",
+                      fmt::format("a resolved track's tilt turns with the disc, once per revolution ({:g} m: "
+                                  "path_length on the {}-cell track)",
+                                  revolution, s_.track_cells()),
+                      fmt::format("absent, or {:g} m", revolution));
+      if (integrator_ == "adaptive")
+        throw c.error("integrator", "a resolved track deposits the wear along the path each step sweeps",
+                      "\"explicit\" with track = \"resolved\"");
+      log::warn("{}: track = \"resolved\" is not converged in the time step on a layered disc (μ_mean 17 % above the "
+                "averaged track at dt = 0.005 s, n = 128; docs/pin_on_disc.md): its figures show the mechanism, not "
+                "numbers to quote",
+                c.full_key("track"));
+    }
+    // The moving average of friction.csv and friction.png (Fig. 9.23): one
+    // tilt period when there is a tilt, else a twentieth of the distance.
+    const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
+    moving_window_ = c.number_or("moving_average", tilt > 0.0 ? tilt : s_.distance / 20.0, Range::positive(),
+                                 units::length);
   }
 
   std::vector<Key> consumes() const override {
@@ -152,6 +188,7 @@ class MacroPinOnDisc final : public Scale {
     progress.finish();
     report(ctx, model, samples);
     write_fields(ctx, model.grid(), snapshot(model, "/macro/final"));
+    write_disc(ctx, model);
     XdmfSidecar(model.grid())
         .add(ctx.h5(), snapshot_fields("/macro/final"))
         .write(ctx.output_dir() / "final_surfaces.xdmf", ctx.h5().final_path());
@@ -169,12 +206,13 @@ class MacroPinOnDisc final : public Scale {
   // Surfaces and pressure at one distance (fields_every, and the final state).
   struct Snapshot {
     std::string group;
-    std::vector<double> pin, disc, pressure;  // pin and pressure n×n, disc one value per x column
+    std::vector<double> pin, disc, pressure;  // n×n each: the disc as the pin's window sees it
     double distance = 0.0;                    // sliding distance [m]
   };
 
   static Snapshot snapshot(const tribometer::PinOnDisc& model, std::string group) {
-    return {std::move(group), {model.pin_surface().begin(), model.pin_surface().end()}, model.disc_profile(),
+    const RealField disc = model.disc_under_pin();
+    return {std::move(group), {model.pin_surface().begin(), model.pin_surface().end()}, {disc.begin(), disc.end()},
             {model.contact().pressure().begin(), model.contact().pressure().end()}, model.distance()};
   }
 
@@ -187,8 +225,7 @@ class MacroPinOnDisc final : public Scale {
     RealField pin(g), disc(g), pressure(g);
     std::copy(snap.pin.begin(), snap.pin.end(), pin.begin());
     std::copy(snap.pressure.begin(), snap.pressure.end(), pressure.begin());
-    for (std::size_t i = 0; i < g.nx; ++i)
-      for (std::size_t j = 0; j < g.ny; ++j) disc(i, j) = snap.disc[i];
+    std::copy(snap.disc.begin(), snap.disc.end(), disc.begin());  // the disc under the pin's window
     ctx.h5().write_field(snap.group + "/pin", pin, "m");
     ctx.h5().write_field(snap.group + "/disc", disc, "m");
     ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa");
@@ -197,26 +234,57 @@ class MacroPinOnDisc final : public Scale {
     if (series != nullptr) series->add_step(ctx.h5(), snap.distance, snapshot_fields(snap.group));
   }
 
-  // The samples so far as columns of the checkpoint, and back.
-  static void save_samples(CheckpointState& st, const std::vector<tribometer::PinOnDiscSample>& x) {
-    std::vector<double> c[9];
-    for (const auto& e : x) {
-      const double row[9] = {e.distance,      e.friction,          e.pin_wear,     e.disc_wear, e.contact_fraction,
-                             e.layer_contact, e.substrate_contact, e.max_pressure, static_cast<double>(e.iterations)};
-      for (int k = 0; k < 9; ++k) c[k].push_back(row[k]);
+  // The final disc: its mean profile across the track (one value per x, the
+  // grooves) and, for a resolved track, the whole circumference.
+  void write_disc(RunContext& ctx, const tribometer::PinOnDisc& model) const {
+    const Grid2D& g = model.grid();
+    const auto profile = model.disc_column_means();
+    std::vector<double> x(g.nx), depth(g.nx), through(g.nx);
+    for (std::size_t i = 0; i < g.nx; ++i) {
+      x[i] = g.x(i) - 0.5 * g.lx;
+      depth[i] = -profile[i];
+      through[i] = std::isfinite(s_.layer_thickness) && depth[i] > s_.layer_thickness ? 1.0 : 0.0;
     }
-    for (int k = 0; k < 9; ++k) st.put(std::string("samples/") + kSampleColumns[k], c[k]);
+    ctx.h5().write_table("/macro/final/disc_profile", {"x", "worn_depth", "through_layer"}, {x, depth, through},
+                         {"m", "m", "1"});
+    const auto csv = ctx.output_dir() / "disc_profile.csv";
+    write_csv(csv, {"x_m", "worn_depth_m", "through_layer"}, {x, depth, through},
+              {"macro/bem-pin-on-disc: final worn depth of the disc across the track (mean along it); "
+               "through_layer = 1 where the oxide is worn through (a groove)"});
+    ctx.add_file(csv);
+    if (s_.track == tribometer::Track::Resolved) {
+      const std::size_t cells = s_.track_cells();
+      const Grid2D strip(g.nx, cells, g.lx, static_cast<double>(cells) * g.dx());
+      RealField disc(strip);
+      std::copy(model.disc_profile().begin(), model.disc_profile().end(), disc.begin());
+      ctx.h5().write_field("/macro/final/disc_track", disc, "m");
+    }
+  }
+
+  // The samples so far as columns of the checkpoint, and back.
+  static constexpr int kColumns = 11;
+  static void save_samples(CheckpointState& st, const std::vector<tribometer::PinOnDiscSample>& x) {
+    std::vector<double> c[kColumns];
+    for (const auto& e : x) {
+      const double row[kColumns] = {e.distance,         e.friction,      e.friction_integral,
+                                    e.pin_wear,         e.disc_wear,     e.contact_fraction,
+                                    e.layer_contact,    e.substrate_contact, e.max_pressure,
+                                    static_cast<double>(e.iterations), static_cast<double>(e.grooves)};
+      for (int k = 0; k < kColumns; ++k) c[k].push_back(row[k]);
+    }
+    for (int k = 0; k < kColumns; ++k) st.put(std::string("samples/") + kSampleColumns[k], c[k]);
   }
 
   static std::vector<tribometer::PinOnDiscSample> load_samples(const CheckpointState& st) {
-    const std::vector<double>* c[9];
-    for (int k = 0; k < 9; ++k) c[k] = &st.array(std::string("samples/") + kSampleColumns[k]);
+    const std::vector<double>* c[kColumns];
+    for (int k = 0; k < kColumns; ++k) c[k] = &st.array(std::string("samples/") + kSampleColumns[k]);
     std::vector<tribometer::PinOnDiscSample> x(c[0]->size());
-    for (int k = 1; k < 9; ++k)
+    for (int k = 1; k < kColumns; ++k)
       if (c[k]->size() != x.size()) throw InputError(fmt::format("{}: sample columns of different lengths", st.origin));
     for (std::size_t r = 0; r < x.size(); ++r)
-      x[r] = {(*c[0])[r], (*c[1])[r], (*c[2])[r], (*c[3])[r], (*c[4])[r],
-              (*c[5])[r], (*c[6])[r], (*c[7])[r], static_cast<int>((*c[8])[r])};
+      x[r] = {(*c[0])[r], (*c[1])[r], (*c[2])[r], (*c[3])[r],  (*c[4])[r],
+              (*c[5])[r], (*c[6])[r], (*c[7])[r], (*c[8])[r], static_cast<int>((*c[9])[r]),
+              static_cast<int>((*c[10])[r])};
     return x;
   }
 
@@ -247,47 +315,63 @@ class MacroPinOnDisc final : public Scale {
     return out;
   }
 
-  static constexpr const char* kSampleColumns[9] = {"distance",          "friction",     "pin_wear",
-                                                    "disc_wear",         "contact_fraction", "layer_contact",
-                                                    "substrate_contact", "max_pressure", "iterations"};
+  static constexpr const char* kSampleColumns[kColumns] = {
+      "distance",      "friction",          "friction_integral", "pin_wear",   "disc_wear", "contact_fraction",
+      "layer_contact", "substrate_contact", "max_pressure",      "iterations", "grooves"};
 
   void report(RunContext& ctx, const tribometer::PinOnDisc& model, const std::vector<tribometer::PinOnDiscSample>& x) {
-    std::vector<double> s, mu, v_pin, v_disc, area, on_layer, iterations;
+    std::vector<double> s, mu, integral, v_pin, v_disc, area, on_layer, iterations, grooves;
     for (const auto& e : x) {
       s.push_back(e.distance);
       mu.push_back(e.friction);
+      integral.push_back(e.friction_integral);
       v_pin.push_back(e.pin_wear);
       v_disc.push_back(e.disc_wear);
       area.push_back(e.contact_fraction);
       on_layer.push_back(e.layer_contact);
       iterations.push_back(e.iterations);
+      grooves.push_back(e.grooves);
     }
-    ctx.h5().write_table("/macro/series", {"distance", "friction", "pin_wear", "disc_wear", "contact_fraction",
-                                           "layer_share", "bem_iterations"},
-                         {s, mu, v_pin, v_disc, area, on_layer, iterations}, {"m", "1", "m^3", "m^3", "1", "1", "1"});
+    // Every average of μ is over sliding distance, from the integral ∫μ ds the
+    // integrator carries (samples of an adaptive run are not evenly spaced).
+    const tribometer::FrictionAverage average(s, integral);
+    const auto smoothed = average.centred_moving_average(moving_window_);
+    ctx.h5().write_table("/macro/series",
+                         {"distance", "friction", "friction_moving_average", "friction_integral", "pin_wear",
+                          "disc_wear", "contact_fraction", "layer_share", "grooves", "bem_iterations"},
+                         {s, mu, smoothed, integral, v_pin, v_disc, area, on_layer, grooves, iterations},
+                         {"m", "1", "1", "m", "m^3", "m^3", "1", "1", "1", "1"});
     const auto csv = ctx.output_dir() / "friction.csv";
-    write_csv(csv, {"distance_m", "friction", "pin_wear_m3", "disc_wear_m3", "contact_fraction", "layer_share"},
-              {s, mu, v_pin, v_disc, area, on_layer},
-              {"macro/bem-pin-on-disc (§9.3.2): friction and wear volumes against sliding distance"});
+    write_csv(csv,
+              {"distance_m", "friction", "friction_moving_average", "pin_wear_m3", "disc_wear_m3", "contact_fraction",
+               "layer_share", "grooves"},
+              {s, mu, smoothed, v_pin, v_disc, area, on_layer, grooves},
+              {"macro/bem-pin-on-disc (§9.3.2): friction and wear volumes against sliding distance",
+               fmt::format("friction_moving_average: centred moving mean over {:g} m of sliding (Fig. 9.23)",
+                           moving_window_)});
     ctx.add_file(csv);
 
-    // Time average over the run (samples are uniform in s for the explicit
-    // integrator; weighted by the sample spacing otherwise) and the final value
-    // as the mean over the last 5 % of the distance (μ(s) is noisy, Fig. 9.20).
-    double integral = 0.0, tail = 0.0, tail_length = 0.0;
-    const double total = s.back() - s.front(), tail_start = s.back() - 0.05 * total;
-    for (std::size_t k = 1; k < s.size(); ++k) {
-      const double ds = s[k] - s[k - 1], m = 0.5 * (mu[k] + mu[k - 1]);
-      integral += m * ds;
-      if (s[k] > tail_start) tail += m * ds, tail_length += ds;
-    }
-    ctx.report("mu_mean", total > 0 ? integral / total : mu.front(), "1", "time-averaged friction coefficient");
-    ctx.report("mu_final", tail_length > 0 ? tail / tail_length : mu.back(), "1",
-               "friction coefficient over the last 5 % of the sliding distance");
+    const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
+    const double first = s.front(), last = s.back();
+    const bool moved = last > first;
+    const auto final_w = tribometer::final_window(first, last, tilt);
+    const auto initial_w = tribometer::initial_window(first, last, tilt);
+    ctx.report("mu_mean", moved ? average.mean(first, last) : mu.front(), "1",
+               "friction coefficient averaged over the sliding distance");
+    ctx.report("mu_final", moved ? average.mean(final_w.from, final_w.to) : mu.back(), "1",
+               "friction coefficient averaged over " + final_w.description);
+    ctx.report("mu_initial", moved ? average.mean(initial_w.from, initial_w.to) : mu.front(), "1",
+               "friction coefficient averaged over " + initial_w.description);
     ctx.report("pin_wear", v_pin.back(), "m^3", "worn volume of the pin");
     ctx.report("disc_wear", v_disc.back(), "m^3", "worn volume of the disc (whole track)");
     ctx.report("contact_solves", model.contact_solves(), "1", "BEM contact solves");
     ctx.report("distance", s.back(), "m", "sliding distance covered");
+    if (std::isfinite(s_.layer_thickness) && s_.layer_thickness > 0.0) {
+      ctx.report("grooves", x.back().grooves, "1",
+                 "grooves at the end: separate bands across the track where the oxide is worn through");
+      ctx.report("grooves_max", *std::max_element(grooves.begin(), grooves.end()), "1",
+                 "the most grooves at any point of the run");
+    }
     for (const auto& e : x)
       if (e.substrate_contact > 0.0 && std::isfinite(s_.layer_thickness) && s_.layer_thickness > 0.0) {
         ctx.report("substrate_reached_at", e.distance, "m", "sliding distance at which the pin first touches " + disc_);
@@ -301,6 +385,7 @@ class MacroPinOnDisc final : public Scale {
   std::string integrator_ = "explicit";
   tribometer::AdaptiveOptions adaptive_;
   std::size_t fields_every_ = 0;
+  double moving_window_ = 0.0;
 };
 
 }  // namespace

@@ -43,7 +43,7 @@ namespace fs = std::filesystem;
 using dem::JunctionStrengthResult;
 using dem::JunctionStrengthSpec;
 
-constexpr const char* cache_version = "wearscale-dem-junction-v2";
+constexpr const char* cache_version = "wearscale-dem-junction-v3";  // v3: thin cells, the tangential cap of the thesis code
 
 // --- One junction run, as stored in the cache --------------------------------
 
@@ -111,9 +111,12 @@ std::string run_key(const JunctionStrengthSpec& s) {
   const auto& c = s.cell;
   const std::string spec = fmt::format(
       "d0={:.17g} L={} H={} B={} gap={:.17g} wall={:.17g} D/L={:.17g} p={:.17g} v={:.17g} dt={:.17g} settle={:.17g} "
-      "slide={:.17g} steady={:.17g} every={}",
+      "slide={:.17g} steady={:.17g} every={}{}",
       c.d0, c.length, c.height, c.depth, c.gap, c.wall_thickness, s.contact_ratio, s.pressure, s.velocity, s.time_step,
-      s.settle_distance, s.sliding_distance, s.steady_from, s.record_every);
+      s.settle_distance, s.sliding_distance, s.steady_from, s.record_every,
+      s.arrangement == dem::Arrangement::Amorphous
+          ? fmt::format(" amorphous seed={} relax={:.17g}/{}", s.seed, s.relax_tolerance, s.max_relax_steps)
+          : std::string());
   return md::cache_key({cache_version, WEARSCALE_VERSION, material_text(s.top), material_text(s.bottom), spec});
 }
 
@@ -186,7 +189,7 @@ class NanoDem final : public Scale {
     cell.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
     cell.length = c.integer_or("length", 25, Range::closed(6, 400));
     cell.height = c.integer_or("height", 14, Range::closed(4, 400));
-    cell.depth = c.integer_or("depth", 2, Range::closed(2, 50));
+    cell.depth = c.integer_or("depth", 1, Range::closed(1, 50));
     cell.gap = c.number_or("gap", 0.25, Range::open(0.0, 0.8));
     cell.wall_thickness = c.number_or("wall_thickness", 1.5, Range::closed(0.5, 10.0));
     base_.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
@@ -195,6 +198,30 @@ class NanoDem final : public Scale {
     base_.sliding_distance = c.number_or("sliding_distance", 1.0, Range::positive());
     base_.steady_from = c.number_or("steady_from", 0.5, Range::closed_open(0.0, 1.0));
     base_.record_every = c.integer_or("record_every", 200, Range::at_least(1));
+    // Interfaces with a material listed here are built amorphous (§6.2.2)
+    // instead of on the HCP lattice of §7.1.1: the weakened, amorphous state
+    // the thesis suggests for Si (§9.3.3).
+    if (c.has("amorphous")) {
+      std::vector<std::string> names;
+      try {
+        names = c.values_as_text("amorphous");
+      } catch (const InputError&) {
+        // One name, or "none" (a case that lists some turned off by --set).
+        std::string one;
+        try {
+          one = c.string("amorphous");
+        } catch (const InputError&) {
+          throw c.error("amorphous", "not a list of material names", "[\"Si\", ...] or \"none\"");
+        }
+        if (one != "none") names.push_back(one);
+      }
+      for (const auto& name : names) {
+        if (!library_.contains(name))
+          throw c.error("amorphous", fmt::format("no material '{}'", name), "names of the case's materials, or \"none\"");
+        amorphous_.push_back(name);
+      }
+    }
+    base_.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
     ratios_ = c.has("contact_ratios") ? c.numbers("contact_ratios", Range::open_closed(0.0, 1.0))
                                       : std::vector<double>{0.25, 1.0};
     pressures_ = c.has("pressures") ? c.numbers("pressures", Range::non_negative(), units::pressure)
@@ -213,12 +240,18 @@ class NanoDem final : public Scale {
     scaling_exponent_ = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
     restitution_ = c.number_or("restitution", 0.9, Range::open_closed(0.0, 1.0));
     clamp_poisson_ = c.boolean_or("clamp_poisson", true);
+    // ν is modelled as at most this: at 1/4 the tangential cross section
+    // (6.52) vanishes and with it the tangential spring and F_m,T, so a
+    // material at the cap (Si, ν = 0.27) would carry no σ_m,T at all.
+    max_poisson_ = c.number_or("max_poisson", 0.25, Range::open_closed(-1.0, 0.25));
     for (const auto& name : case_materials(root, library_)) {
       const auto& m = library_.get(name);
-      if (m.poisson > 0.25 && !clamp_poisson_)
+      if (m.poisson > max_poisson_ && !clamp_poisson_)
         throw c.error("clamp_poisson",
-                      fmt::format("material '{}' has ν = {} and the DEM pair force gives ν ≤ 1/4 (6.52)", name, m.poisson),
-                      "true (model it with ν = 0.25)");
+                      fmt::format("material '{}' has ν = {} and the DEM models ν ≤ max_poisson = {} (the pair force "
+                                  "gives ν ≤ 1/4, (6.52))",
+                                  name, m.poisson, max_poisson_),
+                      fmt::format("true (model it with ν = {})", max_poisson_));
     }
 
     cache_ = c.boolean_or("cache", true);
@@ -249,6 +282,7 @@ class NanoDem final : public Scale {
           JunctionStrengthSpec s = base_;
           s.top = top.material;
           s.bottom = bottom.material;
+          s.arrangement = amorphous(i) ? dem::Arrangement::Amorphous : dem::Arrangement::Hcp;
           s.contact_ratio = ratio;
           s.pressure = p;
           specs.push_back(s);
@@ -294,6 +328,7 @@ class NanoDem final : public Scale {
 
       Provenance p = provenance_;
       p.parameters["particles"] = {{"top", top.description}, {"bottom", bottom.description}};
+      p.parameters["arrangement"] = amorphous(i) ? "amorphous (§6.2.2)" : "HCP lattice (§7.1.1)";
       p.parameters["fit"] = fit_json;
       nlohmann::json runs = nlohmann::json::array();
       for (const auto& [s, res, cached] : results)
@@ -314,6 +349,11 @@ class NanoDem final : public Scale {
   };
   using Run = std::tuple<JunctionStrengthSpec, JunctionStrengthResult, bool>;
 
+  bool amorphous(const Interface& i) const {
+    return std::find(amorphous_.begin(), amorphous_.end(), i.pin) != amorphous_.end() ||
+           std::find(amorphous_.begin(), amorphous_.end(), i.counterface) != amorphous_.end();
+  }
+
   // The DEM targets of a material: its record, with σ_m,T = σ_dyn (or σ_max)
   // of the molecular law at the working pressure — p_crit of (7.5) unless
   // given: the local pressure of a sliding junction flattened to A_min (7.6).
@@ -325,8 +365,8 @@ class NanoDem final : public Scale {
     auto& m = out.material;
     m = dem::cohesive_material(record, scaling_exponent_, record.restitution ? *record.restitution : restitution_);
     m.shear_strength = strength_ == "dynamic" ? law.sigma_dyn(p_work) : law.sigma_max(p_work);
-    const bool clamped = m.poisson > 0.25;
-    if (clamped) m.poisson = 0.25;  // central pair forces: ν ≤ 1/4 (6.52)
+    const bool clamped = m.poisson > max_poisson_;
+    if (clamped) m.poisson = max_poisson_;  // central pair forces: ν ≤ 1/4 (6.52)
     dem::require_modelled(m);
     out.description = {{"material", name}, {"young", m.young}, {"poisson", m.poisson},
                        {"poisson_record", record.poisson}, {"poisson_clamped", clamped},
@@ -463,7 +503,8 @@ class NanoDem final : public Scale {
     ctx.add_file(csv);
     if (auto png = plot_junction_strength(csv, ctx.output_dir() / ("junction_" + i.tag() + ".png"),
                                           fmt::format("{} junctions (§7.1.1) and the fitted model (7.9)-(7.10)", i.pair()),
-                                          ratios_, fit.shear_strength, fit.p_crit))
+                                          ratios_, fit.shear_strength, fit.p_crit,
+                                          runs.empty() ? 0.0 : std::get<1>(runs.front()).length))
       ctx.add_file(*png);
   }
 
@@ -474,10 +515,12 @@ class NanoDem final : public Scale {
   double e_star_ = 0.0;
   JunctionStrengthSpec base_;
   std::vector<double> ratios_, pressures_;
+  std::vector<std::string> amorphous_;
   std::string strength_;
   std::optional<double> working_pressure_;
   double scaling_exponent_ = 0.5, restitution_ = 0.9;
   bool clamp_poisson_ = true, cache_ = true;
+  double max_poisson_ = 0.25;
   fs::path cache_dir_;
   mutable std::mutex checkpoint_mutex_;  // junction runs save checkpoints from several threads
   int jobs_ = 1;

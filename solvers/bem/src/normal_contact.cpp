@@ -165,10 +165,10 @@ void NormalContact::preconditioned_direction(const ContactGap& gap, Iterate& sta
   d.slope = slope;
 }
 
-// Step length τ = Σ g t / Σ t (K t), the denominator by Parseval from the
+// Step length τ = Σ g t / Σ t (K t) (+ t A t with an added compliance), the denominator by Parseval from the
 // spectrum of t: one forward FFT instead of a full convolution.
 double NormalContact::step_length(const Descent& d, int iteration) {
-  const double tkt = body_.normal_form(t_, work_);
+  const double tkt = body_.normal_form(t_, work_) + (added_ != nullptr ? added_->quadratic_form(t_) : 0.0);
   // No descent direction (a contact of one point, or a flat gap on S) while
   // points outside still penetrate: admit them with a cell's own stiffness.
   const double tau =
@@ -248,6 +248,7 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   double first_error = 0.0;
   for (int it = 0; it < opt.max_iterations; ++it) {
     body_.normal_displacement(p_, u_, work_, state.alpha);  // u = K (α p)
+    if (added_ != nullptr) added_->add(p_, state.alpha, u_);  // + A (α p)
     const ContactGap gap = measure_gap(it);
     gap_shift_ = gap.mean;  // the last mean gap: carried across solves (warm start)
     Descent descent;

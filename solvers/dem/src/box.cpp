@@ -7,10 +7,13 @@ namespace wearscale::dem {
 int Box::wrap(int axis, double& coordinate) const {
   if (!periodic[static_cast<std::size_t>(axis)]) return 0;
   const double l = hi[axis] - lo[axis];
-  const double shifts = std::floor((coordinate - lo[axis]) / l);
+  double shifts = std::floor((coordinate - lo[axis]) / l);
   if (shifts == 0.0) return 0;
   coordinate -= shifts * l;
-  if (coordinate >= hi[axis]) coordinate = lo[axis];  // rounding at the upper edge
+  if (coordinate >= hi[axis]) {  // rounding at the upper edge: one period more
+    coordinate = lo[axis];
+    shifts += 1.0;
+  }
   return -static_cast<int>(shifts);
 }
 

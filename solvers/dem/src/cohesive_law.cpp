@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/particles.hpp"
 
@@ -40,11 +42,10 @@ CohesivePair cohesive_pair(const CohesiveMaterial& m, double r_i, double r_j, do
   p.k_t = tangential_cross_section(r_eff, m.poisson) * m.young / sum;  // (6.55)
   p.delta_f = fracture_separation(m, sum);
   p.delta_e = std::min(elastic_separation(m, sum), p.delta_f);
-  // (6.58), with the size effect (6.63) above d_c on the shear strength too,
-  // as the targets of Fig. 6.11 decrease with d0 for s > 0.
-  const double d_c = critical_diameter(m);
-  const double size_effect = sum > d_c ? std::pow(sum / d_c, -m.scaling_exponent) : 1.0;
-  p.f_mt = tangential_cross_section(r_eff, m.poisson) * m.shear_strength * size_effect;
+  // (6.58) at every size: the thesis' shear strengths follow (6.63) above
+  // d_c (Fig. 6.11) through δ_f, which shrinks the cap (6.5) sooner, not
+  // through F_m,T (as in its LAMMPS pair style gran/cohesive/history).
+  p.f_mt = tangential_cross_section(r_eff, m.poisson) * m.shear_strength;
   p.c_n = damping * std::sqrt(p.k_n * m_eff);                             // (6.59)
   p.c_t = damping * std::sqrt(std::max(p.k_t, 0.0) * m_eff);              // (6.60)
   return p;
@@ -67,6 +68,59 @@ double normal_energy(const CohesivePair& p, double delta_n) {
     return -0.5 * p.k_n * p.delta_e * gap * gap / (p.delta_f - p.delta_e);
   }
   return 0.5 * p.k_n * (delta_n * delta_n - p.delta_e * p.delta_f);
+}
+
+namespace {
+// The second-neighbour gap per unit spacing, compressed by `strain`.
+double second_neighbour_gap(double strain) { return std::numbers::sqrt2 * (1.0 - strain) - 1.0; }
+}  // namespace
+
+double smallest_hcp_spacing(const CohesiveMaterial& m, double strain) {
+  const double gap = second_neighbour_gap(strain);
+  if (!(gap > 0.0)) return std::numeric_limits<double>::infinity();
+  const double d_c = critical_diameter(m);
+  // Below d_c, δ_f = d_min is constant (6.57).
+  const double below = minimum_diameter(m) / gap;
+  if (below <= d_c) return below;
+  // Above d_c, δ_f = d (σ_m,N/E) (d/d_c)^(−s): beyond the gap once
+  // (d/d_c)^s ≥ (σ_m,N/E)/gap.
+  const double ratio = m.tensile_strength / m.young / gap;
+  if (ratio <= 1.0) return d_c;
+  if (!(m.scaling_exponent > 0.0)) return std::numeric_limits<double>::infinity();
+  return d_c * std::pow(ratio, 1.0 / m.scaling_exponent);
+}
+
+void require_hcp_spacing(const std::vector<CohesiveMaterial>& materials, double d0, const std::string& what,
+                         double strain) {
+  const double gap = second_neighbour_gap(strain) * d0;
+  double needed = 0.0;
+  const CohesiveMaterial* worst = nullptr;
+  double worst_reach = 0.0;
+  for (const auto& a : materials)
+    for (const auto& b : materials) {
+      const CohesiveMaterial m = mix(a, b);
+      needed = std::max(needed, smallest_hcp_spacing(m, strain));
+      const double reach = fracture_separation(m, d0);
+      if (gap < reach && reach > worst_reach) {  // at δ_N = δ_f the force has vanished
+        worst = &a;
+        worst_reach = reach;
+        if (a.name != b.name) worst = nullptr;  // an interface: named below
+      }
+    }
+  if (worst_reach == 0.0) return;
+  std::string allowed = "none for these materials (σ_m,N/E ≥ √2 − 1 with s = 0)";
+  if (std::isfinite(needed)) {
+    // Rounded up, so that the value shown is itself allowed.
+    const double unit = std::pow(10.0, std::floor(std::log10(needed)) - 3.0);
+    allowed = fmt::format("d0 ≥ {:.6g}", std::ceil(needed / unit) * unit);
+  }
+  const std::string compressed = strain > 0.0 ? fmt::format(" compressed by {:.3g} %", 100.0 * strain) : "";
+  throw InputError(fmt::format(
+      "{}: an HCP lattice of d0 = {:.6g}{}{} leaves its second neighbours (√2 d0 apart) a gap of {:.4g}, within the "
+      "cohesive reach δ_f = {:.4g}: they would attract in the softening branch of the force law, a negative "
+      "stiffness, and the lattice's E and ν would be meaningless. Allowed: {}",
+      what, d0, worst != nullptr ? " of " + worst->name : std::string(" (an interface)"), compressed, gap, worst_reach,
+      allowed));
 }
 
 double critical_time_step(double mass, double k_n) { return std::sqrt(2.0 * mass / k_n); }  // (6.6)

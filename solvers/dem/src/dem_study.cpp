@@ -44,14 +44,16 @@ void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cel
   cell.max_relax_steps = c.integer_or("max_relax_steps", 20000, Range::at_least(0));
 }
 
-// The cell size L × W × H: W at least twice the neighbour cutoff, L at least
+// The cell size L × W × H: W at least the largest particle, L at least
 // `min_length`, H at least `min_height`.
 Vec3 read_cell_box(const Config& c, const SlidingCellSpec& cell, double default_length, double min_length,
                    double default_height, double min_height) {
   const double d_l = cell.largest;
   Vec3 box;
   box.x = c.number_or("length", default_length, Range::at_least(min_length), units::length);
-  box.y = c.number_or("depth", 3.5 * cell.d0, Range::at_least(2.8 * d_l), units::length);
+  // Periodic down to the largest particle (a pair meets several images of a
+  // neighbour across a thinner-than-cutoff depth, neighbor_list.hpp).
+  box.y = c.number_or("depth", 3.5 * cell.d0, Range::at_least(d_l), units::length);
   box.z = c.number_or("height", default_height, Range::at_least(min_height), units::length);
   return box;
 }
@@ -167,7 +169,8 @@ CohesiveMaterial dem_material(const Config& root) {
     }
   }
   if (c.has("restitution")) m.restitution = c.number("restitution", Range{0.0, 1.0, true, false});
-  if (c.has("poisson")) m.poisson = c.number("poisson", Range::open_closed(-1.0, 0.25));  // central forces: ν ≤ 1/4
+  // Read over all ν > −1 so that ν in (1/4, 1/2] meets the reason below, not "(-1, 0.5)".
+  if (c.has("poisson")) m.poisson = c.number("poisson", Range::greater_than(-1.0));
   if (!(m.poisson <= 0.25))
     throw c.error("poisson",
                   fmt::format("ν = {} cannot be modelled by the DEM pair force: central pair forces give ν ≤ 1/4 "
@@ -188,7 +191,9 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
   spec.d0 = c.has("d0") ? c.number("d0", Range::positive(), unitless ? units::dimensionless : units::length) : 0.6 * d_c;
   spec.load_along_c_axis = c.boolean_or("load_along_c_axis", false);
   spec.length = c.number_or("length", 25.0, Range::closed(6.0, 400.0));
-  spec.width = c.number_or("width", 3.0, Range::closed(2.0, 100.0));
+  // At least the largest particle (1.25 d0, amorphous); an HCP sample takes
+  // whole cells of √(8/3) d0: 1.6 is one cell, the 2.4 nm depth of §7.1.1.
+  spec.width = c.number_or("width", 3.0, Range::closed(1.25, 100.0));
   spec.load = c.number_or("load", 0.01, Range::open(0.0, spec.material.tensile_strength / spec.material.young));
   spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
   spec.strain_rate = c.number_or("strain_rate", 1e-5, Range::open(0.0, 1e-2));

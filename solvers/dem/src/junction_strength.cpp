@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/dem/amorphous_sample.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
 #include "wearscale/dem/shapes.hpp"
@@ -25,9 +26,10 @@ void check(const JunctionStrengthSpec& s) {
   require_modelled(s.bottom);
   const auto& c = s.cell;
   if (!(c.d0 > 0.0) || !std::isfinite(c.d0)) refuse("d0", c.d0, "> 0");
+  if (s.arrangement == Arrangement::Hcp) require_hcp_spacing({s.top, s.bottom}, c.d0, "junction strength");
   if (c.length < 6) refuse("cell length (in d0)", c.length, "≥ 6");
   if (c.height < 4) refuse("cell height (in √3 d0)", c.height, "≥ 4");
-  if (c.depth < 2) refuse("cell depth (in HCP cells)", c.depth, "≥ 2 (periodic lengths must exceed twice the neighbour cutoff)");
+  if (c.depth < 1) refuse("cell depth (in HCP cells)", c.depth, "≥ 1");
   if (!(c.gap > 0.0 && c.gap < 0.8)) refuse("gap (fraction of the cell height)", c.gap, "(0, 0.8)");
   if (!(c.wall_thickness >= 0.5)) refuse("wall thickness (in d0)", c.wall_thickness, "≥ 0.5");
   const double h = c.height * std::sqrt(3.0) * c.d0;
@@ -84,6 +86,61 @@ Rigid2D rigid_fit_xz(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return out;
 }
 
+// The unbroken block the cell is carved from: its particles (masses at
+// `density`), periodic box across x and y, the height it fills from
+// `bottom`, and the level of the interface between the two surfaces.
+struct CellBlock {
+  Particles particles;
+  Box box;
+  double bottom = 0.0, height = 0.0, interface = 0.0, density = 0.0;
+};
+
+// The HCP block with its close-packed planes in x–z: lattice (x, y, z) →
+// world (x, z, y), so the lattice's c axis runs across the cell (y); the
+// interface lies midway between the two rows of sites around mid-height.
+CellBlock hcp_block(const JunctionStrengthSpec& spec) {
+  const auto& cell = spec.cell;
+  const double d0 = cell.d0;
+  HcpLattice lattice{d0, cell.length, cell.height, cell.depth};
+  const Box lb = lattice.box();
+  CellBlock out;
+  out.height = lb.hi.y - lb.lo.y;
+  out.density = spec.bottom.density;
+  std::vector<double> levels;
+  for (const Vec3& s : lattice.sites()) {
+    const Vec3 x{s.x, s.z - lb.lo.z, s.y};
+    out.particles.add({x, 0.5 * d0, out.density, {}, 0, 0});
+    levels.push_back(x.z);
+  }
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end(), [&](double a, double b) { return b - a < 1e-6 * d0; }),
+               levels.end());
+  const auto above_mid = std::upper_bound(levels.begin(), levels.end(), 0.5 * out.height);
+  out.interface = 0.5 * (*(above_mid - 1) + *above_mid);
+  out.box.lo = {0.0, 0.0, 0.0};
+  out.box.hi = {lb.hi.x - lb.lo.x, lb.hi.z - lb.lo.z, out.height};
+  return out;
+}
+
+// An amorphous block of the HCP cell's size (§6.2.2: sizes 0.75-1.25 d0
+// about d0, relaxed in a periodic box with the bottom material), cut open
+// across z; the interface at mid-height.
+CellBlock amorphous_block(const JunctionStrengthSpec& spec) {
+  const auto& cell = spec.cell;
+  const Vec3 hcp = HcpLattice{cell.d0, cell.length, cell.height, cell.depth}.cell();
+  const Vec3 size{cell.length * hcp.x, cell.depth * hcp.z, cell.height * hcp.y};
+  auto made = make_carving_sample(spec.bottom, cell.d0, 0.0, size, spec.seed, spec.relax_tolerance, spec.max_relax_steps);
+  CellBlock out;
+  out.particles = std::move(made.particles);
+  out.box = made.box;
+  out.density = spec.bottom.density;
+  const auto [lo, hi] = extent(out.particles, 2);
+  out.bottom = lo;
+  out.height = hi - lo;
+  out.interface = lo + 0.5 * out.height;
+  return out;
+}
+
 }  // namespace
 
 std::string JunctionStrengthResult::verdict() const {
@@ -117,47 +174,39 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   const double d0 = cell.d0;
   JunctionStrengthResult out;
 
-  // The HCP block with its close-packed planes in x–z: lattice (x, y, z) →
-  // world (x, z, y), so the lattice's c axis runs across the cell (y).
-  HcpLattice lattice{d0, cell.length, cell.height, cell.depth};
-  const Box lb = lattice.box();
-  const double length = lb.hi.x - lb.lo.x, depth = lb.hi.z - lb.lo.z;
-  const double height = lb.hi.y - lb.lo.y;
-  std::vector<Vec3> sites;
-  for (const Vec3& s : lattice.sites()) sites.push_back({s.x, s.z - lb.lo.z, s.y});
-  // The interface: midway between the two rows of sites around mid-height.
-  std::vector<double> levels;
-  for (const Vec3& s : sites) levels.push_back(s.z);
-  std::sort(levels.begin(), levels.end());
-  levels.erase(std::unique(levels.begin(), levels.end(), [&](double a, double b) { return b - a < 1e-6 * d0; }),
-               levels.end());
-  const auto above_mid = std::upper_bound(levels.begin(), levels.end(), 0.5 * height);
-  const double z_interface = 0.5 * (*(above_mid - 1) + *above_mid);
+  CellBlock block = spec.arrangement == Arrangement::Hcp ? hcp_block(spec) : amorphous_block(spec);
+  const double length = block.box.length().x, depth = block.box.length().y, height = block.height;
+  const double z_interface = block.interface;
   const double gap = cell.gap * height;
   const double diameter = spec.contact_ratio * length;
-  const double x_mid = 0.5 * length;
+  const double x_mid = block.box.lo.x + 0.5 * length;
 
   const bool two_materials = spec.top.name != spec.bottom.name;
   std::vector<CohesiveMaterial> table{spec.bottom};
   if (two_materials) table.push_back(spec.top);
-  Particles particles;
-  particles.reserve(sites.size());
-  for (const Vec3& s : sites) {
-    const bool in_gap = std::abs(s.z - z_interface) < 0.5 * gap;
-    const bool in_column = std::abs(s.x - x_mid) <= 0.5 * diameter + 1e-9 * d0 || spec.contact_ratio >= 1.0;
-    if (in_gap && !in_column) continue;
-    const bool top = s.z > z_interface;
-    Sphere sphere;
-    sphere.position = s;
-    sphere.radius = 0.5 * d0;
-    sphere.density = top ? spec.top.density : spec.bottom.density;
-    sphere.material = top && two_materials ? 1 : 0;
-    sphere.body = in_gap ? junction_body : (top ? top_body : bottom_body);
-    particles.add(sphere);
+  // The two surfaces and the junction column between them: the particles
+  // centred in the gap are removed but for those within D/2 of the middle.
+  Particles& particles = block.particles;
+  auto in_gap = [&](std::size_t i) { return std::abs(particles.position[i].z - z_interface) < 0.5 * gap; };
+  particles.remove_if([&](std::size_t i) {
+    const bool in_column =
+        std::abs(particles.position[i].x - x_mid) <= 0.5 * diameter + 1e-9 * d0 || spec.contact_ratio >= 1.0;
+    return in_gap(i) && !in_column;
+  });
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const bool top = particles.position[i].z > z_interface;
+    const CohesiveMaterial& m = top ? spec.top : spec.bottom;
+    particles.material[i] = top && two_materials ? 1 : 0;
+    particles.body[i] = in_gap(i) ? junction_body : (top ? top_body : bottom_body);
+    // The block's masses are those of its packing at the bottom material's
+    // density; each side takes its own.
+    particles.set_mass(i, particles.mass[i] * m.density / block.density);
+    particles.velocity[i] = {};
+    particles.omega[i] = {};
   }
-  Box box;
-  box.lo = {0.0, 0.0, -d0};
-  box.hi = {length, depth, height + d0};
+  Box box = block.box;
+  box.lo.z = block.bottom - d0;
+  box.hi.z = block.bottom + height + d0;
   box.periodic = {true, true, false};
 
   const auto [z_min, z_max] = extent(particles, 2);

@@ -7,6 +7,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
+#include "wearscale/dem/bonds.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/virial_stress.hpp"
@@ -189,6 +190,41 @@ Phase restore_measured(const CheckpointState& st, PatchTestResult& r) {
   return static_cast<Phase>(static_cast<int>(phase));
 }
 
+// Elastic constants are measured on a sample at rest under its load (a
+// sample still moving, heated by an unstable time step or behind a wall that
+// never stops, is a numerical failure) and, for a lattice, bonded to its
+// nearest neighbours only (a refusal naming the smallest valid d0).
+void check_elastic_result(const PatchTestSpec& spec, const PatchTestResult& r, const Loading& l, double strain) {
+  const std::string dt = fmt::format("{:g} Δt_c", spec.time_step);
+  if (!r.elastic_converged)
+    throw NumericalError("dem patch test", r.elastic_steps, "top wall displacement",
+                         fmt::format("still moving after {} steps under the load, the sample did not come to rest; "
+                                     "the time step {} may be unstable for this lattice (the thesis uses 0.1 Δt_c)",
+                                     r.elastic_steps, dt));
+  // The strain energy ½ σ ε V the load stored, against the kinetic energy left.
+  const double stored = 0.5 * spec.load * spec.material.young * std::fabs(strain) * l.area * l.height;
+  const double kinetic = l.sim.kinetic_energy();
+  if (!(kinetic <= 1e-6 * stored))
+    throw NumericalError("dem patch test", r.elastic_steps, "kinetic energy of the loaded sample",
+                         fmt::format("{:.3g}, {:.2g} of the strain energy {:.3g}: the wall stopped but the particles "
+                                     "still vibrate (at rest it is below 1e-6 of it); the time step {} is unstable for "
+                                     "this lattice (the thesis uses 0.1 Δt_c)",
+                                     kinetic, kinetic / stored, stored, dt));
+  if (!spec.amorphous) {
+    // In the loaded lattice each particle still bonds to its 12 nearest
+    // neighbours only: none pulled in a second neighbour.
+    const auto& p = l.sim.particles();
+    std::vector<int> bonds(p.size(), 0);
+    for (const auto& [i, j] : bonded_pairs(p, l.sim.box(), BondCriterion::cohesive(CohesiveLaw({spec.material}), 0.5 * spec.d0))) {
+      ++bonds[i];
+      ++bonds[j];
+    }
+    const int most = bonds.empty() ? 0 : *std::max_element(bonds.begin(), bonds.end());
+    if (most > 12)
+      require_hcp_spacing({spec.material}, spec.d0, "patch test", std::fabs(strain));
+  }
+}
+
 void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTestProgress& progress,
                   const RunCheckpoints& checkpoints, const CheckpointState* from) {
   const double pressure = spec.load * spec.material.young;
@@ -224,8 +260,10 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
   const double lateral = 0.5 * (s[0] + s[2]);  // σ_xx and σ_zz (equal for an isotropic sample)
   r.c11 = s[1] / strain;
   r.c12 = lateral / strain;
-  r.poisson = r.c12 / (r.c11 + r.c12);                                          // ν = C12/(C11 + C12)
-  r.young = r.c11 * (1.0 + r.poisson) * (1.0 - 2.0 * r.poisson) / (1.0 - r.poisson);  // E from C11, ν
+  check_elastic_result(spec, r, l, strain);
+  const auto constants = isotropic_constants(r.c11, r.c12, steps);
+  r.young = constants.young;
+  r.poisson = constants.poisson;
 }
 
 // Pulls (axis 1) or shears (axis 0) the top wall at the strain rate; the peak
@@ -267,6 +305,18 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, Pa
 
 }  // namespace
 
+IsotropicConstants isotropic_constants(double c11, double c12, long step) {
+  IsotropicConstants out;
+  out.poisson = c12 / (c11 + c12);                                                           // ν = C12/(C11 + C12)
+  out.young = c11 * (1.0 + out.poisson) * (1.0 - 2.0 * out.poisson) / (1.0 - out.poisson);  // E from C11, ν
+  if (!(out.young > 0.0) || !(out.poisson > -1.0 && out.poisson < 0.5))
+    throw NumericalError("dem patch test", step, "elastic constants",
+                         fmt::format("E = {:.4g}, ν = {:.4g} from C11 = {:.4g}, C12 = {:.4g}: an elastic solid has "
+                                     "E > 0 and -1 < ν < 0.5",
+                                     out.young, out.poisson, c11, c12));
+  return out;
+}
+
 PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress,
                                const RunCheckpoints& checkpoints) {
   require_modelled(spec.material);
@@ -275,6 +325,9 @@ PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgres
   if (!(spec.load > 0.0 && spec.load < spec.material.tensile_strength / spec.material.young))
     throw InputError(fmt::format("patch test: load = {} E; allowed: 0 < load < σ_m,N/E = {}", spec.load,
                                  spec.material.tensile_strength / spec.material.young));
+  // The elastic test compresses the lattice by about load/E (C11 ≥ E for
+  // ν ≤ 1/4 and ν ≥ −1); the measured state is checked as well.
+  if (!spec.amorphous) require_hcp_spacing({spec.material}, spec.d0, "patch test", spec.load);
   PatchTestResult r;
   r.d_min = minimum_diameter(spec.material);
   r.d_c = critical_diameter(spec.material);

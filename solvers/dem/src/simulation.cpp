@@ -119,20 +119,29 @@ inline PairForce cohesive_pair_force(const CohesiveLaw& law, const CohesivePair&
   const double v_n = dot(vrel, n);
   out.force = (f_n - p.c_n * v_n) * n;  // (6.2), normal part; positive f_n pulls i toward j
   if (law.tangential && p.k_t > 0.0) {
+    // The sliding distance integrates the contact's tangential velocity and
+    // is turned into the current tangent plane; the total tangential force,
+    // spring and damping, is capped by F'_m,T (6.4)-(6.5), the spring
+    // stretched back to match, as in the thesis' LAMMPS pair style
+    // gran/cohesive/history (built on gran/hooke/history).
     const Vec3 v_t = vrel - v_n * n;
     Vec3 xi{hist[0], hist[1], hist[2]};
-    if (advance) {
-      // Keep the sliding distance in the current tangent plane, at its length.
-      const double before = norm(xi);
-      xi -= dot(xi, n) * n;
-      const double after = norm(xi);
-      if (after > 0.0) xi *= before / after;
-      xi += v_t * dt;
+    if (advance) xi += v_t * dt;
+    const bool sliding = dot(xi, xi) != 0.0;
+    if (advance) xi -= dot(xi, n) * n;
+    Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
+    const double cap = tangential_cap(p, delta_n);  // (6.4)-(6.5)
+    const double f2 = dot(f_t, f_t);
+    if (f2 > cap * cap) {
+      if (sliding) {
+        const double ratio = cap / std::sqrt(f2);
+        const Vec3 lag = v_t * (p.c_t / p.k_t);
+        xi = ratio * (xi + lag) - lag;
+        f_t *= ratio;
+      } else {
+        f_t = {};
+      }
     }
-    const double limit = tangential_cap(p, delta_n) / p.k_t;  // (6.4)-(6.5)
-    const double length = norm(xi);
-    if (length > limit) xi *= limit / length;
-    const Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
     if (advance) {
       hist[0] = xi.x;
       hist[1] = xi.y;
@@ -328,7 +337,7 @@ void Simulation::forces(bool advance) {
   std::fill(p.force.begin(), p.force.end(), Vec3{});
   std::fill(p.torque.begin(), p.torque.end(), Vec3{});
   if (track_virial_) std::fill(virial_.begin(), virial_.end(), SymTensor{});
-  shift_table_ = NeighborList::shift_vectors(box_);
+  neighbors_.shift_vectors(box_, shift_table_.data());
   std::visit(
       [&](const auto& law) {
         using L = std::decay_t<decltype(law)>;
@@ -468,7 +477,8 @@ double Simulation::potential_energy() const {
   const auto& sh = neighbors_.shifts();
   const auto& hist = neighbors_.history();
   if (off.size() != p.size() + 1) return 0.0;
-  const auto shifts = NeighborList::shift_vectors(box_);
+  std::array<Vec3, PeriodicImages::max_count> shifts{};
+  neighbors_.shift_vectors(box_, shifts.data());
   double e = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) {

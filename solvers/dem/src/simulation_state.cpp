@@ -12,7 +12,11 @@ namespace wearscale::dem {
 
 namespace {
 
-constexpr const char* kFormat = "wearscale-dem-state-1";
+// Format 2 adds the reach of the periodic images the neighbour list's shift
+// indices refer to (lists of thin periodic cells meet several images);
+// format 1 is read as its 27 nearest images.
+constexpr const char* kFormat = "wearscale-dem-state-2";
+constexpr const char* kFormat1 = "wearscale-dem-state-1";
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out;
@@ -62,13 +66,29 @@ void NeighborList::save(CheckpointState& out, const std::string& prefix) const {
   out.put(prefix + "offsets", as_doubles(offset_));
   out.put(prefix + "neighbors", as_doubles(neighbor_));
   out.put(prefix + "shifts", as_doubles(shift_));
+  out.put(prefix + "images", std::vector<double>{double(images_.reach[0]), double(images_.reach[1]),
+                                                 double(images_.reach[2])});
   out.put(prefix + "history", history_);
   out.put(prefix + "built_at", flatten(built_at_));
   out.put(prefix + "half_skin", half_skin_);
   out.put(prefix + "builds", static_cast<double>(builds_));
 }
 
-void NeighborList::restore(const CheckpointState& in, const std::string& prefix, std::size_t particles) {
+void NeighborList::restore(const CheckpointState& in, const std::string& prefix, const Particles& p) {
+  const std::size_t particles = p.size();
+  images_ = PeriodicImages{};  // format 1: the 27 nearest images
+  if (in.has(prefix + "images")) {
+    const auto& reach = sized(in, prefix + "images", 3);
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (!(reach[a] >= 0.0 && reach[a] <= 127.0) || reach[a] != std::floor(reach[a]))
+        throw InputError(fmt::format("{}: DEM state entry '{}images' holds {}: not a reach of periodic images",
+                                     in.origin, prefix, reach[a]));
+      images_.reach[a] = static_cast<int>(reach[a]);
+    }
+    if (images_.count() > PeriodicImages::max_count)
+      throw InputError(fmt::format("{}: DEM state entry '{}images' names {} periodic images, more than {}", in.origin,
+                                   prefix, images_.count(), PeriodicImages::max_count));
+  }
   const std::size_t pairs = in.array(prefix + "neighbors").size();
   const bool built = !in.array(prefix + "offsets").empty();
   offset_.resize(built ? particles + 1 : 0);
@@ -87,10 +107,16 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
     if (j >= particles)
       throw InputError(fmt::format("{}: the DEM neighbour list in '{}' names particle {} of {}", in.origin, prefix, j,
                                    particles));
+  for (std::uint8_t s : shift_)
+    if (s >= images_.count())
+      throw InputError(fmt::format("{}: the DEM neighbour list in '{}' names periodic image {} of {}", in.origin,
+                                   prefix, s, images_.count()));
+  built_image_.assign(p.image.begin(), p.image.end());  // images change only at builds
   half_skin_ = in.scalar(prefix + "half_skin");
   builds_ = static_cast<long>(in.scalar(prefix + "builds"));
   old_offset_.clear();
   old_neighbor_.clear();
+  old_shift_.clear();
   old_history_.clear();
 }
 
@@ -147,8 +173,9 @@ void Simulation::save_state(CheckpointState& out) const {
 }
 
 void Simulation::restore_state(const CheckpointState& in) {
-  if (!in.has("dem.format") || in.text("dem.format") != kFormat)
-    throw InputError(fmt::format("{}: not a DEM state of this version (expected format '{}')", in.origin, kFormat));
+  if (!in.has("dem.format") || (in.text("dem.format") != kFormat && in.text("dem.format") != kFormat1))
+    throw InputError(fmt::format("{}: not a DEM state of this version (expected format '{}' or '{}')", in.origin,
+                                 kFormat, kFormat1));
   const std::size_t n = in.array("dem.radius").size();
   Particles& p = particles_;
   for (auto* v : {&p.position, &p.velocity, &p.omega, &p.force, &p.torque}) v->resize(n);
@@ -204,14 +231,14 @@ void Simulation::restore_state(const CheckpointState& in) {
     wall.displacement = vec(in, k + "displacement");
   }
 
-  neighbors_.restore(in, "dem.list.", n);
+  neighbors_.restore(in, "dem.list.", p);
   const auto& clock = sized(in, "dem.clock", 6);
   step_ = static_cast<long>(clock[0]);
   since_build_ = static_cast<long>(clock[1]);
   time_ = clock[2];
   dt_ = clock[3];
   global_damping_ = clock[5];
-  shift_table_ = NeighborList::shift_vectors(box_);
+  neighbors_.shift_vectors(box_, shift_table_.data());
   if (neighbors_.offsets().empty()) {
     forces_valid_ = false;  // saved before the first step: the list is built then
   } else {

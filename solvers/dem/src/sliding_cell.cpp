@@ -32,7 +32,7 @@ void check(const SlidingCellSpec& s, const char* study) {
   if (s.record_every < 1) refuse("record_every", static_cast<double>(s.record_every), "≥ 1");
   // The neighbour list needs periodic lengths of at least twice its cutoff.
   const double d_l = s.largest > 0.0 ? s.largest : 1.25 * s.d0;
-  if (s.box.y < 2.8 * d_l) refuse("cell depth W", s.box.y, fmt::format("≥ 2.8 d_l = {:.3g} m (twice the neighbour cutoff)", 2.8 * d_l));
+  if (s.box.y < d_l) refuse("cell depth W", s.box.y, fmt::format("≥ d_l = {:.3g} m (the largest particle)", d_l));
   if (s.box.x < 10.0 * s.d0) refuse("cell length L", s.box.x, fmt::format("≥ 10 d0 = {:.3g} m", 10.0 * s.d0));
 }
 

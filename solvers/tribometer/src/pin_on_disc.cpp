@@ -1,30 +1,34 @@
 #include "wearscale/tribometer/pin_on_disc.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "stage_compliance.hpp"
+#include "wear_share.hpp"
 #include "wearscale/core/errors.hpp"
 
 namespace wearscale::tribometer {
 
 namespace {
-constexpr const char* kModel = "tribometer/pin-on-disc";
+constexpr const char* kModel = kPinOnDiscModel;
 
 void require(bool ok, const char* key, double value, const char* allowed) {
   if (!ok) throw InputError(fmt::format("pin-on-disc: {} = {:g} is not allowed; allowed: {}", key, value, allowed));
 }
 
-// Share of an interface's wear taken by the pin: ½ on a like-on-like
-// interface (9.24), else all on the body whose junctions give way (9.26).
-double pin_share(const materials::InterfaceLaw& law) {
-  const auto slash = law.pair.find('/');
-  const std::string pin = law.pair.substr(0, slash), other = law.pair.substr(slash + 1);
-  if (pin == other) return 0.5;
-  return law.governing == pin ? 1.0 : 0.0;
+// ∫_{−∞}^{t} max(0, 1 − |u|) du: the overlap, integrated over the slide, of
+// a pin row with a strip cell (both one cell long) whose offset is u.
+double hat_integral(double t) {
+  if (t <= -1.0) return 0.0;
+  if (t <= 0.0) return 0.5 * (t + 1.0) * (t + 1.0);
+  if (t <= 1.0) return 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
+  return 1.0;
 }
 }  // namespace
+
 
 void PinOnDiscSetup::validate() const {
   require(grid >= 8 && grid <= 4096, "grid", static_cast<double>(grid), "8 to 4096 cells");
@@ -32,7 +36,8 @@ void PinOnDiscSetup::validate() const {
   require(pin_radius > size / std::sqrt(2.0), "pin_radius", pin_radius, "> size/√2 (the sphere must cover the window)");
   require(normal_load > 0.0 && std::isfinite(normal_load), "normal_load", normal_load, "> 0 N");
   require(velocity > 0.0 && std::isfinite(velocity), "velocity", velocity, "> 0 m/s");
-  require(path_length >= size, "path_length", path_length, "≥ size (the window is part of the path)");
+  require(path_length >= size && std::isfinite(path_length), "path_length", path_length,
+          "≥ size (the window is part of the path)");
   require(time_step > 0.0 && std::isfinite(time_step), "time_step", time_step, "> 0 s");
   require(distance > 0.0 && std::isfinite(distance), "distance", distance, "> 0 m");
   require(velocity * time_step <= distance * (1.0 + 1e-12), "time_step", time_step,
@@ -40,8 +45,12 @@ void PinOnDiscSetup::validate() const {
   require(layer_thickness >= 0.0, "layer_thickness", layer_thickness, "≥ 0 m or inf");
   require(e_star > 0.0 && std::isfinite(e_star), "e_star", e_star, "> 0 Pa");
   require(nonplanar_slope >= 0.0 && nonplanar_slope < 0.2, "nonplanarity.slope", nonplanar_slope, "[0, 0.2)");
-  require(nonplanar_period > 0.0, "nonplanarity.period", nonplanar_period, "> 0 m");
+  require(nonplanar_period > 0.0 && std::isfinite(nonplanar_period), "nonplanarity.period", nonplanar_period, "> 0 m");
   require(tolerance > 0.0 && tolerance < 1e-3, "tolerance", tolerance, "(0, 1e-3)");
+  require(max_iterations >= 1, "max_iterations", max_iterations, "≥ 1");
+  if (track == Track::Resolved)
+    require(static_cast<double>(grid) * path_length / size <= 1e6, "path_length", path_length,
+            "at most 10⁶ track cells along the circumference (resolved track)");
 }
 
 void PinOnDiscSetup::validate_laws() const {
@@ -51,11 +60,26 @@ void PinOnDiscSetup::validate_laws() const {
                                    law->pair, law->p_crit, law->mu0));
 }
 
+std::size_t PinOnDiscSetup::track_cells() const {
+  const double cells = std::round(path_length / (size / static_cast<double>(grid)));
+  return std::max(grid, static_cast<std::size_t>(cells));
+}
+
+double PinOnDiscSetup::tilt_period() const {
+  return track == Track::Resolved ? static_cast<double>(track_cells()) * size / static_cast<double>(grid)
+                                  : nonplanar_period;
+}
+
+PinOnDisc::~PinOnDisc() = default;
+
 PinOnDisc::PinOnDisc(const PinOnDiscSetup& setup)
-    : setup_((setup.validate(), setup.validate_laws(), setup)), pin_(Grid2D::square(setup.grid, setup.size)), profile_(pin_.grid()),
-      disc_(setup.grid, 0.0), contact_(RealField(pin_.grid()), setup.e_star, setup.boundary), pin_rate_(pin_.grid().size()),
-      disc_rate_(setup.grid) {
+    : setup_((setup.validate(), setup.validate_laws(), setup)), pin_(Grid2D::square(setup.grid, setup.size)),
+      profile_(pin_.grid()), contact_(RealField(pin_.grid()), setup.e_star, setup.boundary),
+      pin_rate_(pin_.grid().size()), layer_(pin_.grid().size(), 0) {
   const Grid2D& g = pin_.grid();
+  track_ = setup.track == Track::Resolved ? setup.track_cells() : 0;
+  disc_.assign(track_ > 0 ? g.nx * track_ : g.nx, 0.0);
+  disc_rate_.assign(track_ > 0 ? g.size() : g.nx, 0.0);
   const double r2max = setup.pin_radius * setup.pin_radius;
   for (std::size_t i = 0; i < g.nx; ++i)
     for (std::size_t j = 0; j < g.ny; ++j) {
@@ -64,34 +88,93 @@ PinOnDisc::PinOnDisc(const PinOnDiscSetup& setup)
     }
 }
 
+
+double PinOnDisc::disc_height(const double* disc, std::size_t i, std::size_t j, double s) const {
+  if (track_ == 0) return disc[i];
+  // The strip under window row j at s: linear between its two nearest cells.
+  const double at = static_cast<double>(j) + s / grid().dx();
+  const double base = std::floor(at), f = at - base;
+  const auto m = static_cast<std::size_t>(std::fmod(base, static_cast<double>(track_)));
+  const double* row = disc + i * track_;
+  return (1.0 - f) * row[m] + f * row[(m + 1) % track_];
+}
+
 void PinOnDisc::build_profile(double s) {
   const Grid2D& g = grid();
-  const double theta = 2.0 * std::numbers::pi * s / setup_.nonplanar_period;
+  const double theta = 2.0 * std::numbers::pi * s / setup_.tilt_period();
   const double tx = setup_.nonplanar_slope * std::cos(theta), ty = setup_.nonplanar_slope * std::sin(theta);
   for (std::size_t i = 0; i < g.nx; ++i) {
     const double x = g.x(i) - 0.5 * g.lx;
     for (std::size_t j = 0; j < g.ny; ++j) {
       const double y = g.y(j) - 0.5 * g.ly;
-      profile_(i, j) = disc_[i] + tx * x + ty * y - pin_(i, j);  // h = z_disc − z_pin
+      profile_(i, j) = disc_height(disc_.data(), i, j, s) + tx * x + ty * y - pin_(i, j);  // h = z_disc − z_pin
     }
   }
 }
 
-void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pin_rate,
-                         std::vector<double>* disc_rate) {
+void PinOnDisc::classify(double s, const double* disc, std::vector<char>& layer) const {
   const Grid2D& g = grid();
-  if (!std::isfinite(s)) throw NumericalError(kModel, solves_, "sliding distance", fmt::format("s = {}", s));
-  build_profile(s);
+  const double h = setup_.layer_thickness;
+  const bool tilted = setup_.layer_test == LayerTest::Tilted && setup_.nonplanar_slope > 0.0;
+  const double theta = 2.0 * std::numbers::pi * s / setup_.tilt_period();
+  const double tx = tilted ? setup_.nonplanar_slope * std::cos(theta) : 0.0;
+  const double ty = tilted ? setup_.nonplanar_slope * std::sin(theta) : 0.0;
+  layer.resize(g.size());
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    const double x = g.x(i) - 0.5 * g.lx;
+    for (std::size_t j = 0; j < g.ny; ++j) {
+      const double y = g.y(j) - 0.5 * g.ly;
+      const double depth = -(disc_height(disc, i, j, s) + tx * x + ty * y);  // worn depth (with the tilt if "tilted")
+      layer[g.index(i, j)] = h > 0.0 && depth < h;  // still inside the oxide
+    }
+  }
+}
+
+std::vector<char> PinOnDisc::layer_cells(double s, const double* y) const {
+  std::vector<char> out;
+  classify(s, y + pin_.size(), out);
+  return out;
+}
+
+void PinOnDisc::depth_below_layer(const double* y, double* out) const {
+  const double* disc = y + pin_.size();
+  for (std::size_t i = 0; i < grid().nx; ++i) out[i] = -disc[i] - setup_.layer_thickness;
+}
+
+int PinOnDisc::count_grooves(const double* disc) const {
+  const double h = setup_.layer_thickness;
+  if (!std::isfinite(h)) return 0;
+  const Grid2D& g = grid();
+  int grooves = 0;
+  bool inside = false;
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    double z = 0.0;
+    if (track_ == 0) {
+      z = disc[i];
+    } else {
+      for (std::size_t m = 0; m < track_; ++m) z += disc[i * track_ + m];
+      z /= static_cast<double>(track_);
+    }
+    const bool through = -z > h;
+    grooves += through && !inside;
+    inside = through;
+  }
+  return grooves;
+}
+
+bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::ContactMethod method) {
+  const Grid2D& g = grid();
   for (std::size_t k = 0; k < profile_.size(); ++k)
     if (!std::isfinite(profile_[k]))
       throw NumericalError(kModel, solves_, "surface heights",
-                           fmt::format("{} at cell ({}, {}) at s = {:g} m (pin {}, disc {})", profile_[k], k / g.ny,
-                                       k % g.ny, s, pin_[k], disc_[k / g.ny]));
+                           fmt::format("{} at cell ({}, {}) at s = {:g} m (pin {})", profile_[k], k / g.ny, k % g.ny,
+                                       s, pin_[k]));
   contact_.set_surface(profile_);
   bem::ContactResult r;
   try {
-    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, 20000});
+    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, max_iterations, method});
   } catch (const NumericalError& e) {
+    contact_.set_added_compliance(nullptr);
     throw NumericalError(kModel, solves_, fmt::format("contact at s = {:g} m", s),
                          fmt::format("{} at iteration {}: {}: {}", e.solver(), e.step(), e.quantity(), e.detail()));
   }
@@ -107,43 +190,54 @@ void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pi
                                      "{:g} m, contact fraction {:.3g}); allowed: a window larger than the contact, "
                                      "i.e. a larger size",
                                      s, g.lx, r.contact_fraction));
+  return r;
+}
+
+// Friction, contact shares and wear rates of the pressure in contact_ on the
+// materials in layer_: pin rate per cell, disc rate per column (averaged) or
+// per window cell (resolved).
+void PinOnDisc::rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate) {
+  const Grid2D& g = grid();
   const double share_layer = pin_share(setup_.on_layer), share_substrate = pin_share(setup_.on_substrate);
   const double disc_scale = g.lx / setup_.path_length;  // the disc passes under the pin L/L_path of the time
   const RealField& p = contact_.pressure();
   double traction = 0.0, on_layer = 0.0, on_substrate = 0.0, p_max = 0.0, pin_volume = 0.0, disc_volume = 0.0;
-  if (disc_rate) std::fill(disc_rate->begin(), disc_rate->end(), 0.0);
+  double contacts_all = 0.0;
   for (std::size_t i = 0; i < g.nx; ++i) {
-    const bool layer = -disc_[i] < setup_.layer_thickness;  // worn depth still inside the oxide
-    const auto& law = layer ? setup_.on_layer : setup_.on_substrate;
-    const double share = layer ? share_layer : share_substrate;
     double column = 0.0;
     for (std::size_t j = 0; j < g.ny; ++j) {
       const std::size_t k = g.index(i, j);
+      const bool layer = layer_[k] != 0;
+      const auto& law = layer ? setup_.on_layer : setup_.on_substrate;
+      const double share = layer ? share_layer : share_substrate;
       const double pk = p[k];
       double rate = 0.0;
       if (pk > 0.0) {
         traction += law.mu0 * pk;                   // p_T = μ0 p_N (9.12)
         rate = pk / law.p_crit;                     // dh/ds = p_N/p_crit (9.23)
         (layer ? on_layer : on_substrate) += 1.0;
+        contacts_all += 1.0;
         p_max = std::max(p_max, pk);
       }
       if (pin_rate) (*pin_rate)[k] = share * rate;  // (9.24), (9.26)
       pin_volume += share * rate;
       disc_volume += (1.0 - share) * rate;
       column += (1.0 - share) * rate;               // (9.25), (9.27)
+      if (disc_rate && track_ > 0) (*disc_rate)[k] = (1.0 - share) * rate;
     }
-    if (disc_rate) (*disc_rate)[i] = column / static_cast<double>(g.ny) * disc_scale;  // averaged along y
+    if (disc_rate && track_ == 0) (*disc_rate)[i] = column / static_cast<double>(g.ny) * disc_scale;  // averaged along y
   }
   const double contacts = on_layer + on_substrate;
   out.distance = s;
   out.friction = traction * g.cell_area() / setup_.normal_load;
-  out.contact_fraction = r.contact_fraction;
+  out.contact_fraction = contacts_all / static_cast<double>(g.size());
   out.layer_contact = contacts > 0 ? on_layer / contacts : 0.0;
   out.substrate_contact = contacts > 0 ? on_substrate / contacts : 0.0;
   out.max_pressure = p_max;
-  out.iterations = r.iterations;
   out.pin_wear = pin_wear_;
   out.disc_wear = disc_wear_;
+  out.friction_integral = friction_integral_;
+  out.grooves = count_grooves(disc_.data());
   last_pin_volume_rate_ = pin_volume * g.cell_area();
   last_disc_volume_rate_ = disc_volume * g.cell_area();
   if (!std::isfinite(out.friction) || !std::isfinite(last_pin_volume_rate_) || !std::isfinite(last_disc_volume_rate_))
@@ -152,17 +246,61 @@ void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pi
                                      last_pin_volume_rate_, last_disc_volume_rate_, s));
 }
 
+void PinOnDisc::evaluate(double s, PinOnDiscSample& out, std::vector<double>* pin_rate,
+                         std::vector<double>* disc_rate) {
+  if (!std::isfinite(s)) throw NumericalError(kModel, solves_, "sliding distance", fmt::format("s = {}", s));
+  build_profile(s);
+  classify(s, disc_.data(), layer_);
+  const auto r = solve_contact(s, setup_.max_iterations);
+  rates(s, out, pin_rate, disc_rate);
+  out.iterations = r.iterations;
+}
+
+// Resolved track: the wear of the window's cells over a slide from s0 to s1
+// deposited on the strip cells they passed over: strip cell m receives the
+// rate of row j times the overlap of the two cells integrated over the
+// slide, Δx [H(j + σ1 − m) − H(j + σ0 − m)] with σ = s/Δx (exact for a
+// pressure constant over the step; the depths sum to rate × (s1 − s0)).
+void PinOnDisc::deposit_swept(double s0, double s1) {
+  const Grid2D& g = grid();
+  const double dx = g.dx(), sigma0 = s0 / dx, sigma1 = s1 / dx;
+  const double base = std::floor(sigma0);
+  const double f0 = sigma0 - base, f1 = sigma1 - base;  // offsets from the strip cell under row 0
+  const auto first = static_cast<std::size_t>(std::fmod(base, static_cast<double>(track_)));
+  const int reach = static_cast<int>(std::ceil(f1)) + 1;  // strip cells ahead of a row that it touches
+  std::vector<double> kernel(static_cast<std::size_t>(reach) + 2);
+  for (int k = -1; k <= reach; ++k)  // m = j + first + k
+    kernel[static_cast<std::size_t>(k + 1)] = dx * (hat_integral(f1 - k) - hat_integral(f0 - k));
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    double* row = disc_.data() + i * track_;
+    for (std::size_t j = 0; j < g.ny; ++j) {
+      const double rate = disc_rate_[g.index(i, j)];
+      if (rate == 0.0) continue;
+      for (int k = -1; k <= reach; ++k) {
+        const auto m = (first + j + track_ + static_cast<std::size_t>(k + static_cast<int>(track_))) % track_;
+        row[m] -= rate * kernel[static_cast<std::size_t>(k + 1)];
+      }
+    }
+  }
+}
+
 PinOnDiscSample PinOnDisc::step() {
   PinOnDiscSample sample;
   evaluate(s_, sample, &pin_rate_, &disc_rate_);
   double ds = setup_.velocity * setup_.time_step;  // dh = rate · v dt (9.23)
   if (const double rest = setup_.distance - s_; rest > 0.0 && rest < ds * (1.0 - 1e-9)) ds = rest;  // lands on the distance
   for (std::size_t k = 0; k < pin_rate_.size(); ++k) pin_[k] += pin_rate_[k] * ds;
-  for (std::size_t i = 0; i < disc_.size(); ++i) disc_[i] -= disc_rate_[i] * ds;
+  if (track_ == 0) {
+    for (std::size_t i = 0; i < disc_.size(); ++i) disc_[i] -= disc_rate_[i] * ds;
+  } else {
+    deposit_swept(s_, s_ + ds);
+  }
   pin_wear_ += last_pin_volume_rate_ * ds;
   disc_wear_ += last_disc_volume_rate_ * ds;
+  friction_integral_ += sample.friction * ds;
   s_ += ds;
   ++steps_;
+  stage_valid_ = false;
   return sample;
 }
 
@@ -179,16 +317,44 @@ void PinOnDisc::run(const std::function<void(const PinOnDiscSample&)>& observe) 
   observe(last);
 }
 
+RealField PinOnDisc::disc_under_pin() const {
+  RealField out(grid());
+  for (std::size_t i = 0; i < grid().nx; ++i)
+    for (std::size_t j = 0; j < grid().ny; ++j) out(i, j) = disc_height(disc_.data(), i, j, s_);
+  return out;
+}
+
+std::vector<double> PinOnDisc::disc_column_means() const {
+  if (track_ == 0) return disc_;
+  std::vector<double> out(grid().nx, 0.0);
+  for (std::size_t i = 0; i < grid().nx; ++i) {
+    for (std::size_t m = 0; m < track_; ++m) out[i] += disc_[i * track_ + m];
+    out[i] /= static_cast<double>(track_);
+  }
+  return out;
+}
+
 void PinOnDisc::save(CheckpointState& state) const {
   state.put("pin_surface", std::span<const double>(pin_.data(), pin_.size()));
   state.put("disc_profile", disc_);
   state.put("distance", s_);
   state.put("pin_wear", pin_wear_);
   state.put("disc_wear", disc_wear_);
+  state.put("friction_integral", friction_integral_);
   state.put("steps", static_cast<double>(steps_));
   state.put("solves", static_cast<double>(solves_));
   state.put("contact_pressure", std::span<const double>(contact_.pressure().data(), contact_.pressure().size()));
   state.put("contact_gap_shift", contact_.warm_gap_shift());
+  state.put("stage_valid", stage_valid_ ? 1.0 : 0.0);
+  if (stage_valid_) {
+    const auto& x = stage_sample_;
+    state.put("stage_state", stage_state_);
+    state.put("stage_rate", stage_rate_);
+    state.put("stage_sample", std::vector<double>{stage_s_, x.distance, x.friction, x.friction_integral, x.pin_wear,
+                                                  x.disc_wear, x.contact_fraction, x.layer_contact,
+                                                  x.substrate_contact, x.max_pressure,
+                                                  static_cast<double>(x.iterations), static_cast<double>(x.grooves)});
+  }
 }
 
 void PinOnDisc::restore(const CheckpointState& state) {
@@ -196,8 +362,8 @@ void PinOnDisc::restore(const CheckpointState& state) {
   const auto& disc = state.array("disc_profile");
   const auto& p = state.array("contact_pressure");
   if (pin.size() != pin_.size() || disc.size() != disc_.size() || p.size() != pin_.size())
-    throw InputError(fmt::format("{}: a pin-on-disc state of {} pin cells, {} disc columns and {} pressures; the case "
-                                 "has {} pin cells ({}×{}) and {} disc columns",
+    throw InputError(fmt::format("{}: a pin-on-disc state of {} pin cells, {} disc profile values and {} pressures; "
+                                 "the case has {} pin cells ({}×{}) and {} disc profile values",
                                  state.origin, pin.size(), disc.size(), p.size(), pin_.size(), grid().nx, grid().ny,
                                  disc_.size()));
   for (const auto* v : {&pin, &disc})
@@ -208,9 +374,21 @@ void PinOnDisc::restore(const CheckpointState& state) {
   s_ = state.scalar("distance");
   pin_wear_ = state.scalar("pin_wear");
   disc_wear_ = state.scalar("disc_wear");
+  friction_integral_ = state.scalar("friction_integral");
   steps_ = static_cast<long>(state.scalar("steps"));
   solves_ = static_cast<int>(state.scalar("solves"));
   contact_.set_warm_start(p, state.scalar("contact_gap_shift"));
+  stage_valid_ = state.scalar("stage_valid") != 0.0;
+  if (stage_valid_) {
+    stage_state_ = state.array("stage_state");
+    stage_rate_ = state.array("stage_rate");
+    const auto& x = state.array("stage_sample");
+    if (stage_state_.size() != state_size() || stage_rate_.size() != state_size() || x.size() != 12)
+      throw InputError(fmt::format("{}: the saved implicit stage does not fit this case", state.origin));
+    stage_s_ = x[0];
+    stage_sample_ = {x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9], static_cast<int>(x[10]),
+                     static_cast<int>(x[11])};
+  }
 }
 
 std::vector<double> PinOnDisc::state() const {
@@ -218,25 +396,74 @@ std::vector<double> PinOnDisc::state() const {
   y.insert(y.end(), disc_.begin(), disc_.end());
   y.push_back(pin_wear_);
   y.push_back(disc_wear_);
+  y.push_back(friction_integral_);
   return y;
 }
 
+std::vector<double> PinOnDisc::initial_state() const {
+  PinOnDisc fresh(setup_);
+  return fresh.state();
+}
+
 void PinOnDisc::set_state(const double* y, double s) {
-  std::copy(y, y + pin_.size(), pin_.begin());
-  std::copy(y + pin_.size(), y + pin_.size() + disc_.size(), disc_.begin());
-  pin_wear_ = y[pin_.size() + disc_.size()];
-  disc_wear_ = y[pin_.size() + disc_.size() + 1];
+  const std::size_t np = pin_.size(), nd = disc_.size();
+  std::copy(y, y + np, pin_.begin());
+  std::copy(y + np, y + np + nd, disc_.begin());
+  pin_wear_ = y[np + nd];
+  disc_wear_ = y[np + nd + 1];
+  friction_integral_ = y[np + nd + 2];
   s_ = s;
 }
 
+namespace {
+// The state an integrator hands back is the stage solution recombined
+// (z_pred + z_cor), equal to it to rounding.
+bool same_state(const std::vector<double>& z, const double* y) {
+  double scale = 0.0, diff = 0.0;
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    scale = std::max(scale, std::abs(z[k]));
+    diff = std::max(diff, std::abs(z[k] - y[k]));
+  }
+  return diff <= 1e-13 * scale;
+}
+}  // namespace
+
 void PinOnDisc::derivative(double s, const double* y, double* dyds, PinOnDiscSample& sample) {
+  const std::size_t np = pin_.size(), nd = disc_.size();
+  if (stage_valid_ && std::abs(s - stage_s_) <= 1e-12 * std::abs(s) && same_state(stage_state_, y)) {
+    std::copy(stage_rate_.begin(), stage_rate_.end(), dyds);
+    sample = stage_sample_;
+    return;
+  }
   set_state(y, s);
   evaluate(s, sample, &pin_rate_, &disc_rate_);
-  const std::size_t np = pin_.size(), nd = disc_.size();
   std::copy(pin_rate_.begin(), pin_rate_.end(), dyds);
-  for (std::size_t i = 0; i < nd; ++i) dyds[np + i] = -disc_rate_[i];
+  if (track_ == 0) {
+    for (std::size_t i = 0; i < nd; ++i) dyds[np + i] = -disc_rate_[i];
+  } else {
+    // The strip cells under the window wear at the rate of the cell above
+    // them (split between the two nearest strip cells as the window reads them).
+    std::fill(dyds + np, dyds + np + nd, 0.0);
+    const Grid2D& g = grid();
+    const double at0 = s / g.dx(), base = std::floor(at0), f = at0 - base;
+    const auto first = static_cast<std::size_t>(std::fmod(base, static_cast<double>(track_)));
+    for (std::size_t i = 0; i < g.nx; ++i)
+      for (std::size_t j = 0; j < g.ny; ++j) {
+        const std::size_t m = (first + j) % track_;
+        const double rate = disc_rate_[g.index(i, j)];
+        dyds[np + i * track_ + m] -= (1.0 - f) * rate;
+        dyds[np + i * track_ + (m + 1) % track_] -= f * rate;
+      }
+  }
   dyds[np + nd] = last_pin_volume_rate_;
   dyds[np + nd + 1] = last_disc_volume_rate_;
+  dyds[np + nd + 2] = sample.friction;
+  // Kept: an integrator asks again for the rate of a state it has just had.
+  stage_state_.assign(y, y + state_size());
+  stage_rate_.assign(dyds, dyds + state_size());
+  stage_s_ = s;
+  stage_sample_ = sample;
+  stage_valid_ = true;
 }
 
 }  // namespace wearscale::tribometer

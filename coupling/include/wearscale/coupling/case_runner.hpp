@@ -2,7 +2,9 @@
 // Runs a case file: builds its scales from [scale.*], checks the case, orders
 // and runs the pipeline, writes run.h5 (+ sidecars) into the output folder.
 // A [sweep] runs the case once per value of one key (in parallel when cores
-// allow) and gathers the headline figures in one table.
+// allow) and gathers the headline figures in one table; [sweep.series] (a
+// second key and its values) repeats the sweep once per series value, one
+// table and one curve each.
 //
 // Long runs checkpoint ([run] checkpoint_interval, checkpoint_steps) into
 // checkpoint.h5 in their output folder; `resume_dir` continues a killed or
@@ -38,7 +40,9 @@ struct RunSummary {
   bool complete_before = false;  ///< resumed, but it had completed: its files were not written again
   // A sweep: the key, and one summary per value (results above stay empty).
   std::string sweep_key;
-  std::vector<std::string> sweep_values;
+  std::vector<std::string> sweep_values;  ///< per run
+  std::string series_key;                 ///< [sweep.series] key, if any
+  std::vector<std::string> series_values; ///< per run, when there is a series
   std::vector<RunSummary> runs;
   nlohmann::json to_json() const;
 };

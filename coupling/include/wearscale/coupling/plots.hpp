@@ -25,14 +25,31 @@ struct FrictionCurve {
   std::filesystem::path csv;
 };
 
-/// μ(s) and wear volumes V(s) of one or several runs, in one PNG (atomically written).
+/// μ(s) and wear volumes V(s) of one or several runs, in one PNG (atomically
+/// written): the raw μ faint and its moving average (the friction.csv column
+/// friction_moving_average, Fig. 9.23) in full, when the file has it.
 std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
                                                           const std::filesystem::path& png, const std::string& title);
 
-/// Time-averaged and final μ against the oxide thickness (µm) from a sweep
-/// table, with the experimental fit μ ≈ 0.337 + 0.070 h_layer[µm] (9.1) and
-/// bulk (inf) drawn at 6 µm as in Fig. 9.25.
-std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::filesystem::path& table_csv,
+/// The final worn depth of the disc across the track (disc_profile.csv of each
+/// run: x, depth, through_layer) of one or several runs, with the oxide's
+/// thickness drawn when given (> 0): the grooves are where a curve passes it.
+std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<FrictionCurve>& profiles,
+                                                        const std::filesystem::path& png, const std::string& title,
+                                                        double layer_thickness);
+
+/// A sweep table (one per series of a sweep) and the name of its curve.
+struct SweepTable {
+  std::string label;
+  std::filesystem::path csv;
+};
+
+/// Fig. 9.25: final (and mean) μ against the oxide thickness (µm), one curve
+/// per sweep table (e.g. planar and tilted discs), the finite thicknesses
+/// joined and bulk (inf) as its own marker at 6 µm as the thesis places it,
+/// with the experimental fit μ ≈ 0.337 + 0.070 h_layer[µm] (9.1) over the
+/// thicknesses it was fitted on (0–3 µm).
+std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vector<SweepTable>& tables,
                                                                 const std::filesystem::path& png);
 
 /// The tangential force history of a sheared DEM junction (junction_history.csv
@@ -43,10 +60,11 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
 /// Peak p_T against p_N of the junction runs of nano/dem (junction_<pair>.csv:
 /// D/L, p_N, ..., p_T_peak in columns 1, 2, 6), one point set per D/L, with the
 /// fitted model p_T = max((D/L) σ, (p_N/p_crit) σ) of (7.9)-(7.10) per D/L
-/// and the line p_T = p_N (Fig. 7.2, 7.3).
+/// and the line p_T = p_N (Fig. 7.2, 7.3). With the cell `length` L [m] the
+/// legend gives D in nm.
 std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
                                                             const std::filesystem::path& png, const std::string& title,
                                                             const std::vector<double>& contact_ratios, double sigma,
-                                                            double p_crit);
+                                                            double p_crit, double length = 0.0);
 
 }  // namespace wearscale::coupling

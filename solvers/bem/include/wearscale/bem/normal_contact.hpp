@@ -25,6 +25,22 @@
 
 namespace wearscale::bem {
 
+/// A linear compliance added to the half-space's, symmetric and positive
+/// semi-definite: the surface then moves by u = K p + A p. An implicit wear
+/// step is one (wearing in proportion to the pressure over a step lowers a
+/// surface as a compliance would); A = 0 is the plain contact. Both methods
+/// take it: the preconditioner S stays the half-space's inverse (still SPD,
+/// so the conjugate directions still converge, more slowly the more A
+/// dominates K).
+class AddedCompliance {
+ public:
+  virtual ~AddedCompliance() = default;
+  /// u += scale · A p
+  virtual void add(const RealField& p, double scale, RealField& u) const = 0;
+  /// t · A t
+  virtual double quadratic_form(const RealField& t) const = 0;
+};
+
 enum class ContactMethod {
   PreconditionedCG,  ///< Polonsky–Keer with the FFT preconditioner S (default)
   PolonskyKeer,      ///< the textbook, unpreconditioned Polonsky–Keer iteration
@@ -62,6 +78,10 @@ class NormalContact {
   void set_surface(const RealField& surface);
   /// Forgets the warm start.
   void reset();
+  /// Adds `compliance` to the half-space's in the next solves (nullptr: none).
+  /// It must outlive those solves; displacement() and the elastic energy then
+  /// include its share.
+  void set_added_compliance(const AddedCompliance* compliance) { added_ = compliance; }
   /// The warm start carried from one solve to the next: the last pressure
   /// (pressure()) and the mean gap on the contact. Restoring both (from a
   /// checkpoint) makes the next solve bit-identical to the one an
@@ -129,6 +149,7 @@ class NormalContact {
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
   std::vector<double> history_;
+  const AddedCompliance* added_ = nullptr;
 };
 
 }  // namespace wearscale::bem

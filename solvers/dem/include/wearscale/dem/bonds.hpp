@@ -28,15 +28,17 @@ struct BondCriterion {
   static BondCriterion cohesive(const CohesiveLaw& law, double max_radius);
 };
 
-/// The bonded pairs (i < j), in increasing (i, j), using the nearest
-/// periodic image on periodic axes (the box must be longer than twice the
-/// bond range there, as for the neighbour list).
+/// The bonded pairs (i < j), in increasing (i, j), each once: bonded when
+/// any periodic image of j is (on a periodic axis thinner than the range a
+/// pair may be bonded through several).
 std::vector<std::pair<std::size_t, std::size_t>> bonded_pairs(const Particles& p, const Box& box,
                                                               const BondCriterion& bond);
 
-/// Calls visit(i, j, d) once for every pair i < j at most r_i + r_j + range
-/// apart (d = x_j − x_i, nearest image). A cell-list search over
-/// a wrapped copy of the positions: works on any particles, e.g. read back.
+/// Calls visit(i, j, d) once for every pair i < j and periodic image of j
+/// at most r_i + r_j + range apart (d = x_j + shift − x_i; one image per
+/// pair unless a periodic length is below 2 r_max + range). A cell-list
+/// search over a wrapped copy of the positions: works on any particles,
+/// e.g. read back.
 void for_each_close_pair(const Particles& p, const Box& box, double range,
                          const std::function<void(std::size_t, std::size_t, const Vec3&)>& visit);
 

@@ -4,6 +4,7 @@
 // spring capped by F'_m,T (6.4)-(6.5), viscous damping (6.2), with parameters
 // derived from the material and the pair's radii and masses (6.49)-(6.61).
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
@@ -35,8 +36,8 @@ double fracture_separation(const CohesiveMaterial& m, double radius_sum);
 /// All parameters of a pair (6.53)-(6.61). For r_i + r_j > d_c, δ_f < δ_e:
 /// the force stays Hookean up to δ_f and then vanishes, so the matched
 /// strength is σ_m,N ((r_i + r_j)/d_c)^(−s) (6.63) and, for s = ½, the
-/// fracture energy is still 2γA_N (Fig. 6.5). F_m,T carries the same factor
-/// (the shear-strength targets of Fig. 6.11 follow (6.63) as well).
+/// fracture energy is still 2γA_N (Fig. 6.5). F_m,T = A_T σ_m,T (6.58) at
+/// every size.
 CohesivePair cohesive_pair(const CohesiveMaterial& m, double r_i, double r_j, double m_i,
                            double m_j);
 
@@ -47,6 +48,21 @@ double tangential_cap(const CohesivePair& p, double delta_n);
 /// The energy stored in the normal spring, zero at and beyond δ_f:
 /// dU/dδ_N = F_N.
 double normal_energy(const CohesivePair& p, double delta_n);
+
+/// The smallest spacing d of an HCP lattice of this material whose second
+/// neighbours, √2 d apart (a gap of (√2 − 1) d), stay beyond the cohesive
+/// reach δ_f (6.57) when compressed by `strain`. Closer, they attract in the
+/// softening branch of (6.3), a negative stiffness, and the lattice's
+/// measured E and ν are nonsense (Table 6.4: δ_f = 30, d ≥ 72.4 at rest,
+/// 75.0 under the patch test's 1 %; the thesis' lattices start at 0.6 d_c =
+/// 90). Infinite when no spacing qualifies.
+double smallest_hcp_spacing(const CohesiveMaterial& m, double strain = 0.0);
+/// InputError when an HCP lattice of spacing `d0` made of `materials` (and
+/// their interfaces, mix()) compressed by `strain` would put second
+/// neighbours within δ_f: names the gap, the reach and the smallest valid
+/// d0. `what` names the study.
+void require_hcp_spacing(const std::vector<CohesiveMaterial>& materials, double d0, const std::string& what,
+                         double strain = 0.0);
 
 /// Δt_c = √(2m/k_N)   (6.6)
 double critical_time_step(double mass, double k_n);

@@ -27,24 +27,36 @@ class Simulation;
 
 /// The periodic cell. Thesis: 37.5 × 37.5 × 2.4 nm³ with d0 = 1.5 nm, i.e.
 /// 25 rows along x, ≈ 14 double rows (√3 d0) in height, one HCP cell
-/// (√(8/3) d0 = 2.45 nm, two close-packed layers) across. The neighbour list
-/// needs periodic lengths of at least twice its cutoff (≈ 2.7 d0), so the
-/// depth is two cells (4.9 nm, four layers) by default: p_T and p_N are
-/// stresses, and the cell stays quasi-2D. The close-packed planes are the
-/// x–z planes, so slip rows run along the sliding direction x.
+/// (√(8/3) d0 = 2.45 nm, two close-packed layers) across: each particle meets
+/// the three of the other layer through two periodic images. The
+/// close-packed planes are the x–z planes, so slip rows run along the
+/// sliding direction x.
 struct JunctionCell {
   double d0 = 1.5e-9;     ///< particle diameter (HCP nearest-neighbour distance)
   int length = 25;        ///< L in d0 (periodic sliding direction x)
   int height = 14;        ///< cell height in HCP double rows of √3 d0 (z, normal)
-  int depth = 2;          ///< HCP cells of √(8/3) d0 across (y, periodic)
+  int depth = 1;          ///< HCP cells of √(8/3) d0 across (y, periodic)
   double gap = 0.25;      ///< height of the gap the junction bridges, as a fraction of the cell height
   double wall_thickness = 1.5;  ///< in d0: the particles within it of the top and bottom faces form the rigid walls
 };
+
+/// How the cell's particles are arranged: the HCP lattice of §7.1.1 (an
+/// ordered, crystalline solid), or an amorphous sample (§6.2.2, sizes
+/// 0.75-1.25 d0) of the same size — the weakened, amorphous state of a
+/// material that the thesis suggests for Si (§9.3.3) and the arrangement of
+/// amorphous SiO2 itself.
+enum class Arrangement { Hcp, Amorphous };
 
 struct JunctionStrengthSpec {
   CohesiveMaterial top;     ///< pin material (top surface, upper half of the junction)
   CohesiveMaterial bottom;  ///< disc material
   JunctionCell cell;
+  Arrangement arrangement = Arrangement::Hcp;
+  /// Amorphous only: the sample's seed and its relaxation (§6.2.2), phase 2
+  /// ending at this stress (in E) or after this many steps.
+  unsigned seed = 1;
+  double relax_tolerance = 1e-4;
+  long max_relax_steps = 20000;
   double contact_ratio = 1.0;   ///< initial D/L, (0, 1]; 1: the surfaces are one solid
   double pressure = 0.0;        ///< p_N on the top wall [Pa]
   double velocity = 10.0;       ///< sliding velocity of the top wall [m/s]

@@ -1,7 +1,10 @@
 #pragma once
 // A half neighbour list (each pair once, under the lower index) built from a
 // cell list with a skin, with per-pair tangential history that survives
-// rebuilds. Periodic images are stored as one of 27 shift indices.
+// rebuilds. A pair is a particle, a neighbour and one periodic image of the
+// neighbour (a byte: PeriodicImages): on a periodic axis thinner than the
+// cutoff one neighbour may be met through several images, each its own
+// contact with its own history, and a particle may meet its own images.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +13,7 @@
 
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/dem/box.hpp"
+#include "wearscale/dem/cell_grid.hpp"
 #include "wearscale/dem/particles.hpp"
 
 namespace wearscale::dem {
@@ -26,8 +30,12 @@ struct NeighborSettings {
 class NeighborList {
  public:
   /// Builds the list for pairs closer than r_i + r_j + reach + skin, skipping
-  /// pairs of particles of the same wall (two walls do interact). Periodic coordinates must be wrapped into
-  /// the box. The history of pairs present before is kept.
+  /// pairs of particles of the same wall (two walls do interact). Periodic
+  /// coordinates must be wrapped into the box, and p.image count the periods
+  /// each particle was wrapped by. The history of contacts present before is
+  /// kept: the same particles and the same image once the wraps since the
+  /// last build are undone. InputError when a periodic length is shorter than
+  /// the largest particle diameter (a particle would overlap itself).
   void build(const Particles& p, const Box& box, double reach, double skin);
 
   std::size_t pairs() const { return neighbor_.size(); }
@@ -38,9 +46,10 @@ class NeighborList {
   std::vector<double>& history() { return history_; }
   const std::vector<double>& history() const { return history_; }
 
-  /// The separation offset of shift index s for this box.
-  static std::array<Vec3, 27> shift_vectors(const Box& box);
-  static constexpr std::uint8_t no_shift = 13;
+  /// The images the shift indices of the last build refer to.
+  const PeriodicImages& images() const { return images_; }
+  /// Their separation offsets for this box (images().count() of them).
+  void shift_vectors(const Box& box, Vec3* out) const { images_.vectors(box, out); }
 
   /// Largest displacement since the last build exceeds half the skin.
   bool moved_beyond_half_skin(const Particles& p) const;
@@ -48,30 +57,39 @@ class NeighborList {
   /// Forgets all pairs and histories.
   void clear();
 
-  /// The pairs, their histories and the positions at the last build, under
-  /// `prefix` in a checkpoint, bit for bit (a restored list is the one saved,
-  /// not a rebuild, so a resumed run sums its forces in the same order).
+  /// The pairs, their images and histories and the positions at the last
+  /// build, under `prefix` in a checkpoint, bit for bit (a restored list is
+  /// the one saved, not a rebuild, so a resumed run sums its forces in the
+  /// same order).
   void save(CheckpointState& out, const std::string& prefix) const;
-  /// InputError naming the entry when the checkpoint does not fit `particles`.
-  void restore(const CheckpointState& in, const std::string& prefix, std::size_t particles);
+  /// InputError naming the entry when the checkpoint does not fit
+  /// `particles` (whose images, unchanged since the saved build, are those
+  /// of the build). A list saved without its images' reach (DEM state format
+  /// 1) used the 27 nearest images.
+  void restore(const CheckpointState& in, const std::string& prefix, const Particles& particles);
 
  private:
-  void sort_and_keep_history(std::size_t n);
+  void sort_and_keep_history(const Particles& p);
 
   std::vector<std::uint32_t> offset_, neighbor_;
   std::vector<std::uint8_t> shift_;
   std::vector<double> history_;
+  PeriodicImages images_;
   // Previous list, for carrying history over a rebuild.
   std::vector<std::uint32_t> old_offset_, old_neighbor_;
+  std::vector<std::uint8_t> old_shift_;
   std::vector<double> old_history_;
+  PeriodicImages old_images_;
   // Scratch reused between builds.
   struct Candidate {
     std::uint32_t i, j;
     std::uint8_t shift;
   };
   std::vector<Candidate> candidates_;
-  std::vector<std::uint32_t> cell_head_, cell_next_, count_;
+  std::vector<std::uint32_t> count_;
+  CellGrid grid_;
   std::vector<Vec3> built_at_;
+  std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
   double half_skin_ = 0.0;
   long builds_ = 0;
 };

@@ -48,6 +48,15 @@ struct PatchTestResult {
   long strength_steps = 0;
 };
 
+/// E and ν of an isotropic solid from its confined-compression moduli:
+/// ν = C12/(C11 + C12), E = C11 (1 + ν)(1 − 2ν)/(1 − ν). NumericalError
+/// (naming `step`) unless E > 0 and −1 < ν < 0.5: no elastic solid has
+/// others, so such constants are a failed measurement, never a result.
+struct IsotropicConstants {
+  double young = 0.0, poisson = 0.0;
+};
+IsotropicConstants isotropic_constants(double c11, double c12, long step);
+
 /// Observer of long runs: (phase, step, steps planned).
 using PatchTestProgress = std::function<void(const std::string&, long, long)>;
 

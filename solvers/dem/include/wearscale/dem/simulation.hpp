@@ -114,7 +114,7 @@ class Simulation {
   std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
   std::vector<std::vector<SymTensor>> thread_virial_;
   std::vector<SymTensor> virial_;
-  std::array<Vec3, 27> shift_table_{};
+  std::array<Vec3, PeriodicImages::max_count> shift_table_{};  // offsets of the list's images
   double dt_ = 0.0;
   double global_damping_ = 0.0;
   bool track_virial_ = false;

@@ -4,8 +4,13 @@
 // the contact is solved with the BEM; each contacting cell slides with
 // p_T = μ0 p_N of its interface (9.12) and wears by dh = (p_N/p_crit) v dt
 // (9.23), shared ½/½ between pin and disc on a like-on-like interface
-// (9.24)–(9.25) and all on the disc otherwise (9.26)–(9.27). The disc wear is
-// scaled by L/L_path and averaged along the sliding direction y.
+// (9.24)–(9.25) and all on the disc otherwise (9.26)–(9.27).
+//
+// The disc track is either averaged (§9.3.2: one height per x column,
+// invariant along the sliding direction y, its wear scaled by L/L_path) or
+// resolved (the whole circumference stored as a strip of L_path along y, the
+// wear deposited on the part of the strip the pin slides over, a tilt of the
+// disc turning once per revolution).
 //
 // Geometry: heights z along the pin's axis; the pin's surface is
 // z_pin = R − √(R² − r²) (+ its wear), the disc's z_disc = −(its wear) (+ a
@@ -13,6 +18,7 @@
 // of contact modulus E*.
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "wearscale/bem/normal_contact.hpp"
@@ -20,6 +26,19 @@
 #include "wearscale/materials/junction_model.hpp"
 
 namespace wearscale::tribometer {
+
+/// An implicit stage whose contact solve did not converge (see solve_stage).
+struct StageNotSolved : NumericalError {
+  using NumericalError::NumericalError;
+};
+
+/// Which material the pin meets at a cell: the oxide while the worn depth is
+/// below h_layer. `Disc`: the depth of the worn disc (the oxide tilts with the
+/// disc, physical). `Tilted`: the depth with the tilt plane added, the
+/// literal reading of §9.3.2 that reproduces the trends of Figs. 9.23–9.25.
+enum class LayerTest { Disc, Tilted };
+/// The disc track: averaged along y (§9.3.2) or resolved over the circumference.
+enum class Track { Averaged, Resolved };
 
 struct PinOnDiscSetup {
   std::size_t grid = 128;           ///< n × n cells
@@ -33,8 +52,11 @@ struct PinOnDiscSetup {
   double layer_thickness = 1e-6;    ///< h_layer [m]; 0: bare substrate; +inf: bulk layer material
   double e_star = 37.6e9;           ///< contact modulus of the BEM solve [Pa]
   double nonplanar_slope = 0.0;     ///< slope of the rotating tilt of the disc
-  double nonplanar_period = 0.05;   ///< its rotation period in sliding distance [m]
+  double nonplanar_period = 0.05;   ///< its rotation period in sliding distance [m] (resolved track: L_path)
+  LayerTest layer_test = LayerTest::Disc;
+  Track track = Track::Averaged;
   double tolerance = 1e-10;         ///< BEM orthogonality error
+  int max_iterations = 20000;       ///< BEM iterations of a solve (of an implicit stage: at most 3000, then a shorter step)
   bem::Boundary boundary = bem::Boundary::Periodic;  ///< of the BEM cell: periodic images, or an isolated pin (free)
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
   materials::InterfaceLaw on_substrate;  ///< pin on the substrate (e.g. SiO2/Si)
@@ -44,12 +66,17 @@ struct PinOnDiscSetup {
   void validate() const;
   /// InputError if an interface law is missing or incomplete.
   void validate_laws() const;
+  /// Cells of the resolved track along y: L_path/Δx rounded (≥ n).
+  std::size_t track_cells() const;
+  /// The rotation period of the tilt: nonplanar_period, or the track's length when resolved.
+  double tilt_period() const;
 };
 
 /// The state after a step, and what happened during it.
 struct PinOnDiscSample {
   double distance = 0.0;           ///< s [m]
   double friction = 0.0;           ///< μ = Σ p_T ΔA / F_N
+  double friction_integral = 0.0;  ///< ∫₀ˢ μ ds' [m], by the integrator (the source of every average of μ)
   double pin_wear = 0.0;           ///< worn volume of the pin so far [m³]
   double disc_wear = 0.0;          ///< worn volume of the disc (whole track) so far [m³]
   double contact_fraction = 0.0;   ///< A/A0 of the BEM contact (cells with p > 0)
@@ -57,11 +84,15 @@ struct PinOnDiscSample {
   double substrate_contact = 0.0;  ///< share on the substrate
   double max_pressure = 0.0;       ///< [Pa]
   int iterations = 0;              ///< BEM iterations of this step's solve
+  int grooves = 0;                 ///< grooves: separate bands of x where the disc is worn through the layer
 };
 
 class PinOnDisc {
  public:
   explicit PinOnDisc(const PinOnDiscSetup& setup);
+  ~PinOnDisc();
+  PinOnDisc(const PinOnDisc&) = delete;
+  PinOnDisc& operator=(const PinOnDisc&) = delete;
 
   /// Solves the contact of the current surfaces (at distance s, for the tilt)
   /// and fills `out` with friction and contact shares; writes the wear rates
@@ -81,38 +112,82 @@ class PinOnDisc {
   long total_steps() const;
 
   /// Everything the next steps depend on (surfaces, worn volumes, distance,
-  /// step count and the contact solver's warm start), bit for bit.
+  /// step count, the contact solver's warm start and the rate of the last
+  /// implicit stage), bit for bit.
   void save(CheckpointState& state) const;
   /// Restores a saved state; InputError if it does not fit this setup's grid.
   void restore(const CheckpointState& state);
 
   double distance() const { return s_; }
   int contact_solves() const { return solves_; }
-  /// Pin and disc surface heights (z_pin over the grid; z_disc per x column, invariant in y).
+  /// Pin and disc surface heights (z_pin over the grid; z_disc per x column
+  /// (averaged track) or over the track's nx × track_cells() strip (resolved)).
   const RealField& pin_surface() const { return pin_; }
   const std::vector<double>& disc_profile() const { return disc_; }
+  /// The disc under the pin's window, one value per cell (the averaged profile
+  /// repeated along y, or the part of the resolved strip under the pin).
+  RealField disc_under_pin() const;
+  /// Mean worn disc height per x column (z_disc averaged along the track).
+  std::vector<double> disc_column_means() const;
   const bem::NormalContact& contact() const { return contact_; }
   const PinOnDiscSetup& setup() const { return setup_; }
   const Grid2D& grid() const { return pin_.grid(); }
 
-  /// State for integrators: z_pin (n²), z_disc (n), then the worn volumes V_pin, V_disc.
-  std::size_t state_size() const { return pin_.size() + disc_.size() + 2; }
+  /// State for integrators: z_pin (n²), z_disc (disc_profile().size()), then
+  /// the worn volumes V_pin, V_disc and the friction integral ∫μ ds.
+  std::size_t state_size() const { return pin_.size() + disc_.size() + 3; }
   std::vector<double> state() const;
+  /// The state at s = 0 (unworn surfaces).
+  std::vector<double> initial_state() const;
   void set_state(const double* y, double s);
-  /// dy/ds at (s, y) for that state layout: one contact solve. Fills `sample`.
+  /// dy/ds at (s, y) for that state layout: one contact solve (none when
+  /// (s, y) is the solution of the last implicit stage, whose rate is kept).
+  /// Fills `sample`.
   void derivative(double s, const double* y, double* dyds, PinOnDiscSample& sample);
 
+  /// Solves the implicit stage z = a + γ f(s, z) exactly, in one contact
+  /// solve: wearing by γ p/p_crit over the stage acts as a compliance added to
+  /// the half-space's, so z is the contact of the surfaces of `a` on K + A_γ
+  /// (averaged track only). The material of each cell is that of `layer`
+  /// (1: the oxide) when given, else made consistent with z by re-solving
+  /// (at most a few times). Writes z, f(s, z) and the sample at z.
+  /// StageNotSolved if a contact solve does not converge (a shorter stage
+  /// may: the state and the warm start are left as they were).
+  void solve_stage(double s, const double* a, double gamma, double* z, double* rate, PinOnDiscSample& sample,
+                   const std::vector<char>* layer = nullptr);
+  /// The material the pin meets at each cell for a state at s (1: the oxide).
+  std::vector<char> layer_cells(double s, const double* y) const;
+  /// Worn depth of the disc minus h_layer per x column (the averaged track):
+  /// the oxide is worn through where it is ≥ 0.
+  void depth_below_layer(const double* y, double* out) const;
+
  private:
+  struct StageCompliance;
   void build_profile(double s);
+  void classify(double s, const double* disc, std::vector<char>& layer) const;
+  bem::ContactResult solve_contact(double s, int max_iterations,
+                                  bem::ContactMethod method = bem::ContactMethod::PreconditionedCG);
+  void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
+  double disc_height(const double* disc, std::size_t i, std::size_t j, double s) const;
+  void deposit_swept(double s0, double s1);
+  int count_grooves(const double* disc) const;
   PinOnDiscSetup setup_;
   RealField pin_, profile_;
   std::vector<double> disc_;
   bem::NormalContact contact_;
   std::vector<double> pin_rate_, disc_rate_;
-  double s_ = 0.0, pin_wear_ = 0.0, disc_wear_ = 0.0;
+  std::vector<char> layer_;  // per cell: 1 where the pin meets the oxide
+  double s_ = 0.0, pin_wear_ = 0.0, disc_wear_ = 0.0, friction_integral_ = 0.0;
   long steps_ = 0;
   double last_pin_volume_rate_ = 0.0, last_disc_volume_rate_ = 0.0;  // dV/ds of the last evaluate()
   int solves_ = 0;
+  std::size_t track_ = 0;  // strip cells along y (resolved), else 0
+  // The solution of the last implicit stage and its rate, for derivative().
+  std::vector<double> stage_state_, stage_rate_;
+  double stage_s_ = 0.0;
+  bool stage_valid_ = false;
+  PinOnDiscSample stage_sample_;
+  std::unique_ptr<StageCompliance> compliance_;
 };
 
 }  // namespace wearscale::tribometer

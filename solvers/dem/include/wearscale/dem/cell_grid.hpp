@@ -1,0 +1,123 @@
+#pragma once
+// A cell list for pair searches within a cutoff on periodic and open axes,
+// which visits every periodic image of every pair whose cells are within
+// reach once. When each periodic axis holds at least three cells no smaller
+// than the cutoff it walks the half stencil (a cell and its 13 neighbours
+// "after" it); otherwise — periodic lengths below three cutoffs, down to one
+// particle — a full stencil over as many cells and images as the cutoff
+// spans, keeping each pair once by its lower index (and a particle's pairs
+// with its own images by the sign of the shift).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "wearscale/dem/box.hpp"
+#include "wearscale/dem/periodic_images.hpp"
+
+namespace wearscale::dem {
+
+class CellGrid {
+ public:
+  /// Sorts `x` (wrapped into the box on periodic axes) into cells no smaller
+  /// than `cut`; at most 4n + 64 cells (open axes spanning far get larger
+  /// ones). InputError when the images within `cut` are too many
+  /// (PeriodicImages::within).
+  void build(std::span<const Vec3> x, const Box& box, double cut);
+
+  const PeriodicImages& images() const { return images_; }
+
+  /// visit(i, j, image, d) once for every physical pair the stencil reaches:
+  /// i ≠ j in either order (the caller orders them), or i == j for a
+  /// particle and one of its own images (image above zero();
+  /// its opposite is the same pair). d = x_j + shift(image) − x_i; the
+  /// caller applies its own distance test.
+  template <class Visit>
+  void for_each_candidate(std::span<const Vec3> x, Visit&& visit) const;
+
+ private:
+  static constexpr std::uint32_t none = 0xffffffffu;
+  std::size_t flat(int cx, int cy, int cz) const {
+    return static_cast<std::size_t>(cx) +
+           static_cast<std::size_t>(cells_[0]) *
+               (static_cast<std::size_t>(cy) + static_cast<std::size_t>(cells_[1]) * static_cast<std::size_t>(cz));
+  }
+  // The cell a stencil offset reaches along axis a from cell c, and the
+  // image shift it crosses; false when it leaves an open axis or goes beyond
+  // the images' reach.
+  bool step(std::size_t a, int c, int offset, int& cell, int& shift) const;
+
+  std::array<int, 3> cells_{1, 1, 1};
+  std::array<int, 3> span_{1, 1, 1};  // stencil half-width in cells
+  std::array<bool, 3> periodic_{};
+  bool half_stencil_ = true;
+  PeriodicImages images_;
+  std::array<Vec3, PeriodicImages::max_count> shift_{};
+  std::vector<std::uint32_t> head_, next_;
+};
+
+template <class Visit>
+void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit) const {
+  const std::uint8_t zero = images_.zero();
+  if (half_stencil_) {
+    static constexpr int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
+                                           {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
+                                           {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+    for (int cz = 0; cz < cells_[2]; ++cz)
+      for (int cy = 0; cy < cells_[1]; ++cy)
+        for (int cx = 0; cx < cells_[0]; ++cx) {
+          const std::size_t home = flat(cx, cy, cz);
+          for (std::uint32_t i = head_[home]; i != none; i = next_[i]) {
+            const Vec3 xi = x[i];
+            for (std::uint32_t j = next_[i]; j != none; j = next_[j]) visit(i, j, zero, x[j] - xi);
+            for (const auto& o : stencil) {
+              std::array<int, 3> c{}, s{};
+              if (!step(0, cx, o[0], c[0], s[0]) || !step(1, cy, o[1], c[1], s[1]) || !step(2, cz, o[2], c[2], s[2]))
+                continue;
+              const std::uint8_t sh = images_.index(s[0], s[1], s[2]);
+              const Vec3 xs = shift_[sh] - xi;
+              for (std::uint32_t j = head_[flat(c[0], c[1], c[2])]; j != none; j = next_[j]) visit(i, j, sh, x[j] + xs);
+            }
+          }
+        }
+    return;
+  }
+  for (int cz = 0; cz < cells_[2]; ++cz)
+    for (int cy = 0; cy < cells_[1]; ++cy)
+      for (int cx = 0; cx < cells_[0]; ++cx) {
+        const std::size_t home = flat(cx, cy, cz);
+        for (std::uint32_t i = head_[home]; i != none; i = next_[i]) {
+          const Vec3 xi = x[i];
+          std::array<int, 3> c{}, s{};
+          for (int oz = -span_[2]; oz <= span_[2]; ++oz) {
+            if (!step(2, cz, oz, c[2], s[2])) continue;
+            for (int oy = -span_[1]; oy <= span_[1]; ++oy) {
+              if (!step(1, cy, oy, c[1], s[1])) continue;
+              for (int ox = -span_[0]; ox <= span_[0]; ++ox) {
+                if (!step(0, cx, ox, c[0], s[0])) continue;
+                const std::uint8_t sh = images_.index(s[0], s[1], s[2]);
+                const Vec3 xs = shift_[sh] - xi;
+                for (std::uint32_t j = head_[flat(c[0], c[1], c[2])]; j != none; j = next_[j]) {
+                  if (j < i || (j == i && sh <= zero)) continue;  // the same pair from its other end
+                  visit(i, j, sh, x[j] + xs);
+                }
+              }
+            }
+          }
+        }
+      }
+}
+
+inline bool CellGrid::step(std::size_t a, int c, int offset, int& cell, int& shift) const {
+  cell = c + offset;
+  shift = 0;
+  if (cell >= 0 && cell < cells_[a]) return true;
+  if (!periodic_[a]) return false;
+  // Floor division: the periods crossed.
+  shift = cell >= 0 ? cell / cells_[a] : -((-cell + cells_[a] - 1) / cells_[a]);
+  cell -= shift * cells_[a];
+  return shift >= -images_.reach[a] && shift <= images_.reach[a];
+}
+
+}  // namespace wearscale::dem

@@ -1,0 +1,71 @@
+#include "wearscale/dem/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wearscale::dem {
+
+void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut) {
+  const std::size_t n = x.size();
+  images_ = PeriodicImages::within(box, cut);
+  images_.vectors(box, shift_.data());
+  // The box on periodic axes, the particles' extent on open ones.
+  Vec3 lo{}, length{};
+  for (int a = 0; a < 3; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    periodic_[ua] = box.periodic[ua];
+    if (periodic_[ua]) {
+      lo[a] = box.lo[a];
+      length[a] = box.hi[a] - box.lo[a];
+    } else {
+      double mn = 0.0, mx = 0.0;
+      if (n > 0) {
+        mn = mx = x[0][a];
+        for (const auto& xi : x) {
+          mn = std::min(mn, xi[a]);
+          mx = std::max(mx, xi[a]);
+        }
+      }
+      lo[a] = mn;
+      length[a] = std::max(mx - mn, cut) * (1.0 + 1e-12);
+    }
+    cells_[ua] = std::clamp(static_cast<int>(std::floor(length[a] / cut)), 1, 1 << 20);
+  }
+  // No more cells than a few per particle (a lone particle far away on an
+  // open axis would otherwise ask for a huge grid); cells only grow.
+  auto product = [&] {
+    return static_cast<double>(cells_[0]) * static_cast<double>(cells_[1]) * static_cast<double>(cells_[2]);
+  };
+  while (product() > 4.0 * static_cast<double>(n) + 64.0) {
+    auto& largest = *std::max_element(cells_.begin(), cells_.end());
+    largest = std::max(1, largest / 2);
+  }
+  Vec3 size{};
+  half_stencil_ = true;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const int ia = static_cast<int>(a);
+    size[ia] = length[ia] / cells_[a];
+    // Cells no smaller than the cutoff (to rounding: L/⌊L/cut⌋) reach one
+    // cell over; thinner ones (a periodic length below the cutoff) as many
+    // as the cutoff spans.
+    span_[a] = size[ia] >= cut * (1.0 - 1e-12) ? 1 : static_cast<int>(std::ceil(cut / size[ia]));
+    if (span_[a] > 1 || (periodic_[a] && cells_[a] < 3)) half_stencil_ = false;
+  }
+
+  const std::size_t ncell = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]) *
+                            static_cast<std::size_t>(cells_[2]);
+  head_.assign(ncell, none);
+  next_.resize(n);
+  auto coordinate = [&](const Vec3& xi, int a) {
+    const int c = static_cast<int>(std::floor((xi[a] - lo[a]) / size[a]));
+    return std::clamp(c, 0, cells_[static_cast<std::size_t>(a)] - 1);
+  };
+  // Inserted in reverse so that each cell's list runs in increasing index.
+  for (std::size_t k = n; k-- > 0;) {
+    const std::size_t c = flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2));
+    next_[k] = head_[c];
+    head_[c] = static_cast<std::uint32_t>(k);
+  }
+}
+
+}  // namespace wearscale::dem
