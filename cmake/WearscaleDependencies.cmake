@@ -80,7 +80,7 @@ if(NOT TARGET CLI11::CLI11)
   wearscale_missing("CLI11 (command-line parsing)" "libcli11-dev")
 endif()
 
-# --- OpenSSL (SHA-256 keys of cached LAMMPS results, MD5 sums of X3P data) ---
+# --- OpenSSL (SHA-256: checkpoint checksums, keys of cached results; MD5 of X3P data)
 find_package(OpenSSL QUIET COMPONENTS Crypto)
 if(NOT TARGET OpenSSL::Crypto)
   wearscale_missing("OpenSSL (libcrypto)" "libssl-dev")

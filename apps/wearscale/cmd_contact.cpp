@@ -12,6 +12,8 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_lock.hpp"
+#include "wearscale/core/output_set.hpp"
 
 namespace wearscale::app {
 
@@ -71,10 +73,13 @@ Command add_contact(CLI::App& app) {
     cfg.string_or("case.description", "");
     const std::string dir = cfg.string_or("output.dir", "out/contact");
     const std::filesystem::path out = a->out.empty() ? std::filesystem::path(dir) : std::filesystem::path(a->out);
+    const OutputLock lock = OutputLock::folder(out, invocation());
+    OutputSet outputs(out, "summary.json");  // published together, summary.json last
     auto summary = bem::run_contact_study(cfg, out);
+    require_finite_results(summary["results"], "contact study");
     summary["parameters"] = cfg.to_json();
     summary["output_dir"] = out.string();
-    write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    outputs.commit(summary);
     if (a->json) {
       std::cout << summary.dump(2) << '\n';
       return 0;

@@ -13,9 +13,11 @@
 // Each run checkpoints into its output folder (`checkpoint.h5`, policy from
 // [run] checkpoint_interval / checkpoint_steps) and `--resume DIR` continues
 // a killed or interrupted one.
-#include <fstream>
+#include <omp.h>
+
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -25,6 +27,9 @@
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_lock.hpp"
+#include "wearscale/core/output_set.hpp"
+#include "wearscale/core/text_file.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/dem_study.hpp"
 
@@ -58,13 +63,14 @@ Config build_config(const DemArgs& a, const std::string& default_out, std::files
   return cfg;
 }
 
-int report(const DemArgs& a, const nlohmann::json& summary) {
+// `written`: the files are this run's (else a completed run's, listed as they are).
+int report(const DemArgs& a, const nlohmann::json& summary, bool written = true) {
   if (a.json) {
     std::cout << summary.dump(2) << '\n';
     return 0;
   }
   print_results(summary["results"]);
-  for (const auto& f : summary["files"]) log::info("wrote {}", f.get<std::string>());
+  for (const auto& f : summary["files"]) log::info("{} {}", written ? "wrote" : "kept", f.get<std::string>());
   return 0;
 }
 
@@ -87,17 +93,23 @@ std::string resume_command(const DemArgs& a, const std::string& study, const std
   for (const auto& [key, value] : a.flags)
     if (!value.empty()) line += fmt::format(" --set '{}={}'", key, value);
   for (const auto& o : a.overrides) line += fmt::format(" --set '{}'", o);
-  return line + " --resume " + out.string();
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // The threads too: a resumed run is bit for bit only on as many.
+  return line + fmt::format(" -j {} --resume {}", std::max(1, omp_get_max_threads()), out.string());
 }
 
 using Study = nlohmann::json (*)(const Config&, const std::filesystem::path&, Checkpointer*);
+
+// A measured E ≤ 0 or ν outside (−1, 0.5) is no elastic solid: the patch
+// test failed to measure one (exit 1), whatever the sample did.
+void require_elastic_bounds(const nlohmann::json& results) {
+  const double e = results["young"]["value"].get<double>(), nu = results["poisson"]["value"].get<double>();
+  if (!(e > 0.0) || !(nu > -1.0 && nu < 0.5))
+    throw NumericalError("DEM patch test", 0, "elastic constants",
+                         fmt::format("measured E = {:g}, ν = {:g}: not an elastic solid (allowed: E > 0, −1 < ν < 0.5); "
+                                     "the sample did not respond elastically to the load (compare d0 with the printed "
+                                     "d_min and the time step)",
+                                     e, nu));
+}
 
 // One study, checkpointed into its output folder: fresh, or with --resume
 // from the checkpoint there (or, if that run had completed, its summary).
@@ -109,7 +121,9 @@ int run_study(const DemArgs& a, const std::string& study, const std::string& def
   const CheckpointPolicy policy = checkpoint_policy(cfg);
   const std::string fingerprint = case_fingerprint(cfg.to_json());
   if (!a.resume.empty()) out = resume_folder(a.resume, a.out);
+  const OutputLock lock = OutputLock::folder(out, invocation());  // before its checkpoint is read
   Checkpointer checkpoints(out / "checkpoint.h5", fingerprint, policy);
+  if (a.resume.empty()) require_fresh_start(checkpoints.file());
   if (!a.resume.empty()) {
     std::error_code ec;
     const auto done = out / (name + ".json");
@@ -118,7 +132,7 @@ int run_study(const DemArgs& a, const std::string& study, const std::string& def
     } else if (std::filesystem::exists(done, ec)) {
       nlohmann::json previous;
       try {
-        previous = nlohmann::json::parse(slurp(done));
+        previous = nlohmann::json::parse(read_text_file(done, "summary", std::uintmax_t{1} << 26));
       } catch (const nlohmann::json::exception& e) {
         throw InputError(fmt::format("{}: not a wearscale summary ({})", done.string(), e.what()));
       }
@@ -129,13 +143,19 @@ int run_study(const DemArgs& a, const std::string& study, const std::string& def
                                      "options it was run with, or write to another folder",
                                      done.string(), diff.empty() ? "" : " (" + diff + ")"));
       }
-      log::info("{}: already complete", out.string());
-      return report(a, previous);
+      if (const std::string broken = OutputSet::verify(out, previous); broken.empty()) {
+        log::info("{}: already complete", out.string());
+        return report(a, previous, false);
+      } else {
+        log::warn("{}: the outputs of the completed run are not intact ({}): the run starts again", out.string(),
+                  broken);
+      }
     } else {
       log::info("{}: no checkpoint yet: the run starts from the beginning", out.string());
     }
-  }  // a fresh run leaves an older checkpoint there until its own first one replaces it (bad input loses nothing)
+  }
 
+  OutputSet outputs(out, name + ".json");  // published together, the summary last
   nlohmann::json summary;
   try {
     summary = run(cfg, out, &checkpoints);
@@ -146,10 +166,12 @@ int run_study(const DemArgs& a, const std::string& study, const std::string& def
     if (auto png = coupling::plot_junction_force(out / (name + "_history.csv"), out / (name + "_force.png"),
                                                  summary["verdict"].get<std::string>()))
       summary["files"].push_back(png->string());
+  require_finite_results(summary["results"], "DEM " + study);
+  if (study == "patch-test") require_elastic_bounds(summary["results"]);
   summary["parameters"] = cfg.to_json();
   summary["case_fingerprint"] = fingerprint;
   summary["output_dir"] = out.string();
-  write_file_atomically(out / (name + ".json"), summary.dump(2) + "\n");
+  outputs.commit(summary);
   if (checkpoints.saves() > 0)
     log::debug("{}: {} checkpoints written in {:.3f} s", out.string(), checkpoints.saves(), checkpoints.seconds_saving());
   checkpoints.discard();           // complete: nothing to resume

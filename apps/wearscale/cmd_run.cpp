@@ -1,10 +1,12 @@
 // wearscale run CASE.toml [--set KEY=VALUE]... [--out DIR] [--resume DIR] [--json]
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/coupling/case_runner.hpp"
 
@@ -14,6 +16,31 @@ void print_results(const nlohmann::json& results) {
   for (const auto& [name, r] : results.items())
     std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
                              r["unit"].get<std::string>(), r["description"].get<std::string>());
+}
+
+void require_finite_results(const nlohmann::json& results, const std::string& solver) {
+  for (const auto& [name, r] : results.items()) {
+    const auto& v = r.contains("value") ? r["value"] : r;
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      throw NumericalError(solver, 0, name, fmt::format("the result is {} (NaN or infinite)", v.dump()));
+  }
+}
+
+namespace {
+std::string& invocation_text() {
+  static std::string text = "wearscale";
+  return text;
+}
+}  // namespace
+
+const std::string& invocation() { return invocation_text(); }
+
+void set_invocation(int argc, char** argv) {
+  std::string line = "wearscale";
+  for (int k = 1; k < argc; ++k) line += std::string(" ") + argv[k];
+  for (auto& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  invocation_text() = line;
 }
 
 namespace {
@@ -76,7 +103,8 @@ Command add_run(CLI::App& app) {
     } else {
       print_sweep_table(summary);
     }
-    for (const auto& f : summary.files) log::info("wrote {}", f.string());
+    // A resumed run that had completed wrote nothing: its files are kept as they were.
+    for (const auto& f : summary.files) log::info("{} {}", summary.complete_before ? "kept" : "wrote", f.string());
     return 0;
   };
 }

@@ -24,6 +24,8 @@
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/units.hpp"
 
 namespace wearscale::app {
@@ -113,12 +115,19 @@ int run_generate(const GenerateOptions& o) {
   const auto [measure, target] = o.hprime_opt->count() > 0 ? std::pair{bem::RoughnessMeasure::HPrimeRms, o.hprime_rms}
                                  : o.hrms_opt->count() > 0 ? std::pair{bem::RoughnessMeasure::HRms, o.h_rms}
                                                            : std::pair{bem::RoughnessMeasure::Sa, o.sa};
-  if (!std::isfinite(target) || target <= 0.0)
-    throw InputError(fmt::format("surface generate: {} = {:g}; allowed: > 0",
-                                 measure == bem::RoughnessMeasure::HPrimeRms ? "--hprime-rms"
-                                 : measure == bem::RoughnessMeasure::HRms    ? "--h-rms"
-                                                                             : "--sa",
-                                 target));
+  // Bounds that keep every derived figure finite and the surface a surface:
+  // an RMS slope up to 100 (the BEM assumes small slopes: ≲ 1), heights up
+  // to the side of the surface.
+  const char* option = measure == bem::RoughnessMeasure::HPrimeRms ? "--hprime-rms"
+                       : measure == bem::RoughnessMeasure::HRms    ? "--h-rms"
+                                                                   : "--sa";
+  const double most = measure == bem::RoughnessMeasure::HPrimeRms ? 100.0 : std::min(lx, ly);
+  if (!std::isfinite(target) || target <= 0.0 || target > most)
+    throw InputError(fmt::format("surface generate: {} = {:g}; allowed: > 0 and ≤ {:g}{}", option, target, most,
+                                 measure == bem::RoughnessMeasure::HPrimeRms ? "" : " m (the side of the surface)"));
+  // The surface, its spectrum and the copy written out, before any is allocated.
+  require_memory(48.0 * static_cast<double>(nx) * static_cast<double>(ny),
+                 fmt::format("surface generate: a {} × {} surface", nx, ny), "give a smaller --n (or --nx, --ny)");
 
   const bem::RoughSurfaceSpec spec{Grid2D(nx, ny, lx, ly), o.hurst, o.k_l, o.kr_opt->count() > 0 ? o.k_r : o.k_l,
                                    o.k_s, o.seed};
@@ -129,10 +138,13 @@ int run_generate(const GenerateOptions& o) {
     rethrow_with_options(e);
   }
 
-  const fs::path out(o.out);
-  if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  const fs::path sidecar = bem::write_surface(out, h, bem::generation_attributes(spec));
   const double sa = bem::sa(h), h_rms = bem::h_rms(h), h_prime = bem::h_prime_rms(h);
+  for (const auto& [name, v] : {std::pair{"Sa", sa}, std::pair{"h_rms", h_rms}, std::pair{"h'_rms", h_prime}})
+    if (!std::isfinite(v) || !(v > 0.0))
+      throw NumericalError("surface generate", 0, name, fmt::format("{} of the generated surface", v));
+  const fs::path out(o.out);
+  const OutputLock lock = OutputLock::file(out, invocation());  // two generations into one file: one at a time
+  const fs::path sidecar = bem::write_surface(out, h, bem::generation_attributes(spec));
 
   if (o.json) {
     const nlohmann::json j = {{"file", out.string()},
@@ -177,6 +189,10 @@ int run_analyze(const AnalyzeOptions& o) {
   const bem::MeasuredTopography measured = bem::read_measured_topography(o.file, read);
   RealField h = measured.heights;
   const Grid2D& g = h.grid();
+  // Analysed on the memory of a few copies of the grid (window, PSD, spectrum).
+  require_memory(64.0 * static_cast<double>(g.size()), fmt::format("surface analyze: a {} × {} topography", g.nx, g.ny));
+  double largest = 0.0;
+  for (const double v : h) largest = std::max(largest, std::abs(v));
   bem::PlaneFit plane;
   double h_prime = 0.0;
   RealField psd;
@@ -192,6 +208,12 @@ int run_analyze(const AnalyzeOptions& o) {
     psd = bem::psd_2d(h);
   }
   const double sa = bem::sa(h), h_rms = bem::h_rms(h);
+  // A flat topography (constant, or a plane) leaves rounding noise, whose
+  // PSD fits any exponent: there is no roughness to analyse.
+  if (!(h_rms > 1e-10 * largest))
+    throw InputError(fmt::format("{}: the topography is flat: h_RMS = {:g} m {}, rounding noise of heights up to {:g} "
+                                 "m; allowed: a rough surface",
+                                 o.file, h_rms, o.window ? "once levelled" : "about its mean", largest));
   const bem::RadialPsd radial = bem::radial_psd(psd);
   if (radial.q.size() < 3)
     throw InputError(fmt::format("{}: a {} × {} topography gives {} radial PSD bin(s); at least 3 are needed for a "
@@ -205,11 +227,18 @@ int run_analyze(const AnalyzeOptions& o) {
   const double q_min = o.qmin_opt->count() > 0 ? o.q_min : recorded ? *k_r * unit : radial.q[2];
   const double q_max = o.qmax_opt->count() > 0 ? o.q_max : recorded ? *k_s * unit : radial.q.back();
   const bem::HurstFit fit = bem::fit_hurst(radial, q_min, q_max);
+  // A self-affine surface has 0 < H ≤ 1: anything else says the band is not
+  // self-affine (a roll-off plateau, or beyond the shortest wavelength).
+  if (!(fit.hurst > 0.0 && fit.hurst <= 1.0 + 3.0 * fit.hurst_error) || !std::isfinite(fit.hurst_error))
+    throw NumericalError("surface analyze", 0, "Hurst exponent",
+                         fmt::format("the PSD over q = {:.4g} … {:.4g} rad/m{} fits H = {:.3f} ± {:.3f}, outside (0, 1]: "
+                                     "that band is not self-affine; give the self-affine band with --qmin and --qmax",
+                                     fit.q_min, fit.q_max, recorded ? "" : " (the default band: the file records no k_r, k_s)",
+                                     fit.hurst, fit.hurst_error));
 
   if (!o.psd_out.empty()) {
     std::vector<double> count(radial.count.begin(), radial.count.end());
     const fs::path csv(o.psd_out);
-    if (csv.has_parent_path()) fs::create_directories(csv.parent_path());
     write_csv(csv, {"q", "C", "count"}, {radial.q, radial.c, count},
               {fmt::format("radial PSD of {} ({}), C = LxLy/(nx²ny²)|ĥ|² (thesis 1.9)", o.file, g.to_string()),
                o.window ? "plane removed, radial Hann window, normalised by <w²>" : "no window (periodic data)",

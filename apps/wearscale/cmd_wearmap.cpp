@@ -26,6 +26,7 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_set.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
@@ -117,14 +118,14 @@ nlohmann::json result(double value, const char* unit, const std::string& descrip
 // Writes the map (HDF5 with its XDMF sidecar, CSV, PNG) and the summary into the output folder.
 int finish(const WearmapCase& c, Config& cfg, const fs::path& out, const wear::WearMap& map, nlohmann::json results,
            const std::function<std::optional<fs::path>(const fs::path&, const fs::path&)>& plot) {
-  create_output_folder(c, out);
   const std::string stem = fmt::format("wearmap_{}", map.kind);
+  OutputSet outputs(out, stem + "_summary.json");  // published together, the summary last
   const fs::path h5 = out / (stem + ".h5"), csv = out / (stem + ".csv"),
                  png = out / (stem + ".png");
   const fs::path xmf = wear::write_wear_map_h5(h5, map, cfg.to_toml());
   wear::write_wear_map_csv(csv, map);
   nlohmann::json files = {h5.string(), xmf.string(), csv.string()};
-  if (const auto p = plot(csv, png)) files.push_back(p->string());
+  if (const auto p = plot(OutputSet::readable(csv), png)) files.push_back(p->string());
 
   const double total = static_cast<double>(map.region.size());
   for (const auto& [code, name] : map.region_names)
@@ -132,7 +133,7 @@ int finish(const WearmapCase& c, Config& cfg, const fs::path& out, const wear::W
                                          fmt::format("share of the map in region {} ({})", code, name));
   const nlohmann::json summary = {{"kind", map.kind}, {"results", results}, {"parameters", cfg.to_json()},
                                   {"files", files}, {"output_dir", out.string()}};
-  write_file_atomically(out / (stem + "_summary.json"), summary.dump(2) + "\n");
+  outputs.commit(summary);
   if (c.json) {
     std::cout << summary.dump(2) << '\n';
     return 0;
@@ -158,6 +159,7 @@ int run_analytic2d(const WearmapCase& c) {
   record(cfg, k + "n", fmt::format("{}", x.n));
   record(cfg, k + "dr_over_dstar", toml_range({x.min, x.max}));
   record(cfg, k + "da_over_dstar", toml_range({y.min, y.max}));
+  const OutputLock lock = lock_output_folder(c, out);
   const auto map = wear::analytic_map_2d(x, y);
   return finish(c, cfg, out, map, nlohmann::json::object(),
                 [&](const fs::path& csv, const fs::path& png) { return plot_2d(map, csv, png); });
@@ -197,6 +199,7 @@ int run_analytic3d(const WearmapCase& c) {
     record(cfg, k + "theta", toml_number(theta));
   }
   const double ci = wear::interaction_constant(nu, theta);
+  const OutputLock lock = lock_output_folder(c, out);
   const auto map = wear::analytic_map_3d(x, y, ci);
   nlohmann::json results;
   results["C_inter"] = result(ci, "", "interaction constant (1 − ν sin²θ)/(2 − ν) (4.49)");

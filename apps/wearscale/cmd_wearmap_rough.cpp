@@ -26,6 +26,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_set.hpp"
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/xdmf.hpp"
 #include "wearscale/coupling/plots.hpp"
@@ -172,6 +173,7 @@ int run_rough(const WearmapCase& wcase) {
   spec.options.method = a.naive ? wear::EnergyReleaseMethod::Naive : wear::EnergyReleaseMethod::Fast;
   wear::validate(spec);
   const fs::path& out = a.out;
+  const OutputLock lock = lock_output_folder(wcase, out);  // before the work: a second writer is refused now
 
   const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
   Progress bar("wearmap rough", static_cast<double>(spec.seeds.size() * nl), "contacts");
@@ -238,7 +240,7 @@ int run_rough(const WearmapCase& wcase) {
   }
 
   // Outputs: built under partial names, committed together at the end.
-  create_output_folder(wcase, out);
+  OutputSet outputs(out, "wearmap_rough_summary.json");
   const fs::path h5 = out / "wearmap_rough.h5", xmf = out / "wearmap_rough.xdmf", csv = out / "wearmap_rough.csv",
                  pcsv = out / "wearmap_rough_particles.csv", ccsv = out / "wearmap_rough_curves.csv",
                  kcsv = out / "wearmap_rough_peaks.csv";
@@ -345,10 +347,14 @@ int run_rough(const WearmapCase& wcase) {
   nlohmann::json files = {h5.string(), xmf.string(), csv.string(), pcsv.string(), ccsv.string(), kcsv.string()};
   // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
   const std::pair<std::string, std::string> plots[] = {
-      {map_script(csv, 3, "Number of particles (Fig. 5.6a)", false, spec.loads, spec.critical_diameters), "count"},
-      {map_script(csv, 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads, spec.critical_diameters), "volume"},
-      {curves_script(ccsv, nd, false), "curves_count"},
-      {curves_script(ccsv, nd, true), "curves_volume"}};
+      {map_script(OutputSet::readable(csv), 3, "Number of particles (Fig. 5.6a)", false, spec.loads,
+                  spec.critical_diameters),
+       "count"},
+      {map_script(OutputSet::readable(csv), 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads,
+                  spec.critical_diameters),
+       "volume"},
+      {curves_script(OutputSet::readable(ccsv), nd, false), "curves_count"},
+      {curves_script(OutputSet::readable(ccsv), nd, true), "curves_volume"}};
   for (const auto& [script, name] : plots)
     if (auto p = coupling::render_plot(script, out / ("wearmap_rough_" + name + ".png"), 1000, 760))
       files.push_back(p->string());
@@ -395,7 +401,7 @@ int run_rough(const WearmapCase& wcase) {
                             {"files", files},
                             {"output_dir", out.string()}};
   if (!baseline.is_null()) summary["baseline"] = baseline;
-  write_file_atomically(out / "wearmap_rough_summary.json", summary.dump(2) + "\n");
+  outputs.commit(summary);
   if (a.json) {
     std::cout << summary.dump(2) << '\n';
     return 0;

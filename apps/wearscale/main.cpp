@@ -1,15 +1,19 @@
 // wearscale: friction and adhesive wear across scales.
 //
-// Exit status: 0 success, 2 bad input (message names file, key, value and the
-// allowed range), 1 numerical failure (message names solver, step, quantity),
-// 130 stopped by SIGINT/SIGTERM (checkpoints saved, unfinished files removed),
-// 3 internal error. Under mpirun/srun a rank that fails ends the whole job
-// with its status (MPI_Abort), so that no rank waits for it.
+// Exit status (docs/reliability.md): 0 success, 2 bad input (message names
+// file, key, value and the allowed range) or an output that cannot be written
+// (read-only, full, in use by another run: the path and the cause), 1
+// numerical failure (message names solver, step, quantity), 130 stopped by
+// SIGINT/SIGTERM (checkpoints saved, unfinished files removed), 3 internal
+// error (a bug). Under mpirun/srun a rank that fails ends the whole job with
+// its status (MPI_Abort), so that no rank waits for it.
 #include <omp.h>
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <map>
+#include <new>
 #include <string>
 
 #include "commands.hpp"
@@ -77,6 +81,7 @@ int run(int argc, char** argv) {
     FFTPlanCache::global().set_threads(threads);
   }
   install_interrupt_handlers();
+  app::set_invocation(argc, argv);
   if (mpi::size() > 1) {
     // No command distributes its work over ranks yet: P copies of one run would
     // write the same files at once. Refused on every rank before any work.
@@ -104,6 +109,19 @@ int run(int argc, char** argv) {
     }
     if (dynamic_cast<const NumericalError*>(&e) != nullptr) {
       log::error("{}", e.what());
+      return exit_numerical_failure;
+    }
+    // The file system refused an operation no check anticipated (a folder
+    // vanished, permissions changed under the run): bad environment, not a bug.
+    if (const auto* fe = dynamic_cast<const std::filesystem::filesystem_error*>(&e)) {
+      log::error("{}", fe->what());
+      return exit_bad_input;
+    }
+    // Sizes are checked against the memory limit before a run allocates; this
+    // is the last resort when the machine runs short anyway (other processes).
+    if (dynamic_cast<const std::bad_alloc*>(&e) != nullptr) {
+      log::error("out of memory: the run needs more memory than is free now (its sizes passed the check against "
+                 "the machine's memory; other processes may be using it)");
       return exit_numerical_failure;
     }
     log::error("internal error: {}", e.what());

@@ -127,14 +127,13 @@ std::filesystem::path output_folder(const WearmapCase& c, const Config& cfg, con
   return c.out.empty() ? std::filesystem::path(dir) : std::filesystem::path(c.out);
 }
 
-void create_output_folder(const WearmapCase& c, const std::filesystem::path& out) {
+OutputLock lock_output_folder(const WearmapCase& c, const std::filesystem::path& out) {
   std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (ec || !std::filesystem::is_directory(out))
-    throw InputError(fmt::format("{} = '{}' cannot be used as an output folder ({}); allowed: a folder that can be "
-                                 "created or written",
-                                 c.out.empty() ? "output.dir" : "--out", out.string(),
-                                 ec ? ec.message() : "not a folder"));
+  if (std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+    throw InputError(fmt::format("{} = '{}' cannot be used as an output folder (not a folder); allowed: a folder that "
+                                 "can be created and written",
+                                 c.out.empty() ? "output.dir" : "--out", out.string()));
+  return OutputLock::folder(out, "wearscale wearmap" + (c.case_file.empty() ? "" : " " + c.case_file));
 }
 
 }  // namespace wearscale::app

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "wearscale/core/config.hpp"
+#include "wearscale/core/output_lock.hpp"
 
 namespace wearscale::app {
 
@@ -59,8 +60,10 @@ std::string toml_range(std::pair<double, double> r);
 
 /// The output folder: --out, else [output] dir, else `fallback` (not created here).
 std::filesystem::path output_folder(const WearmapCase& c, const Config& cfg, const std::string& fallback);
-/// Creates `out`; InputError naming --out (or output.dir) if it cannot be a folder.
-void create_output_folder(const WearmapCase& c, const std::filesystem::path& out);
+/// Takes the output folder (created if missing) for this run, before its
+/// work: InputError naming --out or output.dir if it cannot be created or
+/// written, OutputError if another process writes into it.
+OutputLock lock_output_folder(const WearmapCase& c, const std::filesystem::path& out);
 
 template <class Read>
 auto naming_flags(const WearmapCase& c, Read&& read) -> decltype(read()) {

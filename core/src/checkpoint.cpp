@@ -11,11 +11,14 @@
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/sha256.hpp"
 
 namespace wearscale {
 
 namespace {
-constexpr const char* kFormat = "wearscale checkpoint 1";
+// Format 2: a SHA-256 checksum of the whole saved content, integer steps.
+constexpr const char* kFormat = "wearscale checkpoint 2";
+constexpr const char* kFormatPrefix = "wearscale checkpoint ";
 
 // Names joined one a line (names never hold a newline: they are code's own).
 std::string join_lines(const std::vector<std::string>& names) {
@@ -52,6 +55,15 @@ std::filesystem::path resume_folder(const std::filesystem::path& resume, const s
                                  "folder it continues",
                                  out.string(), resume.string()));
   return resume;
+}
+
+void require_fresh_start(const std::filesystem::path& checkpoint) {
+  std::error_code ec;
+  if (!std::filesystem::exists(checkpoint, ec)) return;
+  const auto dir = checkpoint.parent_path().empty() ? std::filesystem::path(".") : checkpoint.parent_path();
+  throw OutputError(fmt::format("{} holds the checkpoint of an unfinished run; continue it with --resume {}, or delete "
+                                "{} to start afresh",
+                                dir.string(), dir.string(), checkpoint.string()));
 }
 
 CheckpointPolicy checkpoint_policy(const Config& root) {
@@ -148,36 +160,77 @@ Checkpointer::Checkpointer(std::filesystem::path file, std::string fingerprint, 
 
 Checkpointer Checkpointer::disabled() { return Checkpointer(); }
 
-void Checkpointer::load() {
-  const std::string name = file_.string();
-  const H5Reader h5(file_);  // InputError if missing or not HDF5
+namespace {
+// The checksum of a checkpoint's content: everything load() restores, each
+// field length-prefixed, arrays by their bytes (bit for bit).
+std::string checksum(const std::string& fingerprint, const std::string& wisdom,
+                     const std::map<std::string, CheckpointState>& states) {
+  Sha256 h;
+  h.field(kFormat);
+  h.field(fingerprint);
+  h.field(wisdom);
+  for (const auto& [owner, s] : states) {
+    h.field(owner);
+    h.field(std::to_string(s.step));
+    for (const auto& [name, values] : s.arrays()) {
+      h.field(name);
+      h.field(std::string_view(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double)));
+    }
+    for (const auto& [name, text] : s.texts()) {
+      h.field(name);
+      h.field(text);
+    }
+  }
+  return h.hex();
+}
+}  // namespace
+
+void Checkpointer::load() {  // InputError if missing, not HDF5, or damaged
+  H5Reader::guarded(file_, [&](const H5Reader& file) { load(file); });
+}
+
+void Checkpointer::load(const H5Reader& h5) {
+  const std::string name = h5.name();
   std::string format;
   try {
     format = h5.string_attribute("/", "format");
   } catch (const InputError&) {
   }
-  if (format != kFormat)
+  if (format != kFormat) {
+    if (format.rfind(kFormatPrefix, 0) == 0)
+      throw InputError(fmt::format("{}: a checkpoint of format '{}', written by another version of wearscale (this one "
+                                   "reads '{}'); resume with that version, or delete it to start afresh",
+                                   name, format, kFormat));
     throw InputError(fmt::format("{}: not a wearscale checkpoint (format '{}', expected '{}')", name, format, kFormat));
+  }
   const std::string was = h5.string_attribute("/", "fingerprint");
+  const std::string wisdom = h5.string_attribute("/", "fftw_wisdom");
+  std::map<std::string, CheckpointState> states;
+  for (const auto& owner : split_lines(h5.string_attribute("/", "owners"))) {
+    const std::string g = group_of(owner);
+    CheckpointState s;
+    s.origin = fmt::format("{} ({})", name, owner);
+    const std::int64_t step = h5.integer_attribute(g, "step");
+    if (step < 0) throw InputError(fmt::format("{}: attribute 'step' of '{}' is {}; allowed: ≥ 0", name, g, step));
+    s.step = static_cast<long>(step);
+    const auto arrays = split_lines(h5.string_attribute(g, "arrays"));
+    for (std::size_t k = 0; k < arrays.size(); ++k) s.put(arrays[k], h5.read_exact(fmt::format("{}/a{}", g, k)));
+    const auto texts = split_lines(h5.string_attribute(g, "texts"));
+    for (std::size_t k = 0; k < texts.size(); ++k) s.put_text(texts[k], h5.string_attribute(g, fmt::format("t{}", k)));
+    states[owner] = std::move(s);
+  }
+  if (h5.string_attribute("/", "sha256") != checksum(was, wisdom, states))
+    throw InputError(fmt::format("{}: the checkpoint is damaged (its checksum does not match what it holds); delete it "
+                                 "to start afresh",
+                                 name));
   if (was != fingerprint_) {
     const std::string diff = describe_case_difference(was, fingerprint_);
     throw InputError(fmt::format("{}: the checkpoint belongs to a case with other parameters{}; resume with the case "
                                  "file and --set options of the interrupted run, or start afresh without --resume",
                                  name, diff.empty() ? "" : " (" + diff + ")"));
   }
-  for (const auto& owner : split_lines(h5.string_attribute("/", "owners"))) {
-    const std::string g = group_of(owner);
-    CheckpointState s;
-    s.origin = fmt::format("{} ({})", name, owner);
-    s.step = static_cast<long>(h5.number_attribute(g, "step"));
-    const auto arrays = split_lines(h5.string_attribute(g, "arrays"));
-    for (std::size_t k = 0; k < arrays.size(); ++k) s.put(arrays[k], h5.read_series(fmt::format("{}/a{}", g, k)));
-    const auto texts = split_lines(h5.string_attribute(g, "texts"));
-    for (std::size_t k = 0; k < texts.size(); ++k) s.put_text(texts[k], h5.string_attribute(g, fmt::format("t{}", k)));
-    last_step_[owner] = s.step;
-    states_[owner] = std::move(s);
-  }
-  const std::string wisdom = h5.string_attribute("/", "fftw_wisdom");
+  for (auto& [owner, s] : states) last_step_[owner] = s.step;
+  states_ = std::move(states);
   if (!wisdom.empty() && !FFTPlanCache::global().import_wisdom_string(wisdom))
     log::warn("{}: its FFTW wisdom could not be imported; the resumed run may differ in the last digits", name);
   last_save_ = std::chrono::steady_clock::now();
@@ -221,18 +274,21 @@ void Checkpointer::save(const std::string& owner, CheckpointState state) {
 }
 
 void Checkpointer::write() const {
-  H5Writer h5(file_);  // a temporary name until commit(): the previous checkpoint stays valid meanwhile
+  // A temporary name until commit(), at once (outside the run's output set):
+  // the previous checkpoint stays valid meanwhile.
+  H5Writer h5(file_, Commit::Now);
+  const std::string wisdom = FFTPlanCache::global().export_wisdom_string();
   h5.set_attribute("/", "format", kFormat);
   h5.set_attribute("/", "fingerprint", fingerprint_);
   h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
   h5.set_attribute("/", "written", utc_now());
-  h5.set_attribute("/", "fftw_wisdom", FFTPlanCache::global().export_wisdom_string());
+  h5.set_attribute("/", "fftw_wisdom", wisdom);
   std::vector<std::string> owners;
   for (const auto& [owner, s] : states_) {
     owners.push_back(owner);
     const std::string g = group_of(owner);
     h5.set_attribute(g, "owner", owner);
-    h5.set_attribute(g, "step", static_cast<double>(s.step));
+    h5.set_integer_attribute(g, "step", s.step);
     std::vector<std::string> arrays, texts;
     for (const auto& [name, values] : s.arrays()) {
       h5.write_series(fmt::format("{}/a{}", g, arrays.size()), values);
@@ -246,6 +302,7 @@ void Checkpointer::write() const {
     h5.set_attribute(g, "texts", join_lines(texts));
   }
   h5.set_attribute("/", "owners", join_lines(owners));
+  h5.set_attribute("/", "sha256", checksum(fingerprint_, wisdom, states_));
   h5.commit();
 }
 

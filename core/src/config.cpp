@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -12,14 +12,16 @@
 #include <toml++/toml.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/text_file.hpp"
 
 namespace wearscale {
 
 struct Config::State {
   toml::table root;
   std::string source;
+  std::filesystem::path base_dir;  // relative paths in the file are relative to its folder
   std::set<std::string, std::less<>> used;
-  std::set<std::string, std::less<>> overridden;
+  std::map<std::string, std::string, std::less<>> overridden;  // key → origin of its value
 };
 
 namespace {
@@ -112,16 +114,9 @@ Config& Config::operator=(Config&&) noexcept = default;
 Config::~Config() = default;
 
 Config Config::load(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec))
-    throw InputError(fmt::format("{}: no such case file", file.string()));
-  if (std::filesystem::is_directory(file, ec))
-    throw InputError(fmt::format("{}: is a directory, expected a TOML case file", file.string()));
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open for reading", file.string()));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return from_string(ss.str(), file.string());
+  Config cfg = from_string(read_text_file(file, "case file", max_case_file_bytes), file.string());
+  cfg.state_->base_dir = file.parent_path();
+  return cfg;
 }
 
 Config Config::from_string(std::string_view text, std::string source) {
@@ -136,7 +131,7 @@ Config Config::from_string(std::string_view text, std::string source) {
   return Config(std::move(state), "");
 }
 
-void Config::override_value(std::string_view assignment) {
+void Config::override_value(std::string_view assignment, std::string_view origin) {
   const auto eq = assignment.find('=');
   auto trim = [](std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -147,6 +142,9 @@ void Config::override_value(std::string_view assignment) {
     throw InputError(fmt::format("--set {}: expected KEY=VALUE, e.g. --set scale.macro.grid=64", assignment));
   const std::string key = full_key(trim(assignment.substr(0, eq)));
   const std::string_view text = trim(assignment.substr(eq + 1));
+  if (text.find_first_of("\n\r") != std::string_view::npos)
+    throw InputError(fmt::format("{}: key '{}': the value spans several lines; allowed: one value per --set", origin,
+                                 key));
 
   // The value as TOML if it parses as one, else as a bare string.
   toml::table parsed;
@@ -185,7 +183,7 @@ void Config::override_value(std::string_view assignment) {
     table = node->as_table();
     rest = rest.substr(dot + 1);
   }
-  state_->overridden.insert(key);
+  state_->overridden[key] = std::string(origin);
 }
 
 std::string Config::full_key(std::string_view key) const { return join(prefix_, key); }
@@ -221,16 +219,32 @@ InputError Config::error(std::string_view key, std::string_view problem, std::st
                                     fmt::format("{} (the case has '{}': misspelt?)", allowed, found));
         }
   }
-  std::string where = state_->source;
   std::string value;
-  if (state_->overridden.count(full) != 0) {
-    where = "--set";
-  }
-  if (auto node = state_->root.at_path(full); node) {
-    if (where != "--set") where += fmt::format(":{}", node.node()->source().begin.line);
-    value = repr(*node.node());
-  }
-  return InputError::at_key(where, full, value, std::string(problem), std::string(allowed));
+  if (auto node = state_->root.at_path(full); node) value = repr(*node.node());
+  return InputError::at_key(where(key), full, value, std::string(problem), std::string(allowed));
+}
+
+std::string Config::where(std::string_view key) const {
+  const std::string full = full_key(key);
+  // An element of an overridden array ("a.b[2]") comes from that override too.
+  for (std::string k = full.substr(0, full.find('[')); !k.empty(); k = parent_of(k))
+    if (const auto it = state_->overridden.find(k); it != state_->overridden.end()) return it->second;
+  if (auto node = state_->root.at_path(full); node)
+    return fmt::format("{}:{}", state_->source, node.node()->source().begin.line);
+  return state_->source;
+}
+
+std::filesystem::path Config::path(std::string_view key) const {
+  const std::string text = string(key);
+  if (text.empty() || text.find('\0') != std::string::npos)
+    throw error(key, "not a file name", "a file name, relative to the case file's folder");
+  std::filesystem::path p(text);
+  const std::string full = full_key(key);
+  bool from_file = true;
+  for (std::string k = full; !k.empty(); k = parent_of(k))
+    if (state_->overridden.count(k) != 0) from_file = false;
+  if (p.is_relative() && from_file && !state_->base_dir.empty()) p = (state_->base_dir / p).lexically_normal();
+  return p;
 }
 
 namespace {

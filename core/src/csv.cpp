@@ -8,21 +8,46 @@
 
 namespace wearscale {
 
-void write_csv(const std::filesystem::path& path, const std::vector<std::string>& names,
-               const std::vector<std::span<const double>>& columns, const std::vector<std::string>& comments) {
-  if (names.size() != columns.size()) throw std::invalid_argument("write_csv: names and columns differ in count");
-  const std::size_t rows = columns.empty() ? 0 : columns[0].size();
+namespace {
+std::string quoted(const std::string& cell) {
+  if (cell.find_first_of(",\"\n\r#") == std::string::npos && cell.find_first_not_of(' ') == 0) return cell;
+  std::string out = "\"";
+  for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string table_text(const std::vector<std::string>* labels, const std::vector<std::string>& names,
+                       const std::vector<std::span<const double>>& columns, const std::vector<std::string>& comments) {
+  if (names.size() != columns.size() + (labels ? 1 : 0))
+    throw std::invalid_argument("write_csv: names and columns differ in count");
+  const std::size_t rows = labels ? labels->size() : columns.empty() ? 0 : columns[0].size();
   for (const auto& c : columns)
     if (c.size() != rows) throw std::invalid_argument("write_csv: columns differ in length");
   std::string text;
   for (const auto& c : comments) text += fmt::format("# {}\n", c);
-  for (std::size_t k = 0; k < names.size(); ++k) text += (k ? "," : "") + names[k];
+  for (std::size_t k = 0; k < names.size(); ++k) text += (k ? "," : "") + quoted(names[k]);
   text += '\n';
   for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t k = 0; k < columns.size(); ++k) text += fmt::format("{}{:.10g}", k ? "," : "", columns[k][r]);
+    if (labels) text += quoted((*labels)[r]);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      text += fmt::format("{}{:.10g}", k || labels ? "," : "", columns[k][r]);
     text += '\n';
   }
-  write_file_atomically(path, text);
+  return text;
+}
+}  // namespace
+
+void write_csv(const std::filesystem::path& path, const std::vector<std::string>& names,
+               const std::vector<std::span<const double>>& columns, const std::vector<std::string>& comments) {
+  write_file_atomically(path, table_text(nullptr, names, columns, comments));
+}
+
+void write_csv(const std::filesystem::path& path, const std::string& label_name, const std::vector<std::string>& labels,
+               const std::vector<std::string>& names, const std::vector<std::span<const double>>& columns,
+               const std::vector<std::string>& comments) {
+  std::vector<std::string> header{label_name};
+  header.insert(header.end(), names.begin(), names.end());
+  write_file_atomically(path, table_text(&labels, header, columns, comments));
 }
 
 }  // namespace wearscale

@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <cmath>
 #include <mutex>
 #include <stdexcept>
 
@@ -9,6 +10,8 @@
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "hdf5_lock.hpp"
 
 namespace wearscale {
 
@@ -16,10 +19,7 @@ namespace {
 
 // Debian's serial HDF5 is not thread-safe: every call into it from these
 // wrappers holds this lock, so sweeps can run cases on several threads.
-std::recursive_mutex& hdf5_mutex() {
-  static std::recursive_mutex m;
-  return m;
-}
+using detail::hdf5_mutex;
 
 // HDF5 prints its own error stack by default; wearscale reports errors itself.
 void silence_hdf5() {
@@ -69,12 +69,16 @@ void put_string_attribute(hid_t obj, const std::string& name, std::string_view v
   check(H5Awrite(attr, type, buf.data()), "write attribute " + name);
 }
 
-void put_number_attribute(hid_t obj, const std::string& name, double value) {
+void put_number_attribute(hid_t obj, const std::string& name, hid_t file_type, hid_t memory_type, const void* value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
-  Handle attr(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Handle attr(H5Acreate2(obj, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   if (!attr.valid()) throw std::runtime_error("HDF5: cannot create attribute " + name);
-  check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+  check(H5Awrite(attr, memory_type, value), "write attribute " + name);
+}
+
+void put_number_attribute(hid_t obj, const std::string& name, double value) {
+  put_number_attribute(obj, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
 void write_dataset(hid_t parent, const std::string& name, const std::vector<hsize_t>& dims, const double* data,
@@ -89,6 +93,7 @@ void write_dataset(hid_t parent, const std::string& name, const std::vector<hsiz
     check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), "chunk");
     check(H5Pset_shuffle(dcpl), "shuffle");
     check(H5Pset_deflate(dcpl, 4), "deflate");
+    check(H5Pset_fletcher32(dcpl), "checksum");
   }
   if (H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0) check(H5Ldelete(parent, name.c_str(), H5P_DEFAULT), "replace " + name);
   Handle ds(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
@@ -110,17 +115,88 @@ bool path_exists(hid_t file, const std::string& path) {
   return true;
 }
 
+std::string class_name(H5T_class_t c) {
+  switch (c) {
+    case H5T_INTEGER: return "an integer";
+    case H5T_FLOAT: return "a floating-point number";
+    case H5T_STRING: return "a string";
+    case H5T_COMPOUND: return "a compound (record)";
+    case H5T_ENUM: return "an enumeration (e.g. a boolean)";
+    case H5T_ARRAY: return "an array type";
+    case H5T_VLEN: return "a variable-length sequence";
+    case H5T_REFERENCE: return "a reference";
+    default: return "an opaque or bit-field value";
+  }
+}
+
+// Elements of a dataspace: 0 for a null space, the product of the dimensions
+// (as a double: a declared size may exceed 2^64 bytes) otherwise.
+double element_count(hid_t space, std::vector<hsize_t>* dims = nullptr) {
+  const H5S_class_t kind = H5Sget_simple_extent_type(space);
+  if (kind == H5S_NULL || kind == H5S_NO_CLASS) return 0.0;
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 0 || rank > H5S_MAX_RANK) return std::nan("");
+  std::vector<hsize_t> d(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(space, d.data(), nullptr);
+  double n = 1.0;
+  for (auto v : d) n *= static_cast<double>(v);
+  if (dims != nullptr) *dims = std::move(d);
+  return n;
+}
+
+std::string dims_text(const std::vector<hsize_t>& dims) {
+  if (dims.empty()) return "a scalar";
+  std::string s;
+  for (auto d : dims) s += (s.empty() ? "" : " × ") + std::to_string(d);
+  return s;
+}
+
+// The text of a string attribute that is already open (fixed or variable length, one element).
+std::string read_string(hid_t attr, hid_t type, const std::string& where) {
+  if (H5Tis_variable_str(type) > 0) {
+    Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
+    check(H5Tset_size(mem, H5T_VARIABLE), "string type");
+    check(H5Tset_cset(mem, H5Tget_cset(type)), "string charset");
+    char* text = nullptr;
+    if (H5Aread(attr, mem, &text) < 0) throw InputError(fmt::format("{}: cannot read it as a string", where));
+    std::string out = text != nullptr ? std::string(text) : std::string();
+    if (text != nullptr) H5free_memory(text);
+    return out;
+  }
+  const std::size_t size = H5Tget_size(type);
+  require_memory(static_cast<double>(size), where);
+  std::string out(size, '\0');
+  Handle mem(H5Tcopy(type), H5Tclose);
+  if (size > 0 && H5Aread(attr, mem, out.data()) < 0)
+    throw InputError(fmt::format("{}: cannot read it as a string", where));
+  const auto end = out.find('\0');
+  if (end != std::string::npos) out.resize(end);
+  return out;
+}
+
 }  // namespace
+
 
 // ---------------------------------------------------------------- writer ---
 
-H5Writer::H5Writer(std::filesystem::path final_path) : final_(std::move(final_path)) {
+H5Writer::H5Writer(std::filesystem::path final_path, Commit mode) : final_(std::move(final_path)), mode_(mode) {
   std::lock_guard lock(hdf5_mutex());
   silence_hdf5();
-  if (!final_.parent_path().empty()) std::filesystem::create_directories(final_.parent_path());
+  if (!final_.parent_path().empty()) create_output_folder(final_.parent_path());
   partial_ = partial_path(final_);
-  file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("HDF5: cannot create " + partial_.string());
+  write_temporary_file(partial_, {});  // the folder takes files: checked now, not after the work
+  // In memory: HDF5 never writes to disk itself, so a full disk cannot fail
+  // inside it (its close would then crash at exit); commit() writes the image.
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  check(H5Pset_fapl_core(fapl, std::size_t{1} << 20, 0), "in-memory driver");
+  // The default (oldest) file format: HDF5 1.10's image of a file with a
+  // checksummed superblock (format 1.8+) carries a wrong checksum.
+  file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  if (file_ < 0) {
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
+    throw std::runtime_error("HDF5: cannot create " + partial_.string());
+  }
 }
 
 H5Writer::~H5Writer() {
@@ -216,6 +292,14 @@ void H5Writer::set_attribute(const std::string& object, const std::string& name,
   put_number_attribute(obj, name, value);
 }
 
+void H5Writer::set_integer_attribute(const std::string& object, const std::string& name, std::int64_t value) {
+  std::lock_guard lock(hdf5_mutex());
+  if (!H5Writer::exists(object)) ensure_group(object);
+  Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.valid()) throw std::runtime_error("HDF5: no object " + object);
+  put_number_attribute(obj, name, H5T_STD_I64LE, H5T_NATIVE_INT64, &value);
+}
+
 bool H5Writer::exists(const std::string& object) const {
   std::lock_guard lock(hdf5_mutex());
   return path_exists(file_, object);
@@ -224,9 +308,20 @@ bool H5Writer::exists(const std::string& object) const {
 void H5Writer::commit() {
   std::lock_guard lock(hdf5_mutex());
   if (committed_) return;
+  if (file_ < 0) throw std::logic_error("H5Writer: commit after a failed commit");
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + partial_.string());
+  const ssize_t size = H5Fget_file_image(file_, nullptr, 0);
+  if (size < 0) throw std::runtime_error("HDF5: cannot take the image of " + partial_.string());
+  std::string image(static_cast<std::size_t>(size), '\0');
+  if (H5Fget_file_image(file_, image.data(), image.size()) != size)
+    throw std::runtime_error("HDF5: cannot take the image of " + partial_.string());
   close();
-  commit_file(partial_, final_);
+  try {
+    write_temporary_file(partial_, image);
+    commit_file(partial_, final_, mode_);
+  } catch (const OutputError& e) {
+    throw OutputError(fmt::format("{}; {} was not written", e.what(), final_.string()));
+  }
   committed_ = true;
 }
 
@@ -268,15 +363,42 @@ std::unique_lock<std::recursive_mutex> lock_hdf5() {
 
 // ---------------------------------------------------------------- reader ---
 
-H5Reader::H5Reader(const std::filesystem::path& path) : path_(path) {
+H5Reader::H5Reader(const std::filesystem::path& path) : name_(path.string()) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(fmt::format("{}: no such file", name_));
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(fmt::format("{}: not a regular file; expected an HDF5 file", name_));
   std::lock_guard lock(hdf5_mutex());
   silence_hdf5();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: no such file", path.string()));
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(fmt::format("{}: not an HDF5 file", path.string()));
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(fmt::format("{}: not an HDF5 file", name_));
   file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file_ < 0) throw InputError(fmt::format("{}: cannot open HDF5 file", path.string()));
+  if (file_ < 0) throw InputError(fmt::format("{}: cannot open HDF5 file (damaged?)", name_));
 }
+
+H5Reader H5Reader::from_image(std::string_view bytes, const std::string& name) {
+  std::lock_guard lock(hdf5_mutex());
+  silence_hdf5();
+  H5Reader r;
+  r.name_ = name;
+  if (bytes.size() < 8) throw InputError(fmt::format("{}: not an HDF5 file", name));
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  check(H5Pset_fapl_core(fapl, std::size_t{1} << 16, 0), "in-memory driver");
+  check(H5Pset_file_image(fapl, const_cast<char*>(bytes.data()), bytes.size()), "file image");
+  r.file_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl);
+  if (r.file_ < 0) throw InputError(fmt::format("{}: not an HDF5 file, or a damaged one", name));
+  return r;
+}
+
+void detail::refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read) {
+  // Seconds a child may take: a hang in HDF5 is a damaged file too.
+  const detail::Trial trial = detail::try_in_child(read, 5.0 + bytes / 20e6);
+  if (!trial.failure.empty())
+    throw InputError(fmt::format("{}: damaged or not what it claims: {}", name, trial.failure));
+  if (!trial.input_error.empty()) throw InputError(trial.input_error);
+}
+
+H5Reader::H5Reader(H5Reader&& other) noexcept : name_(std::move(other.name_)), file_(other.file_) { other.file_ = -1; }
 
 H5Reader::~H5Reader() {
   std::lock_guard lock(hdf5_mutex());
@@ -288,80 +410,183 @@ bool H5Reader::exists(const std::string& path) const {
   return path_exists(file_, path);
 }
 
+namespace {
+
+// An open dataset with what its readers check: dimensions, element count and type class.
+struct DatasetInfo {
+  hid_t id = -1;
+  std::vector<hsize_t> dims;
+  double count = 0.0;
+  H5T_class_t type_class = H5T_NO_CLASS;
+  std::size_t type_size = 0;
+  std::size_t precision = 0;
+};
+
+DatasetInfo inspect(hid_t file, const std::string& file_name, const std::string& dataset) {
+  if (!path_exists(file, dataset)) throw InputError(fmt::format("{}: no dataset '{}'", file_name, dataset));
+  H5O_info_t info{};
+  if (H5Oget_info_by_name(file, dataset.c_str(), &info, H5P_DEFAULT) < 0 || info.type != H5O_TYPE_DATASET)
+    throw InputError(fmt::format("{}: '{}' is not a dataset", file_name, dataset));
+  DatasetInfo d;
+  d.id = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
+  if (d.id < 0) throw InputError(fmt::format("{}: cannot open dataset '{}' (damaged?)", file_name, dataset));
+  Handle space(H5Dget_space(d.id), H5Sclose);
+  Handle type(H5Dget_type(d.id), H5Tclose);
+  if (!space.valid() || !type.valid()) {
+    H5Dclose(d.id);
+    throw InputError(fmt::format("{}: cannot read the shape of dataset '{}' (damaged?)", file_name, dataset));
+  }
+  d.count = element_count(space, &d.dims);
+  d.type_class = H5Tget_class(type);
+  d.type_size = H5Tget_size(type);
+  d.precision = d.type_class == H5T_INTEGER || d.type_class == H5T_FLOAT ? H5Tget_precision(type) : 0;
+  if (!std::isfinite(d.count)) {
+    H5Dclose(d.id);
+    throw InputError(fmt::format("{}: dataset '{}' has a malformed shape", file_name, dataset));
+  }
+  return d;
+}
+
+// The values of a numeric dataset, as doubles, after the memory check.
+std::vector<double> read_numbers(const DatasetInfo& d, const std::string& file_name, const std::string& dataset) {
+  Handle ds(d.id, H5Dclose);
+  if (d.type_class != H5T_INTEGER && d.type_class != H5T_FLOAT)
+    throw InputError(fmt::format("{}: dataset '{}' holds {} values, not numbers", file_name, dataset,
+                                 class_name(d.type_class)));
+  require_memory(d.count * sizeof(double),
+                 fmt::format("{}: dataset '{}' ({} values)", file_name, dataset, dims_text(d.dims)));
+  std::vector<double> out(static_cast<std::size_t>(d.count));
+  if (!out.empty() && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    throw InputError(fmt::format("{}: cannot read dataset '{}' as numbers (damaged or an unsupported type?)",
+                                 file_name, dataset));
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::size_t> H5Reader::shape(const std::string& dataset) const {
   std::lock_guard lock(hdf5_mutex());
-  if (!exists(dataset)) throw InputError(fmt::format("{}: no dataset '{}'", path_.string(), dataset));
-  Handle ds(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
-  if (!ds.valid()) throw InputError(fmt::format("{}: '{}' is not a dataset", path_.string(), dataset));
-  Handle space(H5Dget_space(ds), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  return {dims.begin(), dims.end()};
+  const DatasetInfo d = inspect(file_, name_, dataset);
+  H5Dclose(d.id);
+  return {d.dims.begin(), d.dims.end()};
 }
 
 std::vector<double> H5Reader::read_series(const std::string& dataset) const {
   std::lock_guard lock(hdf5_mutex());
-  const auto dims = shape(dataset);
-  std::size_t n = 1;
-  for (auto d : dims) n *= d;
-  std::vector<double> out(n);
-  Handle ds(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
-  if (H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
-    throw InputError(fmt::format("{}: cannot read '{}' as numbers", path_.string(), dataset));
-  return out;
+  return read_numbers(inspect(file_, name_, dataset), name_, dataset);
+}
+
+std::vector<double> H5Reader::read_exact(const std::string& dataset) const {
+  std::lock_guard lock(hdf5_mutex());
+  const DatasetInfo d = inspect(file_, name_, dataset);
+  if (d.type_class != H5T_FLOAT || d.type_size != 8 || d.precision != 64 || d.dims.size() > 1) {
+    H5Dclose(d.id);
+    throw InputError(fmt::format("{}: dataset '{}' is {} of {} ({} bytes each); expected a series of 64-bit floats",
+                                 name_, dataset, dims_text(d.dims), class_name(d.type_class), d.type_size));
+  }
+  return read_numbers(d, name_, dataset);
 }
 
 double H5Reader::read_scalar(const std::string& dataset) const {
   std::lock_guard lock(hdf5_mutex());
   auto v = read_series(dataset);
-  if (v.size() != 1) throw InputError(fmt::format("{}: '{}' is not a scalar", path_.string(), dataset));
+  if (v.size() != 1) throw InputError(fmt::format("{}: '{}' holds {} values, not one", name_, dataset, v.size()));
   return v[0];
 }
 
 RealField H5Reader::read_field(const std::string& dataset) const {
   std::lock_guard lock(hdf5_mutex());
-  const auto dims = shape(dataset);
-  if (dims.size() != 2 || dims[0] < 1 || dims[1] < 1)
-    throw InputError(fmt::format("{}: '{}' is not a 2D field (rank {})", path_.string(), dataset, dims.size()));
-  Handle ds(H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
-  auto attr_or = [&](const char* name, double fallback) {
-    if (H5Aexists(ds, name) <= 0) return fallback;
-    Handle a(H5Aopen(ds, name, H5P_DEFAULT), H5Aclose);
-    double v = fallback;
-    H5Aread(a, H5T_NATIVE_DOUBLE, &v);
-    return v;
-  };
-  RealField f(Grid2D(dims[0], dims[1], attr_or("lx", 1.0), attr_or("ly", 1.0)));
-  if (H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, f.data()) < 0)
-    throw InputError(fmt::format("{}: cannot read '{}' as numbers", path_.string(), dataset));
+  const DatasetInfo d = inspect(file_, name_, dataset);
+  if (d.dims.size() != 2 || d.dims[0] < 1 || d.dims[1] < 1) {
+    H5Dclose(d.id);
+    throw InputError(fmt::format("{}: '{}' is not a 2D field ({})", name_, dataset, dims_text(d.dims)));
+  }
+  const double lx = number_attribute_if(dataset, "lx").value_or(1.0);
+  const double ly = number_attribute_if(dataset, "ly").value_or(1.0);
+  const auto values = read_numbers(d, name_, dataset);  // memory checked there, before the field below
+  RealField f(Grid2D(d.dims[0], d.dims[1], lx, ly));
+  std::copy(values.begin(), values.end(), f.begin());
   return f;
+}
+
+long long H5Reader::open_attribute(const std::string& object, const std::string& name, bool required) const {
+  if (!path_exists(file_, object)) {
+    if (!required) return -1;
+    throw InputError(fmt::format("{}: no object '{}' (looking for its attribute '{}')", name_, object, name));
+  }
+  Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
+  if (!obj.valid()) throw InputError(fmt::format("{}: cannot open '{}' (damaged?)", name_, object));
+  const htri_t present = H5Aexists(obj, name.c_str());
+  if (present <= 0) {
+    if (!required && present == 0) return -1;
+    throw InputError(fmt::format("{}: no attribute '{}' on '{}'", name_, name, object));
+  }
+  const hid_t attr = H5Aopen(obj, name.c_str(), H5P_DEFAULT);
+  if (attr < 0) throw InputError(fmt::format("{}: cannot open attribute '{}' on '{}' (damaged?)", name_, name, object));
+  Handle space(H5Aget_space(attr), H5Sclose);
+  std::vector<hsize_t> dims;
+  const double count = space.valid() ? element_count(space, &dims) : std::nan("");
+  if (count != 1.0) {
+    H5Aclose(attr);
+    throw InputError(fmt::format("{}: attribute '{}' on '{}' holds {} values ({}); allowed: one", name_, name, object,
+                                 std::isfinite(count) ? fmt::format("{:g}", count) : "?", dims_text(dims)));
+  }
+  return attr;
 }
 
 std::string H5Reader::string_attribute(const std::string& object, const std::string& name) const {
   std::lock_guard lock(hdf5_mutex());
-  Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
-  if (!obj.valid() || H5Aexists(obj, name.c_str()) <= 0)
-    throw InputError(fmt::format("{}: no attribute '{}' on '{}'", path_.string(), name, object));
-  Handle attr(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
+  { Handle probe(open_attribute(object, name, true), H5Aclose); }  // absent: InputError naming it
+  return *string_attribute_if(object, name);
+}
+
+std::optional<std::string> H5Reader::string_attribute_if(const std::string& object, const std::string& name) const {
+  std::lock_guard lock(hdf5_mutex());
+  const hid_t id = open_attribute(object, name, false);
+  if (id < 0) return std::nullopt;
+  Handle attr(id, H5Aclose);
   Handle type(H5Aget_type(attr), H5Tclose);
+  const std::string where = fmt::format("{}: attribute '{}' on '{}'", name_, name, object);
   if (H5Tget_class(type) != H5T_STRING)
-    throw InputError(fmt::format("{}: attribute '{}' on '{}' is not a string", path_.string(), name, object));
-  std::string out(H5Tget_size(type), '\0');
-  Handle mem(H5Tcopy(type), H5Tclose);
-  check(H5Aread(attr, mem, out.data()), "read attribute " + name);
-  while (!out.empty() && out.back() == '\0') out.pop_back();
-  return out;
+    throw InputError(fmt::format("{} is {}, not a string", where, class_name(H5Tget_class(type))));
+  return read_string(attr, type, where);
+}
+
+std::optional<double> H5Reader::number_attribute_if(const std::string& object, const std::string& name) const {
+  std::lock_guard lock(hdf5_mutex());
+  const hid_t id = open_attribute(object, name, false);
+  if (id < 0) return std::nullopt;
+  Handle attr(id, H5Aclose);
+  Handle type(H5Aget_type(attr), H5Tclose);
+  const H5T_class_t c = H5Tget_class(type);
+  const std::string where = fmt::format("{}: attribute '{}' on '{}'", name_, name, object);
+  if (c == H5T_STRING) {
+    std::string text = read_string(attr, type, where);
+    if (text.size() > 40) text = text.substr(0, 40) + "…";
+    throw InputError(fmt::format("{} is the string '{}'; allowed: one number", where, text));
+  }
+  if (c != H5T_INTEGER && c != H5T_FLOAT)
+    throw InputError(fmt::format("{} is {}; allowed: one number", where, class_name(c)));
+  double v = 0.0;
+  if (H5Aread(attr, H5T_NATIVE_DOUBLE, &v) < 0) throw InputError(fmt::format("{}: cannot read it as a number", where));
+  return v;
 }
 
 double H5Reader::number_attribute(const std::string& object, const std::string& name) const {
   std::lock_guard lock(hdf5_mutex());
-  Handle obj(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose);
-  if (!obj.valid() || H5Aexists(obj, name.c_str()) <= 0)
-    throw InputError(fmt::format("{}: no attribute '{}' on '{}'", path_.string(), name, object));
-  Handle attr(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
-  double v = 0.0;
-  check(H5Aread(attr, H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
+  { Handle probe(open_attribute(object, name, true), H5Aclose); }  // absent: InputError naming it
+  return *number_attribute_if(object, name);
+}
+
+std::int64_t H5Reader::integer_attribute(const std::string& object, const std::string& name) const {
+  std::lock_guard lock(hdf5_mutex());
+  Handle attr(open_attribute(object, name, true), H5Aclose);
+  Handle type(H5Aget_type(attr), H5Tclose);
+  const std::string where = fmt::format("{}: attribute '{}' on '{}'", name_, name, object);
+  if (H5Tget_class(type) != H5T_INTEGER)
+    throw InputError(fmt::format("{} is {}; allowed: one integer", where, class_name(H5Tget_class(type))));
+  std::int64_t v = 0;
+  if (H5Aread(attr, H5T_NATIVE_INT64, &v) < 0) throw InputError(fmt::format("{}: cannot read it as an integer", where));
   return v;
 }
 

@@ -24,7 +24,10 @@
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_lock.hpp"
+#include "wearscale/core/output_set.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 #include "wearscale/coupling/plots.hpp"
@@ -62,11 +65,26 @@ std::string utc_now() {
   return buf;
 }
 
-Config load(const RunOptions& options, const std::vector<std::string>& extra) {
-  Config cfg = Config::load(options.case_file);
+// The case (parsed afresh by `parse`) with its --set overrides, and `extra`
+// (a sweep value) from `origin`.
+// The case with the overrides, then the `extra` ones (value, where it comes from).
+Config load(const CaseLoader& parse, const RunOptions& options,
+            const std::vector<std::pair<std::string, std::string>>& extra = {}) {
+  Config cfg = parse();
   for (const auto& o : options.overrides) cfg.override_value(o);
-  for (const auto& o : extra) cfg.override_value(o);
+  for (const auto& [value, origin] : extra) cfg.override_value(value, origin);
   return cfg;
+}
+
+// The threads this process may use (-j, else OMP_NUM_THREADS, else the cores).
+int thread_budget() { return std::max(1, omp_get_max_threads()); }
+
+// The command that runs (or continues) this case with the same options and
+// threads, for messages: a resumed run is bit for bit only on as many threads.
+std::string command_line(const RunOptions& options, int threads) {
+  std::string line = "wearscale run " + options.case_file.string();
+  for (const auto& o : options.overrides) line += fmt::format(" --set '{}'", o);
+  return line + fmt::format(" -j {}", threads);
 }
 
 Pipeline build_pipeline(const Config& cfg) {
@@ -125,13 +143,6 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   return run;
 }
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // What --resume finds in a run's folder: a checkpoint to continue from, the
 // summary of a run that had completed, or nothing yet (it starts afresh).
 void find_resume_point(PreparedRun& run) {
@@ -150,7 +161,7 @@ void find_resume_point(PreparedRun& run) {
   }
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(slurp(summary_file));
+    j = nlohmann::json::parse(read_text_file(summary_file, "summary", std::uintmax_t{1} << 26));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a wearscale summary ({})", summary_file.string(), e.what()));
   }
@@ -161,24 +172,35 @@ void find_resume_point(PreparedRun& run) {
                                  "options it was run with, or write to another folder",
                                  summary_file.string(), diff.empty() ? "" : " (" + diff + ")"));
   }
+  if (const std::string broken = OutputSet::verify(dir, j); !broken.empty()) {
+    log::warn("{}: the outputs of the completed run are not intact ({}): the run starts again", dir.string(), broken);
+    return;
+  }
   run.summary.results = j.value("results", nlohmann::json::object());
-  for (const auto& f : j.value("files", nlohmann::json::array())) run.summary.files.emplace_back(f.get<std::string>());
+  for (const auto& f : j.value("files", nlohmann::json::array()))
+    if (f.is_string()) run.summary.files.emplace_back(f.get<std::string>());
   run.complete = true;
+  run.summary.complete_before = true;
 }
 
-void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
+// A fresh run never throws away the checkpoint of an unfinished one.
+void check_fresh_start(const PreparedRun& run) { require_fresh_start(run.summary.output_dir / "checkpoint.h5"); }
+
+// Runs a prepared case into its folder: every output staged and published
+// together with summary.json (OutputSet), the checkpoint removed after that.
+// `command` locks the folder when the caller has not (the runs of a sweep).
+void execute(PreparedRun& run, const RunOptions& options, bool show_progress, const std::string* command) {
   RunSummary& summary = run.summary;
   if (run.complete) {
     log::info("{}: already complete", summary.output_dir.string());
     return;
   }
-  std::error_code ec;
-  std::filesystem::create_directories(summary.output_dir, ec);
-  if (ec)
-    throw InputError(fmt::format("output folder {}: cannot create it: {}", summary.output_dir.string(), ec.message()));
+  std::optional<OutputLock> lock;
+  if (command != nullptr) lock.emplace(OutputLock::folder(summary.output_dir, *command));
+  create_output_folder(summary.output_dir);
   remove_stale_partials(summary.output_dir);  // left by a killed run
   if (!run.checkpoints) run.checkpoints.emplace(summary.output_dir / "checkpoint.h5", run.fingerprint, run.policy);
-  if (!run.resume) run.checkpoints->discard();  // a fresh run: an older checkpoint must not be resumed later
+  OutputSet outputs(summary.output_dir, "summary.json");
   H5Writer h5(summary.output_dir / "run.h5");
   h5.set_attribute("/", "case_file", options.case_file.string());
   h5.set_attribute("/", "case_toml", run.cfg.to_toml());
@@ -202,7 +224,10 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
   }
   h5.set_attribute("/", "provenance", provenance.dump(1));
   for (const auto& [name, r] : context.results().items()) {
-    h5.write_scalar("/results/" + name, r["value"].get<double>(), r["unit"].get<std::string>());
+    const double value = r["value"].get<double>();
+    if (!std::isfinite(value))  // never a NaN (null in JSON) or infinite headline figure
+      throw NumericalError("case " + summary.case_name, 0, name, fmt::format("the result is {}", value));
+    h5.write_scalar("/results/" + name, value, r["unit"].get<std::string>());
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
   summary.results = context.results();
@@ -210,12 +235,12 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
   h5.commit();
   summary.files.insert(summary.files.begin(), h5.final_path());
   const auto friction = summary.output_dir / "friction.csv";
-  if (std::filesystem::exists(friction))
+  if (std::filesystem::exists(OutputSet::readable(friction)))
     if (auto png = plot_friction_curves({{summary.case_name, friction}}, summary.output_dir / "friction.png",
                                         summary.case_name))
       summary.files.push_back(*png);
-  write_file_atomically(summary.output_dir / "summary.json", summary.to_json().dump(2) + "\n");
   summary.files.push_back(summary.output_dir / "summary.json");
+  outputs.commit(summary.to_json());
   if (run.checkpoints->saves() > 0)
     log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
                run.checkpoints->seconds_saving());
@@ -223,12 +248,9 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress) {
 }
 
 // How to continue an interrupted run, added to the Interrupted message.
-[[noreturn]] void rethrow_interrupted(const Interrupted& e, const RunOptions& options,
+[[noreturn]] void rethrow_interrupted(const Interrupted& e, const std::string& command,
                                       const std::filesystem::path& dir) {
-  std::string sets;
-  for (const auto& o : options.overrides) sets += fmt::format(" --set '{}'", o);
-  throw Interrupted(fmt::format("{}; continue with: wearscale run {}{} --resume {}", e.what(),
-                                options.case_file.string(), sets, dir.string()));
+  throw Interrupted(fmt::format("{}; continue with: {} --resume {}", e.what(), command, dir.string()));
 }
 
 std::string label_of(const std::string& key, const std::string& value) {
@@ -239,46 +261,112 @@ std::string label_of(const std::string& key, const std::string& value) {
   return leaf;
 }
 
-RunSummary run_sweep(const RunOptions& options, Config& probe) {
+// The checks of a [sweep] that need no run: the key, its values, the table.
+void check_sweep(const Config& probe, const std::string& key, const std::vector<std::string>& values,
+                 const std::vector<std::string>& labels, const std::string& table_name) {
+  for (const char* reserved : {"output", "sweep"})
+    if (key == reserved || key.rfind(std::string(reserved) + ".", 0) == 0)
+      throw probe.error("sweep.key", fmt::format("[{}] cannot be swept (each run of a sweep writes into its own "
+                                                 "folder of the sweep's output folder)", reserved),
+                        "a key of what the case computes, e.g. materials.layer.thickness");
+  if (!probe.has(key))
+    throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
+  for (std::size_t a = 0; a < values.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b) {
+      bool same = values[a] == values[b] || labels[a] == labels[b];
+      try {  // "1 um" and 1e-6 are one run too
+        same = same || units::parse_quantity(values[a]).value == units::parse_quantity(values[b]).value;
+      } catch (const std::exception&) {
+      }
+      if (same)
+        throw probe.error("sweep.values",
+                          fmt::format("values {} ('{}') and {} ('{}') are the same run (folder {})", b + 1, values[b],
+                                      a + 1, values[a], labels[a]),
+                          "distinct values");
+    }
+  const bool plain = !table_name.empty() && table_name.front() != '.' && table_name.find('/') == std::string::npos &&
+                     table_name.find('\0') == std::string::npos;
+  if (!plain || table_name == "summary.json" || std::find(labels.begin(), labels.end(), table_name) != labels.end())
+    throw probe.error("sweep.table", "not a file name for the sweep table",
+                      "a plain file name in the sweep's folder (no '/', not hidden, not summary.json or a run's folder)");
+}
+
+// A sweep checked and ready: every run prepared, nothing written yet.
+struct SweepPlan {
+  RunSummary sweep;
+  std::vector<std::string> values;      // the swept key's values
+  std::vector<std::string> labels;      // their run folders' names
+  std::string series_key;               // [sweep.series] key, or ""
+  std::vector<std::string> series;      // its values
+  std::vector<std::string> run_series;  // the series value of each run
+  std::string table_name;
+  bool parallel = true;
+  std::vector<PreparedRun> runs;
+};
+
+SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config& probe) {
+  SweepPlan plan;
   const std::string key = probe.string("sweep.key");
   const auto values = probe.values_as_text("sweep.values");
-  const std::string table_name = probe.string_or("sweep.table", "sweep.csv");
-  const bool parallel = probe.boolean_or("sweep.parallel", true);
+  plan.table_name = probe.string_or("sweep.table", "sweep.csv");
+  plan.parallel = probe.boolean_or("sweep.parallel", true);
   // [sweep.series]: the sweep once more per value of a second key.
-  const std::string series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
-  const auto series = series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
-  RunSummary sweep;
+  plan.series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
+  plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
+  const std::vector<std::string>& series = plan.series;
+  plan.values = values;
+  for (const auto& v : values) plan.labels.push_back(label_of(key, v));
+  check_sweep(probe, key, values, plan.labels, plan.table_name);
+  if (!plan.series_key.empty() && !probe.has(plan.series_key))
+    throw probe.error("sweep.series.key", "the series key is not in the case (give it a value there first)",
+                      "a key of the case");
+  RunSummary& sweep = plan.sweep;
   sweep.case_name = probe.string("case.name");
   sweep.output_dir = options.output_dir ? *options.output_dir
                                         : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
   sweep.sweep_key = key;
-  sweep.series_key = series_key;
-
-  // Every run is checked before any starts; resuming, every checkpoint is
-  // read (and its FFT plans imported) before any run makes a plan.
-  std::vector<PreparedRun> runs;
-  std::vector<std::string> run_value, run_series;
+  sweep.series_key = plan.series_key;
+  // Every run is checked before any starts.
+  const std::string where = probe.where("sweep.values");
+  std::vector<std::string> run_value;
   for (const auto& sv : series) {
-    if (!series_key.empty() && !probe.has(series_key))
-      throw probe.error("sweep.series.key", "the series key is not in the case (give it a value there first)",
-                        "a key of the case");
-    const auto folder = series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(series_key, sv);
-    for (const auto& v : values) {
-      if (!probe.has(key))
-        throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
-      std::vector<std::string> extra{key + "=" + v};
-      if (!series_key.empty()) extra.push_back(series_key + "=" + sv);
-      runs.push_back(prepare(load(options, extra), folder / label_of(key, v)));
-      run_value.push_back(v);
-      run_series.push_back(sv);
+    const auto folder =
+        plan.series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(plan.series_key, sv);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      std::vector<std::pair<std::string, std::string>> extra{
+          {key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)}};
+      if (!plan.series_key.empty()) extra.push_back({plan.series_key + "=" + sv, probe.where("sweep.series.values")});
+      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k]));
+      run_value.push_back(values[k]);
+      plan.run_series.push_back(sv);
     }
   }
   sweep.sweep_values = run_value;
-  if (!series_key.empty()) sweep.series_values = run_series;
+  if (!plan.series_key.empty()) sweep.series_values = plan.run_series;
+  return plan;
+}
+
+RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config& probe, int threads) {
+  SweepPlan plan = plan_sweep(parse, options, probe);
+  RunSummary& sweep = plan.sweep;
+  std::vector<PreparedRun>& runs = plan.runs;
+  const std::string& key = sweep.sweep_key;
+  const std::vector<std::string>& values = plan.values;            // the swept key's values
+  const std::vector<std::string>& run_value = sweep.sweep_values;  // ... of each run
+  const std::vector<std::string>& run_series = plan.run_series;
+  const std::string& series_key = plan.series_key;
+  const std::vector<std::string>& series = plan.series;
+  const std::string& table_name = plan.table_name;
+  const bool parallel = plan.parallel;
+  // Resuming, every checkpoint is read (and its FFT plans imported) before any run makes a plan.
+  const std::string command = command_line(options, threads);
+  const OutputLock lock = OutputLock::folder(sweep.output_dir, command);
   if (options.resume_dir) {
     for (auto& r : runs) find_resume_point(r);
     const auto finished = std::count_if(runs.begin(), runs.end(), [](const PreparedRun& r) { return r.complete; });
     log::info("resuming the sweep in {}: {} of {} runs complete", sweep.output_dir.string(), finished, runs.size());
+  } else {
+    for (const auto& r : runs) check_fresh_start(r);
   }
   FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
   sweep.scales = runs.front().summary.scales;
@@ -286,22 +374,26 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
   sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
   if (!series_key.empty()) sweep.parameters["sweep"]["series"] = {{"key", series_key}, {"values", series}};
 
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned workers = parallel ? std::min<unsigned>(cores, static_cast<unsigned>(runs.size())) : 1u;
-  log::info("sweep over {}: {} runs on {} worker(s) → {}", key, runs.size(), workers, sweep.output_dir.string());
+  // The thread budget (-j) shared out: runs side by side, the rest inside each run.
+  const unsigned budget = static_cast<unsigned>(threads);
+  const unsigned workers = parallel ? std::min<unsigned>(budget, static_cast<unsigned>(runs.size())) : 1u;
+  const int per_run = static_cast<int>(std::max(1u, budget / workers));
+  if (workers > 1) FFTPlanCache::global().set_threads(per_run);
+  log::info("sweep over {}: {} runs on {} worker(s) × {} thread(s) → {}", key, runs.size(), workers, per_run,
+            sweep.output_dir.string());
   std::vector<std::exception_ptr> errors(runs.size());
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex progress_mutex;
   Progress progress("sweep", static_cast<double>(runs.size()), "runs");
   auto work = [&] {
-    if (workers > 1) omp_set_num_threads(1);  // the cores are shared out among runs
+    if (workers > 1) omp_set_num_threads(per_run);
     for (std::size_t k = next++; k < runs.size() && !interrupt_requested(); k = next++) {
       try {
-        execute(runs[k], options, false);
+        execute(runs[k], options, false, &command);
       } catch (...) {
         errors[k] = std::current_exception();
       }
-      std::lock_guard lock(progress_mutex);
+      std::lock_guard guard(progress_mutex);
       progress.update(static_cast<double>(++done));
     }
   };
@@ -315,39 +407,36 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
     for (auto& e : errors)
       if (e) std::rethrow_exception(e);
   } catch (const Interrupted& e) {
-    rethrow_interrupted(e, options, sweep.output_dir);
+    rethrow_interrupted(e, command, sweep.output_dir);
   }
 
-  // The sweep table (one per series value): the swept value, then every
+  // The sweep tables (one per series value): the swept value, then every
   // headline figure of the runs.
+  OutputSet outputs(sweep.output_dir, "summary.json");
   std::vector<std::string> names;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  // A swept value that is not a number (a choice) is written as its index.
-  bool numeric = true;
-  for (const auto& v : values) {
-    try {
-      (void)units::parse_quantity(v);
+  // The swept values as numbers, if they all are (else the tables keep the text).
+  std::vector<double> numeric;
+  for (const auto& v : values) try {
+      numeric.push_back(units::parse_quantity(v).value);
     } catch (const std::exception&) {
-      numeric = false;
+      numeric.clear();
+      break;
     }
-  }
-  std::string legend;
-  for (std::size_t k = 0; k < values.size() && !numeric; ++k) legend += fmt::format("{}{} = {}", k ? ", " : "", k, values[k]);
+  const bool numeric_values = numeric.size() == values.size();
   std::vector<SweepTable> tables;
   for (std::size_t first = 0; first < runs.size(); first += values.size()) {
-    std::vector<std::vector<double>> columns(names.size() + 1);
-    for (std::size_t k = first; k < first + values.size(); ++k) {
-      columns[0].push_back(numeric ? units::parse_quantity(run_value[k]).value : static_cast<double>(k - first));
+    std::vector<std::vector<double>> columns(names.size());
+    for (std::size_t k = first; k < first + values.size(); ++k)
       for (std::size_t c = 0; c < names.size(); ++c) {
         const auto& res = runs[k].summary.results;
-        columns[c + 1].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+        columns[c].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
       }
-    }
-    std::vector<std::string> header{key};
-    header.insert(header.end(), names.begin(), names.end());
-    std::vector<std::span<const double>> spans(columns.begin(), columns.end());
+    std::vector<std::span<const double>> spans;
+    if (numeric_values) spans.emplace_back(numeric);
+    for (const auto& c : columns) spans.emplace_back(c);
     const std::filesystem::path base(table_name);
     const std::string label = series_key.empty() ? "" : label_of(series_key, run_series[first]);
     const auto table = sweep.output_dir / (label.empty() ? base : std::filesystem::path(base.stem().string() + "_" + label +
@@ -355,8 +444,13 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
     std::vector<std::string> comments{
         fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
     if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
-    if (!numeric) comments.push_back(fmt::format("{}: the index of the value: {}", key, legend));
-    write_csv(table, header, spans, comments);
+    if (numeric_values) {
+      std::vector<std::string> header{key};
+      header.insert(header.end(), names.begin(), names.end());
+      write_csv(table, header, spans, comments);
+    } else {
+      write_csv(table, key, values, names, spans, comments);
+    }
     sweep.files.push_back(table);
     tables.push_back({label.empty() ? "model" : label, table});
   }
@@ -383,11 +477,12 @@ RunSummary run_sweep(const RunOptions& options, Config& probe) {
     if (auto png = plot_disc_profiles(profiles, sweep.output_dir / "disc_profiles.png", sweep.case_name, h))
       sweep.files.push_back(*png);
   }
-  if (key == "materials.layer.thickness" && std::find(names.begin(), names.end(), "mu_mean") != names.end())
+  if (key == "materials.layer.thickness" && numeric_values &&
+      std::find(names.begin(), names.end(), "mu_mean") != names.end())
     if (auto png = plot_friction_vs_thickness(tables, sweep.output_dir / "friction_vs_thickness.png"))
       sweep.files.push_back(*png);
-  write_file_atomically(sweep.output_dir / "summary.json", sweep.to_json().dump(2) + "\n");
   sweep.files.push_back(sweep.output_dir / "summary.json");
+  outputs.commit(sweep.to_json());
   return sweep;
 }
 
@@ -397,19 +492,37 @@ RunSummary run_case(const RunOptions& options_in) {
   RunOptions options = options_in;
   if (options.resume_dir)
     options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
-  Config probe = load(options, {});
-  if (probe.has("sweep")) return run_sweep(options, probe);
+  const int threads = thread_budget();
+  const CaseLoader parse = [&] { return Config::load(options.case_file); };
+  Config probe = load(parse, options);
+  if (probe.has("sweep")) return run_sweep(parse, options, probe, threads);
   PreparedRun run = prepare(std::move(probe), options.output_dir);  // a single run: the file is parsed once
-  if (options.resume_dir) find_resume_point(run);
+  const std::string command = command_line(options, threads);
+  const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
+  if (options.resume_dir)
+    find_resume_point(run);
+  else
+    check_fresh_start(run);
   FFTPlanCache::global().set_rigor(run.fft_rigor);
   log::info("case '{}': {} → {}", run.summary.case_name, fmt::join(run.summary.scales, " → "),
             run.summary.output_dir.string());
   try {
-    execute(run, options, true);
+    execute(run, options, true, nullptr);
   } catch (const Interrupted& e) {
-    rethrow_interrupted(e, options, run.summary.output_dir);
+    rethrow_interrupted(e, command, run.summary.output_dir);
   }
   return run.summary;
+}
+
+std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options) {
+  Config probe = load(parse, options);
+  std::vector<std::filesystem::path> folders;
+  if (probe.has("sweep")) {
+    for (const auto& r : plan_sweep(parse, options, probe).runs) folders.push_back(r.summary.output_dir);
+  } else {
+    folders.push_back(prepare(std::move(probe), options.output_dir).summary.output_dir);
+  }
+  return folders;
 }
 
 }  // namespace wearscale::coupling

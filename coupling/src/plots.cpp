@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/output_set.hpp"
 
 namespace wearscale::coupling {
 
@@ -21,21 +23,46 @@ bool plotting_available() {
   return available;
 }
 
+namespace {
+// A whole PNG: the signature, and the IEND chunk closing it (gnuplot exits 0
+// even when the disk filled up under it, leaving a truncated image).
+bool complete_png(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  char head[8] = {}, tail[12] = {};
+  if (!in.read(head, 8) || std::string_view(head, 8) != "\x89PNG\r\n\x1a\n") return false;
+  in.seekg(-12, std::ios::end);
+  return in.read(tail, 12) && std::string_view(tail + 4, 8) == "IEND\xae\x42\x60\x82";
+}
+
+// The data files of a plot are read where they are now: staged outputs of
+// the run under their temporary names.
+std::string data(const std::filesystem::path& csv) { return OutputSet::readable(csv).string(); }
+}  // namespace
+
 std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png, int width,
                                                  int height) {
   if (!plotting_available()) return std::nullopt;
   const auto partial = partial_path(png);
   const auto script_file = partial_path(png.parent_path() / (png.stem().string() + ".gp"));
-  write_file_atomically(script_file,
-                        fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
-                                    width, height, partial.string(), script));
+  try {
+    write_temporary_file(script_file, fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
+                                                  width, height, partial.string(), script));
+  } catch (const OutputError& e) {
+    throw OutputError(fmt::format("{}; {} was not drawn", e.what(), png.string()));
+  }
   const int status = std::system(fmt::format("gnuplot '{}' 2>/dev/null", script_file.string()).c_str());
-  std::filesystem::remove(script_file);
-  if (status != 0 || !std::filesystem::exists(partial)) {
-    std::error_code ec;
+  std::error_code ec;
+  std::filesystem::remove(script_file, ec);
+  if (status != 0) {
     std::filesystem::remove(partial, ec);
-    log::warn("gnuplot could not draw {}", png.string());
+    log::warn("gnuplot could not draw {} (exit status {})", png.string(), status);
     return std::nullopt;
+  }
+  if (!complete_png(partial)) {  // gnuplot said yes, but the file system did not take it all
+    std::filesystem::remove(partial, ec);
+    throw OutputError(fmt::format("cannot write {}: gnuplot left an incomplete image (is the disk full?); {} was not "
+                                  "written",
+                                  partial.string(), png.string()));
   }
   commit_file(partial, png);
   return png;
@@ -58,7 +85,7 @@ std::string literal(const std::string& text) {
 }
 
 bool has_column(const std::filesystem::path& csv, const std::string& name) {
-  std::ifstream in(csv);
+  std::ifstream in(OutputSet::readable(csv));  // a staged output is read under its temporary name
   std::string line;
   while (std::getline(in, line))
     if (!line.empty() && line[0] != '#') return ("," + line + ",").find("," + name + ",") != std::string::npos;
@@ -75,14 +102,14 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
     if (has_column(c.csv, "friction_moving_average")) {
       mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1 lc rgb '#B0{}' notitle, "
                         "'' using 1:(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
-                        k ? ", " : "", c.csv.string(), rgb, rgb, literal(c.label));
+                        k ? ", " : "", data(c.csv), rgb, rgb, literal(c.label));
     } else {
       mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
-                        c.csv.string(), rgb, literal(c.label));
+                        data(c.csv), rgb, literal(c.label));
     }
     wear += fmt::format("{}'{}' using 1:(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' title 'pin {}', "
                         "'' using 1:(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' title 'disc {}'",
-                        k ? ", " : "", c.csv.string(), rgb, literal(c.label), rgb, literal(c.label));
+                        k ? ", " : "", data(c.csv), rgb, literal(c.label), rgb, literal(c.label));
   }
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
@@ -102,7 +129,7 @@ std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<Fricti
   std::string curves;
   for (std::size_t k = 0; k < profiles.size(); ++k)
     curves += fmt::format("{}'{}' using ($1*1e3):(-$2*1e6) with lines lw 2 lc rgb '#{}' title '{}'", k ? ", " : "",
-                          profiles[k].csv.string(), colour(k), literal(profiles[k].label));
+                          data(profiles[k].csv), colour(k), literal(profiles[k].label));
   if (layer_thickness > 0.0 && std::isfinite(layer_thickness))
     curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
                           -layer_thickness * 1e6);
@@ -119,7 +146,7 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vecto
   std::string curves;
   for (std::size_t k = 0; k < tables.size(); ++k) {
     const auto& t = tables[k];
-    const std::string rgb = colour(k), file = t.csv.string();
+    const std::string rgb = colour(k), file = data(t.csv);
     curves += fmt::format(
         "'{0}' using (finite($1)):(column('mu_final')) with linespoints pt 7 ps 1.3 lw 2 lc rgb '#{1}' "
         "title '{2}: final μ', \\\n"
@@ -149,7 +176,7 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
                             "set title '{}'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
                             "set grid\nplot '{}' every ::1 using ($2*1e9):($3*1e9) with lines lw 2 title 'tangential F_T', "
                             "'' every ::1 using ($2*1e9):($4*1e9) with lines lw 1 title 'normal F_N'\n",
-                            title, history_csv.string()),
+                            title, data(history_csv)),
                 png);
 }
 
@@ -166,7 +193,7 @@ std::optional<std::filesystem::path> plot_junction_strength(const std::filesyste
                                            : fmt::format("DEM, D/L = {:.3g}", c);
     plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
                          "title '{}', ",
-                         runs_csv.string(), c, colour, label);
+                         data(runs_csv), c, colour, label);
     plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
   }
   plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";

@@ -32,9 +32,12 @@ double critical_pressure(const StrengthLaw& law) {
     const double root = find_root([&](double x) { return law.sigma_max(x) - x; }, p[r - 1], p[r], 0.0, kModel);
     return root;
   }
-  throw NumericalError(kModel, 0, "critical pressure",
-                       fmt::format("σ_max(p) > p up to the end of the table {} ({:g} GPa): extend it to higher pressures",
-                                   law.table().origin, law.max_pressure() / 1e9));
+  // The table, not a computation, falls short: bad input naming it.
+  throw InputError(fmt::format("{}: σ_max(p) > p up to the end of the table ({:g} GPa), so the critical pressure "
+                               "p_crit (σ_max = p) lies beyond it; allowed: a table that reaches σ_max ≤ p (extend it "
+                               "to higher pressures)",
+                               law.table().origin.empty() ? "strength table" : law.table().origin,
+                               law.max_pressure() / 1e9));
 }
 
 double minimum_contact_ratio(double p_n, double p_crit) {

@@ -10,6 +10,8 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/text_file.hpp"
+#include "wearscale/core/units.hpp"
 
 namespace wearscale::materials {
 
@@ -64,19 +66,18 @@ bool is_hdf5(const std::filesystem::path& p) {
   return ext == ".h5" || ext == ".hdf5";
 }
 
+// A strength table has rows of a few pressures: 16 MiB is far beyond any.
+constexpr std::uintmax_t kMaxTableBytes = std::uintmax_t{16} << 20;
+
 StrengthTable read_csv(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open strength table", file.string()));
-  std::stringstream content;
-  content << in.rdbuf();
-  return parse_strength_table_csv(content.str(), file.string());
+  return parse_strength_table_csv(read_text_file(file, "strength table", kMaxTableBytes), file.string());
 }
 
 }  // namespace
 
 StrengthTable parse_strength_table_csv(std::string_view text, const std::string& origin) {
   const std::filesystem::path file = origin;
-  std::istringstream in{std::string(text)};
+  std::istringstream in{std::string(strip_utf8_bom(text))};  // spreadsheets write a byte-order mark
   StrengthTable t;
   t.origin = origin;
   std::string line;
@@ -138,17 +139,41 @@ StrengthTable parse_strength_table_csv(std::string_view text, const std::string&
 
 namespace {
 
-StrengthTable read_h5(const std::filesystem::path& file) {
-  H5Reader r(file);
+// One column: a 1D dataset whose "unit" attribute is a pressure unit ("Pa"
+// as wearscale writes, "GPa", "MPa"), converted to Pa.
+std::vector<double> read_column(const H5Reader& r, const std::string& name) {
+  const std::string dataset = "/strength/" + name;
+  if (!r.exists(dataset)) throw InputError(fmt::format("{}: missing dataset {}", r.name(), dataset));
+  if (const auto shape = r.shape(dataset); shape.size() != 1)
+    throw InputError(fmt::format("{}: dataset {} has {} dimensions; allowed: one (a column)", r.name(), dataset,
+                                 shape.size()));
+  const auto unit = r.string_attribute_if(dataset, "unit");
+  if (!unit)
+    throw InputError(fmt::format("{}: dataset {} has no 'unit' attribute; allowed: a pressure unit (\"Pa\", \"GPa\")",
+                                 r.name(), dataset));
+  double scale = 0.0;
+  try {
+    const auto q = units::parse_quantity("1 " + *unit);
+    if (q.dimension == units::pressure) scale = q.value;
+  } catch (const std::invalid_argument&) {
+  }
+  if (!(scale > 0.0))
+    throw InputError(fmt::format("{}: dataset {} has unit '{}'; allowed: a pressure unit (\"Pa\", \"GPa\")", r.name(),
+                                 dataset, *unit));
+  auto values = r.read_series(dataset);
+  for (auto& v : values) v *= scale;
+  return values;
+}
+
+}  // namespace
+
+StrengthTable parse_strength_table_h5(const H5Reader& r) {
   StrengthTable t;
-  t.origin = file.string();
-  for (const char* name : {"pressure", "sigma_max", "sigma_dyn"})
-    if (!r.exists(std::string("/strength/") + name))
-      throw InputError(fmt::format("{}: missing dataset /strength/{}", file.string(), name));
-  t.pressure = r.read_series("/strength/pressure");
-  t.sigma_max = r.read_series("/strength/sigma_max");
-  t.sigma_dyn = r.read_series("/strength/sigma_dyn");
-  const std::string keys = r.string_attribute("/strength", "provenance_keys");
+  t.origin = r.name();
+  t.pressure = read_column(r, "pressure");
+  t.sigma_max = read_column(r, "sigma_max");
+  t.sigma_dyn = read_column(r, "sigma_dyn");
+  const std::string keys = r.string_attribute_if("/strength", "provenance_keys").value_or("");
   std::stringstream ss(keys);
   std::string key;
   while (std::getline(ss, key, ','))
@@ -158,7 +183,6 @@ StrengthTable read_h5(const std::filesystem::path& file) {
   return t;
 }
 
-}  // namespace
 
 std::string StrengthTable::info(const std::string& key) const {
   for (const auto& [k, v] : provenance)
@@ -174,7 +198,7 @@ void validate(const StrengthTable& t) {
 StrengthTable read_strength_table(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(fmt::format("{}: no such strength table", file.string()));
-  return is_hdf5(file) ? read_h5(file) : read_csv(file);
+  return is_hdf5(file) ? H5Reader::guarded(file, parse_strength_table_h5) : read_csv(file);
 }
 
 void write_strength_table(const std::filesystem::path& file, const StrengthTable& table) {

@@ -122,14 +122,27 @@ TEST(SurfaceCli, BadInputIsExitStatus2NamingTheParameter) {
 
 namespace {
 // An ISO 25178-71 SDF (ASCII) measurement of 48 × 32 points, 0.5 µm × 0.25 µm
-// steps, one point BAD: what an instrument exports.
+// steps, one point BAD: what an instrument exports. The heights are
+// self-affine (modes of amplitude ∝ |k|^-(1+H), H = 0.8, fixed phases), so
+// that the Hurst fit of `surface analyze` is a result, not a refusal.
 fs::path measured_sdf(const std::string& name) {
   std::string t = "aISO-1.0\nManufacID = test\nCreateDate = 010120240000\nModDate = 010120240000\n"
                   "NumPoints = 48\nNumProfiles = 32\nXscale = 5e-07\nYscale = 2.5e-07\nZscale = 1e-09\n"
                   "Zresolution = -1\nCompression = 0\nDataType = 7\nCheckType = 0\n*\n";
+  const double pi = 3.14159265358979323846;
+  auto height = [&](int r, int c) {  // r along y (32 profiles), c along x (48 points); both sides 24 µm / 8 µm
+    double h = 0.0;
+    for (int kx = -23; kx <= 23; ++kx)
+      for (int ky = 0; ky <= 15; ++ky) {
+        if (ky == 0 && kx <= 0) continue;
+        const double qx = 2 * pi * kx / 24e-6, qy = 2 * pi * ky / 8e-6, q = std::hypot(qx, qy);
+        const double phase = 2 * pi * std::fmod(std::abs(std::sin(12.9898 * kx + 78.233 * ky)) * 43758.5453, 1.0);
+        h += std::pow(q * 1e-6, -1.8) * std::cos(qx * c * 5e-7 + qy * r * 2.5e-7 + phase);
+      }
+    return 10.0 * h;  // nm
+  };
   for (int r = 0; r < 32; ++r) {
-    for (int c = 0; c < 48; ++c)
-      t += r == 7 && c == 11 ? " BAD" : fmt::format(" {:.6f}", 40.0 * std::sin(0.4 * c) * std::cos(0.3 * r) + 0.1 * c);
+    for (int c = 0; c < 48; ++c) t += r == 7 && c == 11 ? " BAD" : fmt::format(" {:.6f}", height(r, c));
     t += "\n";
   }
   const auto path = work / name;

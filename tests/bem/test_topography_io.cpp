@@ -135,7 +135,7 @@ TEST(TopographyIo, NanIsAMissingPointAndInfinityIsRefused) {
 TEST(TopographyIo, EmptyFilesMissingFilesAndMissingSizesAreRefused) {
   EXPECT_THAT(rejection(write_text("empty.txt", "")), HasSubstr("no height data"));
   EXPECT_THAT(rejection(write_text("comments.txt", "# lx = 1\n\n# only comments\n")), HasSubstr("no height data"));
-  EXPECT_THAT(rejection(scratch("absent.txt")), HasSubstr("no such file"));
+  EXPECT_THAT(rejection(scratch("absent.txt")), HasSubstr("no such topography file"));
   const auto unsized = write_text("unsized.txt", "1 2\n3 4\n");
   EXPECT_THAT(rejection(unsized, {}), HasSubstr("size of the topography is not given"));
   EXPECT_THAT(rejection(write_text("badsize.txt", "# lx = 3 kg\n1 2\n3 4\n"), {}), HasSubstr("line 1: lx = '3 kg'"));

@@ -1,18 +1,22 @@
 // Checkpoints: what a solver saves reads back bit for bit, a checkpoint of
 // another case is refused naming the key that differs, saving follows the
 // policy, and a pending SIGINT saves then stops the loop. Also the clean-stop
-// flag itself and the removal of files left by killed processes.
+// flag itself and the removal of files left by killed processes. A damaged
+// checkpoint (flipped bytes, other types, an older format) is refused.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <cstring>
+#include <cmath>
 #include <fstream>
+#include <sstream>
 #include <limits>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "h5_fixture.hpp"
 #include "input_error_of.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/checkpoint.hpp"
@@ -164,4 +168,99 @@ TEST(Checkpoint, CaseDifferencesAreDescribedByKey) {
   EXPECT_EQ(describe_case_difference(case_a, case_a), "");
   EXPECT_EQ(describe_case_difference(R"({"a":{"b":1}})", R"({"a":{"b":1,"c":"x"}})"), "key 'a.c' was absent, is now x");
   EXPECT_EQ(describe_case_difference("not json", case_a), "");
+}
+
+// ---------------------------------------------------------------------------
+// Damaged checkpoints are refused, never resumed from.
+
+namespace {
+std::string bytes_of(const fs::path& p) {
+  std::stringstream ss;
+  ss << std::ifstream(p, std::ios::binary).rdbuf();
+  return ss.str();
+}
+
+// A file laid out as a checkpoint of one owner "o" with one array, whose
+// attributes and dataset type the test chooses.
+void fake_checkpoint(const fs::path& file, const std::string& format, hid_t array_type, double step) {
+  h5fixture::File f(file);
+  f.group("/owners/o");
+  f.string_attribute("/", "format", format);
+  f.string_attribute("/", "fingerprint", case_a);
+  f.string_attribute("/", "fftw_wisdom", "");
+  f.string_attribute("/", "owners", "o");
+  f.string_attribute("/", "sha256", "0");
+  f.number_attribute("/owners/o", "step", {step}, false, std::isnan(step) ? H5T_IEEE_F64LE : H5T_STD_I64LE);
+  f.string_attribute("/owners/o", "arrays", "x");
+  f.string_attribute("/owners/o", "texts", "");
+  f.dataset("/owners/o/a0", {3}, {1.0, 2.0, 3.0}, array_type);
+}
+}  // namespace
+
+TEST(Checkpoint, FlippedBytesInItsDataAreDetectedByTheChecksum) {
+  const auto file = scratch("flipped.h5");
+  Checkpointer writer(file, case_a, {0.0, 1});
+  CheckpointState s;
+  s.put("surface", std::vector<double>(512, 0.25));  // stored as is: 512 × the bytes of 0.25
+  writer.save("o", s);
+  std::string bytes = bytes_of(file);
+  const double quarter = 0.25;
+  const std::string pattern(reinterpret_cast<const char*>(&quarter), sizeof quarter);
+  const auto at = bytes.find(pattern + pattern + pattern + pattern);
+  ASSERT_NE(at, std::string::npos);
+  for (std::size_t k = 0; k < 64; ++k) bytes[at + 100 + k] = static_cast<char>(~bytes[at + 100 + k]);
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  Checkpointer reader(file, case_a, {0.0, 1});
+  EXPECT_THAT(input_error_of([&] { reader.load(); }), HasSubstr("the checkpoint is damaged"));
+  EXPECT_EQ(reader.restored("o"), nullptr);
+}
+
+TEST(Checkpoint, AnyByteFlippedAnywhereIsRefusedOrIgnoredNeverRestoredWrong) {
+  const auto file = scratch("every.h5");
+  {
+    Checkpointer writer(file, case_a, {0.0, 1});
+    CheckpointState s;
+    s.put("x", std::vector<double>{1.0, 2.0, 3.0});
+    s.put_text("t", "explicit");
+    s.step = 7;
+    writer.save("o", s);
+  }
+  const std::string good = bytes_of(file);
+  std::size_t refused = 0;
+  for (std::size_t k = 0; k < good.size(); k += 17) {  // every 17th byte: a few hundred files
+    std::string bad = good;
+    bad[k] = static_cast<char>(bad[k] ^ 0x5a);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bad;
+    Checkpointer reader(file, case_a, {0.0, 1});
+    try {
+      reader.load();
+      // Unused bytes (padding, free space): the state must then be exactly what was saved.
+      const CheckpointState* r = reader.restored("o");
+      ASSERT_NE(r, nullptr) << k;
+      EXPECT_EQ(r->array("x"), (std::vector<double>{1.0, 2.0, 3.0})) << k;
+      EXPECT_EQ(r->text("t"), "explicit") << k;
+      EXPECT_EQ(r->step, 7) << k;
+    } catch (const InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0u);
+}
+
+TEST(Checkpoint, A32BitFloatArrayANanStepAndAnOlderFormatAreRefused) {
+  const auto file = scratch("fake.h5");
+  fake_checkpoint(file, "wearscale checkpoint 2", H5T_IEEE_F32LE, 3.0);
+  EXPECT_THAT(input_error_of([&] { Checkpointer(file, case_a, {0.0, 1}).load(); }),
+              HasSubstr("expected a series of 64-bit floats"));
+  fs::remove(file);
+  fake_checkpoint(file, "wearscale checkpoint 2", H5T_IEEE_F64LE, std::nan(""));
+  EXPECT_THAT(input_error_of([&] { Checkpointer(file, case_a, {0.0, 1}).load(); }),
+              HasSubstr("attribute 'step' on '/owners/o' is a floating-point number; allowed: one integer"));
+  fs::remove(file);
+  fake_checkpoint(file, "wearscale checkpoint 1", H5T_IEEE_F64LE, 3.0);
+  EXPECT_THAT(input_error_of([&] { Checkpointer(file, case_a, {0.0, 1}).load(); }),
+              HasSubstr("a checkpoint of format 'wearscale checkpoint 1', written by another version"));
+  fs::remove(file);
+  fake_checkpoint(file, "wearscale checkpoint 2", H5T_IEEE_F64LE, 3.0);  // well-formed, but the checksum is not its own
+  EXPECT_THAT(input_error_of([&] { Checkpointer(file, case_a, {0.0, 1}).load(); }), HasSubstr("damaged"));
 }

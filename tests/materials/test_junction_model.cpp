@@ -1,5 +1,6 @@
 // The scale-linking model (§7.1.2, §9.3.2) on the thesis' strength laws
 // (Fig. 9.18) reproduces the numbers of VERIFICATION.md.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,9 +74,16 @@ TEST(JunctionModel, ResistanceAtTheMinimumContactRatioIsTheMinimum) {
               minimum_tangential_resistance(sio2, p_n, p_crit), 1e-3);
 }
 
-TEST(JunctionModel, ATableThatNeverCrushesIsANumericalError) {
+// The table falls short of p_crit: bad input naming it (exit 2), not a numerical failure.
+TEST(JunctionModel, ATableThatNeverCrushesIsBadInputNamingTheTable) {
   const auto strong = StrengthLaw::constant("strong", 80e9, 50e9, "test");
-  EXPECT_THROW(critical_pressure(strong), NumericalError);
+  try {
+    critical_pressure(strong);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("σ_max(p) > p up to the end of the table"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("extend it"));
+  }
 }
 
 TEST(InterfaceLaw, SilicaOnSilicaSlidesAt084AndSilicaOnSiliconAt014) {

@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "h5_fixture.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/shipped_data.hpp"
 
@@ -97,4 +98,46 @@ TEST(StrengthTable, WrittenTablesReadBackInCsvAndHdf5) {
     EXPECT_EQ(back.info("source"), si.info("source")) << name;
   }
   std::filesystem::remove_all(dir);
+}
+
+// A table found by fuzzing whose global heap (where its variable-length
+// strings live) is damaged so that HDF5 1.10 itself crashes reading it: the
+// read is tried in a child process first, so the table is refused as
+// damaged, naming it, instead of the program dying.
+TEST(StrengthTable, AnHdf5TableThatCrashesTheHdf5LibraryIsRefusedAsDamaged) {
+  const std::filesystem::path file = std::filesystem::path(WEARSCALE_TEST_DATA) / "hdf5_crash_global_heap.h5";
+  try {
+    read_strength_table(file);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    // Crashed (a signal), or under AddressSanitizer stopped by its report (exit status 1).
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("hdf5_crash_global_heap.h5: damaged or not what it claims: the HDF5 "
+                                               "library "));
+  }
+}
+
+// h5py writes string attributes as variable-length strings, and a column's unit may be GPa.
+TEST(StrengthTable, AnHdf5TableFromAnotherToolReadsWithItsUnits) {
+  const auto file = std::filesystem::temp_directory_path() / ("wearscale_h5py_" + std::to_string(::getpid()) + ".h5");
+  {
+    h5fixture::File f(file);
+    f.dataset("/strength/pressure", {3}, {0.0, 5.0, 10.0});
+    f.dataset("/strength/sigma_max", {3}, {12.0, 9.0, 7.0});
+    f.dataset("/strength/sigma_dyn", {3}, {1.0, 1.0, 1.0});
+    for (const char* c : {"pressure", "sigma_max", "sigma_dyn"})
+      f.string_attribute(std::string("/strength/") + c, "unit", "GPa");
+    f.string_attribute("/strength", "provenance_keys", "material");
+    f.string_attribute("/strength", "material", "Si");
+  }
+  const auto t = read_strength_table(file);
+  EXPECT_EQ(t.material, "Si");
+  EXPECT_EQ(t.pressure, (std::vector<double>{0.0, 5e9, 10e9}));
+  {
+    h5fixture::File f(file);  // the same without units: which unit would it be? refused
+    f.dataset("/strength/pressure", {3}, {0.0, 5.0, 10.0});
+    f.dataset("/strength/sigma_max", {3}, {12.0, 9.0, 7.0});
+    f.dataset("/strength/sigma_dyn", {3}, {1.0, 1.0, 1.0});
+  }
+  EXPECT_THROW(read_strength_table(file), InputError);
+  std::filesystem::remove(file);
 }

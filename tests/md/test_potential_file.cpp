@@ -5,7 +5,6 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/md/potential_file.hpp"
-#include "wearscale/md/sha256.hpp"
 
 using namespace wearscale;
 using namespace wearscale::md;
@@ -65,10 +64,4 @@ TEST(VashishtaCutoff, GarbageIsRejected) {
   EXPECT_THROW(vashishta_with_cutoff("Si Si Si 1 2 3\n", 8.0, "x"), InputError);
   EXPECT_THROW(vashishta_with_cutoff(std::string(sample).replace(std::string(sample).find("4.43"), 4, "abc"), 8.0, "x"),
                InputError);
-}
-
-TEST(Sha256, KnownVectors) {
-  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  EXPECT_EQ(sha256_hex(std::string(1000, 'a')), "41edece42d63e8d9bf515a9ba6932e1c20cbc9f5a5d134645adb5db1b9737ea3");
 }

@@ -116,7 +116,19 @@ TEST(PinOnDiscRestart, AStateOfAnotherGridIsRefused) {
     b.restore(saved);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("1024 cells, the case has 4096"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("a pin-on-disc state of 1024 pin cells"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("the case has 4096 pin cells (64×64)"));
+  }
+  // A pin of the right size with a disc profile of another length: the message says which part differs.
+  CheckpointState wrong_disc;
+  b.save(wrong_disc);
+  wrong_disc.put("disc_profile", std::vector<double>(32, 0.0));
+  try {
+    b.restore(wrong_disc);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("4096 pin cells, 32 disc profile values"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("and 64 disc profile values"));
   }
 }
 

@@ -11,6 +11,7 @@
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
@@ -41,8 +42,9 @@ class MacroPinOnDisc final : public Scale {
     s_.normal_load = c.number_or("normal_load", 1.0, Range::positive(), units::force);
     s_.velocity = c.number_or("velocity", 8e-3, Range::positive(), units::velocity);
     s_.path_length = c.number_or("path_length", 6.28e-3, Range::positive(), units::length);
-    s_.time_step = c.number_or("time_step", 0.02, Range::positive(), units::time);
-    s_.distance = c.number_or("distance", 0.5, Range::non_negative(), units::length);
+    s_.distance = c.number_or("distance", 0.5, Range::positive(), units::length);
+    // At least one step: a longer one would overshoot the distance (the last step is cut to land on it).
+    s_.time_step = c.number_or("time_step", 0.02, Range::open_closed(0.0, s_.distance / s_.velocity), units::time);
     s_.nonplanar_slope = c.number_or("nonplanarity.slope", 0.0, Range::closed_open(0.0, 0.2));
     s_.nonplanar_period = c.number_or("nonplanarity.period", 0.05, Range::positive(), units::length);
     // Which material the pin meets: the worn disc's depth ("disc", physical),
@@ -74,6 +76,13 @@ class MacroPinOnDisc final : public Scale {
         static_cast<int>(c.integer_or("adaptive.steps_per_period", defaults.steps_per_period, Range::closed(4, 10000)));
     fields_every_ = static_cast<std::size_t>(c.integer_or("fields_every", 0, Range::non_negative()));
     s_.validate();
+    // Every step keeps a sample (the series, its copy in each checkpoint and in run.h5): a time step
+    // many orders below the distance's would exhaust memory long before the run ended.
+    const double steps = std::ceil(s_.distance / (s_.velocity * s_.time_step));
+    require_memory(steps * 3.0 * 9.0 * sizeof(double),
+                   fmt::format("{}: key '{}': {:.3g} steps of {:g} s over {:g} m", c.where("time_step"),
+                               c.full_key("time_step"), steps, s_.time_step, s_.distance),
+                   "a longer time_step or a shorter distance");
     if (s_.track == tribometer::Track::Resolved) {
       const double revolution = s_.tilt_period();
       const double cell = s_.size / static_cast<double>(s_.grid);

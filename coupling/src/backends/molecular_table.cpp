@@ -29,7 +29,7 @@ class MolecularTable final : public Scale {
       materials::StrengthTable table;
       if (c.has(key)) {
         try {
-          table = materials::read_strength_table(c.string(key));
+          table = materials::read_strength_table(c.path(key));  // relative to the case file
         } catch (const InputError& e) {
           throw c.error(key, e.what());  // name the case key that points at the bad table
         }

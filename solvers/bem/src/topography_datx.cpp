@@ -210,9 +210,7 @@ std::string surface_path(hid_t file) {
   return {};
 }
 
-}  // namespace
-
-RawTopography read_datx(const std::filesystem::path& path, const TopographyOptions& o) {
+RawTopography read_datx_file(const std::filesystem::path& path, const TopographyOptions& o) {
   const std::string where = path.string();
   auto lock = lock_hdf5();
   if (H5Fis_hdf5(path.c_str()) <= 0) refuse(where, "not an HDF5 file, so not a Zygo .datx");
@@ -281,6 +279,13 @@ RawTopography read_datx(const std::filesystem::path& path, const TopographyOptio
   if (dx) raw.lx = static_cast<double>(nx) * *dx;
   if (dy) raw.ly = static_cast<double>(ny) * *dy;
   return raw;
+}
+
+}  // namespace
+
+RawTopography read_datx(const std::filesystem::path& path, const TopographyOptions& o) {
+  // Tried in a child first: a file that crashes HDF5 itself is refused as damaged.
+  return guarded_hdf5_read(path, [&] { return read_datx_file(path, o); });
 }
 
 }  // namespace wearscale::bem::formats

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
 
 namespace wearscale::bem::formats {
 
@@ -28,6 +29,7 @@ void RawTopography::allocate(std::size_t nx_, std::size_t ny_, std::size_t max_p
   if (!n || *n > max_points)
     refuse(where, fmt::format("a grid of {} × {} points is larger than allowed (at most {} points)", nx_, ny_,
                               max_points));
+  require_memory(25.0 * static_cast<double>(*n), fmt::format("{} ({} × {} heights)", where, nx_, ny_));
   nx = nx_, ny = ny_;
   height.assign(*n, 0.0);
   missing.clear();

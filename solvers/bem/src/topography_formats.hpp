@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "wearscale/bem/topography_io.hpp"
+#include "wearscale/core/hdf5_file.hpp"
 
 namespace wearscale::bem::formats {
 
@@ -26,7 +27,8 @@ struct RawTopography {
   /// Where the first missing point sits in the file's own terms (e.g. "line 3, column 2").
   std::string first_missing;
 
-  /// Allocates nx × ny points after checking them against `max_points`.
+  /// Allocates nx × ny points after checking them against `max_points` and
+  /// the memory limit (the raw heights, a copy, a mask: 25 B per point).
   void allocate(std::size_t nx_, std::size_t ny_, std::size_t max_points);
   double& at(std::size_t i, std::size_t j) { return height[i * ny + j]; }
   void mark_missing(std::size_t i, std::size_t j);
@@ -90,7 +92,10 @@ RawTopography parse_sdf(std::string_view bytes, const std::string& where, const 
 RawTopography parse_text(std::string_view text, const std::string& where, const TopographyOptions& o);
 /// Zygo's HDF5 container (.datx), from a file.
 RawTopography read_datx(const std::filesystem::path& file, const TopographyOptions& o);
-/// wearscale's own HDF5 (a 2D dataset with lx, ly attributes).
+/// wearscale's own HDF5 (a 2D dataset with lx, ly attributes), read
+/// through H5Reader::guarded.
 RawTopography read_h5(const std::filesystem::path& file, const TopographyOptions& o);
+/// The same from an open file: lx, ly one number each if present.
+RawTopography read_h5(const H5Reader& file, const TopographyOptions& o);
 
 }  // namespace wearscale::bem::formats

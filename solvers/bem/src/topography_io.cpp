@@ -18,6 +18,8 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/text_file.hpp"
 #include "wearscale/core/xdmf.hpp"
 
 namespace wearscale::bem {
@@ -93,6 +95,20 @@ Grid2D resolve_grid(std::size_t nx, std::size_t ny, const TopographySize& given,
   return Grid2D(nx, ny, *lx, *ly);
 }
 
+// Heights spanning more than a thousand times the surface's side are not a
+// surface (slopes beyond 10^3): most often heights in nm beside sizes in m.
+// Heights this far apart would also overflow the analysis (h'_rms, areas).
+void check_height_span(const RealField& h, const std::string& where) {
+  double lo = h[0], hi = h[0];
+  for (double v : h) lo = std::min(lo, v), hi = std::max(hi, v);
+  const double side = std::max(h.grid().lx, h.grid().ly);
+  if (!(hi - lo <= 1e3 * side))
+    throw InputError(fmt::format("{}: heights from {:g} to {:g} m on a {:g} m × {:g} m surface (peak to valley {:g} "
+                                 "times its side): are heights and sizes in the same unit? allowed: a peak-to-valley "
+                                 "height of at most 1000 times the longer side",
+                                 where, lo, hi, h.grid().lx, h.grid().ly, (hi - lo) / side));
+}
+
 // The caller's sizes and choice about missing points, applied to what the reader found.
 MeasuredTopography finish(formats::RawTopography raw, const TopographyOptions& o) {
   const std::string how = raw.format == "text grid"
@@ -112,7 +128,10 @@ MeasuredTopography finish(formats::RawTopography raw, const TopographyOptions& o
                                      raw.where, i, j, out.heights[k]));
       }
     }
-  if (out.missing == 0) return out;
+  if (out.missing == 0) {
+    check_height_span(out.heights, raw.where);
+    return out;
+  }
   const double share = 100.0 * static_cast<double>(out.missing) / static_cast<double>(grid.size());
   if (out.missing == grid.size())
     throw InputError(fmt::format("{}: every one of its {} points is missing (no measured height)", raw.where,
@@ -126,20 +145,16 @@ MeasuredTopography finish(formats::RawTopography raw, const TopographyOptions& o
         raw.first_missing.empty() ? "" : fmt::format(" (the first at {})", raw.first_missing),
         MissingPointsChoice::key, MissingPointsChoice::allowed));
   harmonic_fill(out.heights, raw.missing);
+  check_height_span(out.heights, raw.where);  // the filled points lie between measured ones
   log::info("{}: filled {} missing points ({:.3g} %) by harmonic interpolation", raw.where, out.missing, share);
   return out;
 }
 
+// A file's bytes: a regular file (not /dev/zero, a FIFO), of at most a sixth
+// of the memory limit (the bytes, then a height per two bytes of text).
 std::string slurp(const fs::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw InputError(fmt::format("{}: no such file", name));
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open for reading", name));
-  std::stringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw InputError(fmt::format("{}: cannot be read", name));
-  return content.str();
+  const double budget = memory_limit().bytes / 6.0;
+  return read_text_file(file, "topography file", static_cast<std::uintmax_t>(std::min(budget, 1e18)));
 }
 
 }  // namespace
@@ -179,16 +194,20 @@ MeasuredTopography parse_measured_topography(std::string_view bytes, const std::
 MeasuredTopography read_measured_topography(const fs::path& file, const TopographyOptions& o) {
   const std::string name = file.string();
   std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw InputError(fmt::format("{}: no such file", name));
+  const auto status = fs::status(file, ec);
+  if (ec || !fs::exists(status)) throw InputError(fmt::format("{}: no such topography file", name));
+  if (!fs::is_regular_file(status))
+    throw InputError(fmt::format("{}: not a regular file (a device, FIFO, socket or folder); expected a topography file",
+                                 name));
   char head[8] = {};
   std::ifstream(file, std::ios::binary).read(head, sizeof head);
   if (std::string_view(head, sizeof head) == kHdf5Magic) {
     // Zygo's files by name, or by their layout when renamed (and without the dataset asked for).
     bool datx = lower_extension(file) == ".datx";
-    if (!datx) {
-      const H5Reader reader(file);
-      datx = !reader.exists(o.dataset) && (reader.exists("/MetaData") || reader.exists("/Measurement/Surface"));
-    }
+    if (!datx)
+      datx = H5Reader::guarded(file, [&](const H5Reader& reader) {
+        return !reader.exists(o.dataset) && (reader.exists("/MetaData") || reader.exists("/Measurement/Surface"));
+      });
     return finish(datx ? formats::read_datx(file, o) : formats::read_h5(file, o), o);
   }
   if (is_hdf5_name(file)) throw InputError(fmt::format("{}: not an HDF5 file", name));
@@ -214,6 +233,13 @@ RealField read_topography_h5(const fs::path& file, const std::string& dataset, c
   return finish(formats::read_h5(file, o), o).heights;
 }
 
+RealField read_topography_h5(const H5Reader& file, const std::string& dataset, const TopographySize& size) {
+  TopographyOptions o;
+  o.dataset = dataset;
+  o.size = size;
+  return finish(formats::read_h5(file, o), o).heights;
+}
+
 RealField read_topography(const fs::path& file, const std::string& dataset, const TopographySize& size) {
   TopographyOptions o;
   o.dataset = dataset;
@@ -224,34 +250,30 @@ RealField read_topography(const fs::path& file, const std::string& dataset, cons
 namespace formats {
 
 RawTopography read_h5(const fs::path& file, const TopographyOptions& o) {
-  const H5Reader reader(file);
+  return H5Reader::guarded(file, [&](const H5Reader& reader) { return read_h5(reader, o); });
+}
+
+RawTopography read_h5(const H5Reader& reader, const TopographyOptions& o) {
   const std::string& dataset = o.dataset;
   if (!reader.exists(dataset))
     throw InputError(fmt::format("{}: no dataset '{}'; name the height dataset (e.g. --dataset /surface/height)",
-                                 file.string(), dataset));
-  const auto shape = reader.shape(dataset);
+                                 reader.name(), dataset));
   RawTopography raw;
-  raw.where = fmt::format("{}: dataset '{}'", file.string(), dataset);
+  raw.where = fmt::format("{}: dataset '{}'", reader.name(), dataset);
   raw.format = "HDF5";
+  // Sizes in attributes: one number each, or none (a malformed one is an error, not ignored).
+  raw.lx = reader.number_attribute_if(dataset, "lx"), raw.ly = reader.number_attribute_if(dataset, "ly");
+  const auto shape = reader.shape(dataset);
   if (shape.size() != 2) refuse(raw.where, fmt::format("not a 2D field (rank {})", shape.size()));
-  raw.allocate(shape[0], shape[1], o.max_points);
-  const RealField field = reader.read_field(dataset);
-  for (std::size_t i = 0; i < raw.nx; ++i)
-    for (std::size_t j = 0; j < raw.ny; ++j) {
-      raw.at(i, j) = field(i, j);
-      if (std::isnan(field(i, j))) {
-        if (raw.missing.empty()) raw.first_missing = fmt::format("row {}, column {}", i + 1, j + 1);
-        raw.mark_missing(i, j);
-      }
+  raw.allocate(shape[0], shape[1], o.max_points);  // checked against the memory limit before reading
+  const std::vector<double> values = reader.read_series(dataset);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    raw.height[k] = values[k];
+    if (std::isnan(values[k])) {
+      if (raw.missing.empty()) raw.first_missing = fmt::format("row {}, column {}", k / raw.ny + 1, k % raw.ny + 1);
+      raw.mark_missing(k / raw.ny, k % raw.ny);
     }
-  auto attribute = [&](const char* key) -> std::optional<double> {
-    try {
-      return reader.number_attribute(dataset, key);
-    } catch (const InputError&) {
-      return std::nullopt;
-    }
-  };
-  raw.lx = attribute("lx"), raw.ly = attribute("ly");
+  }
   return raw;
 }
 
@@ -259,16 +281,19 @@ RawTopography read_h5(const fs::path& file, const TopographyOptions& o) {
 
 fs::path write_surface(const fs::path& file, const RealField& h, const SurfaceAttributes& attributes) {
   XdmfSidecar xdmf(h.grid());
+  fs::path sidecar = file;
+  sidecar.replace_extension(".xdmf");
   {
     H5Writer writer(file);
     writer.write_field(default_surface_dataset, h, "m");
     for (const auto& [key, value] : attributes) writer.set_attribute(default_surface_dataset, key, value);
     writer.set_attribute("/surface", "description", "surface heights h(x_i, y_j), rows i along x, columns j along y");
     xdmf.add(writer, {{default_surface_dataset, "height"}});
+    // The pair goes in sidecar last: an old sidecar never describes a new file.
+    std::error_code ec;
+    fs::remove(sidecar, ec);
     writer.commit();
   }
-  fs::path sidecar = file;
-  sidecar.replace_extension(".xdmf");
   xdmf.write(sidecar, file);
   return sidecar;
 }
@@ -280,13 +305,10 @@ SurfaceAttributes generation_attributes(const RoughSurfaceSpec& spec) {
 
 std::optional<double> read_surface_attribute(const fs::path& file, const std::string& dataset, const std::string& name) {
   if (!is_hdf5_name(file)) return std::nullopt;
-  const H5Reader reader(file);
-  if (!reader.exists(dataset)) return std::nullopt;
-  try {
-    return reader.number_attribute(dataset, name);
-  } catch (const InputError&) {
-    return std::nullopt;
-  }
+  return H5Reader::guarded(file, [&](const H5Reader& reader) -> std::optional<double> {
+    if (!reader.exists(dataset)) return std::nullopt;
+    return reader.number_attribute_if(dataset, name);
+  });
 }
 
 }  // namespace wearscale::bem

@@ -13,6 +13,7 @@
 
 #include "topography_formats.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 
 namespace wearscale::bem::formats {
@@ -156,6 +157,7 @@ void read_gwyddion_comment(std::string_view comment, const std::string& file, st
 }  // namespace
 
 RawTopography parse_text(std::string_view content, const std::string& where, const TopographyOptions& o) {
+  content = strip_utf8_bom(content);  // as spreadsheet programs write
   RawTopography raw;
   raw.where = where;
   std::optional<double> lx, ly;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/dem/virial_stress.hpp"
 
 namespace wearscale::dem {
@@ -33,6 +34,12 @@ Box periodic_box(const Vec3& size) {
   return b;
 }
 
+namespace {
+// Memory of a simulated particle, neighbour list and pair histories included:
+// 154 MiB peak for 256 000 particles measured (bench/dem), about 630 B; with margin.
+constexpr double bytes_per_particle = 1024.0;
+}  // namespace
+
 Particles insert_randomly(const AmorphousSpec& spec, double density) {
   for (int a = 0; a < 3; ++a)
     require(spec.box_size[a] > 0.0 && std::isfinite(spec.box_size[a]), fmt::format("box length along {}", "xyz"[a]),
@@ -45,8 +52,14 @@ Particles insert_randomly(const AmorphousSpec& spec, double density) {
   Random random(spec.seed);
   const Box box = periodic_box(spec.box_size);
   const double target = spec.volume_fraction * box.volume();
+  // The count before anything is allocated (a box given in metres instead of d0 asks for 10^20 particles).
+  const double estimate = target / ball_volume(0.5 * spec.sizes.mode) * 1.1 + 1.0;
+  require_memory(estimate * bytes_per_particle,
+                 fmt::format("a DEM sample of about {:.3g} particles (box {:g} × {:g} × {:g} m, d0 = {:g} m)", estimate,
+                             spec.box_size[0], spec.box_size[1], spec.box_size[2], spec.sizes.mode),
+                 "lengths are in metres unless given with a unit (\"60 nm\"); give a smaller box or larger particles");
   Particles p;
-  p.reserve(static_cast<std::size_t>(target / ball_volume(0.5 * spec.sizes.mode) * 1.1) + 1);
+  p.reserve(static_cast<std::size_t>(estimate));
   double filled = 0.0;
   // Add the next particle while it brings the volume fraction closer to the
   // target: the result is within half a particle's volume of it.

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/errors.hpp"
 
 namespace wearscale::dem {
 
@@ -88,7 +89,7 @@ DumpWriter::DumpWriter(std::filesystem::path final_path, DumpFormat format)
   if (!final_.parent_path().empty()) std::filesystem::create_directories(final_.parent_path());
   partial_ = partial_path(final_);
   file_ = std::fopen(partial_.c_str(), "wb");
-  if (!file_) throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+  if (!file_) throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
 }
 
 DumpWriter::~DumpWriter() {
@@ -102,7 +103,7 @@ DumpWriter::~DumpWriter() {
 DumpPosition DumpWriter::position() {
   if (committed_) throw std::logic_error("DumpWriter: position() after commit()");
   if (std::fflush(file_) != 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+    throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
   keep_partial_ = true;
   return {partial_.filename().string(), std::filesystem::file_size(partial_), frames_};
 }
@@ -118,7 +119,7 @@ bool DumpWriter::resume(const DumpPosition& at) {
   std::filesystem::rename(previous, partial_);
   std::filesystem::resize_file(partial_, at.bytes);
   file_ = std::fopen(partial_.c_str(), "ab");
-  if (!file_) throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+  if (!file_) throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
   frames_ = at.frames;
   return true;
 }
@@ -141,7 +142,7 @@ void DumpWriter::write(long step, double time, const Particles& p, const Box& bo
     xyz_frame(out, step, time, p, box, extra);
   // One write per frame, flushed: a reader of the partial file sees whole frames.
   if (std::fwrite(out.data(), 1, out.size(), file_) != out.size() || std::fflush(file_) != 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+    throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
   ++frames_;
 }
 
@@ -153,7 +154,7 @@ void DumpWriter::commit() {
   if (committed_) return;
   const int closed = std::fclose(file_);
   file_ = nullptr;
-  if (closed != 0) throw std::runtime_error(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
+  if (closed != 0) throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));
   commit_file(partial_, final_);
   committed_ = true;
 }

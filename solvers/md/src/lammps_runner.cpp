@@ -19,7 +19,7 @@
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/md/sha256.hpp"
+#include "wearscale/core/sha256.hpp"
 
 namespace wearscale::md {
 

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
-#include "wearscale/md/sha256.hpp"
+#include "wearscale/core/sha256.hpp"
 
 namespace wearscale::md {
 

@@ -19,7 +19,7 @@
 #include "wearscale/md/lammps_runner.hpp"
 #include "wearscale/md/potential_file.hpp"
 #include "wearscale/md/result_cache.hpp"
-#include "wearscale/md/sha256.hpp"
+#include "wearscale/core/sha256.hpp"
 
 namespace wearscale::md {
 

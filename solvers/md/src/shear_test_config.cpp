@@ -45,7 +45,7 @@ ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material_
   }
   s.sample_steps = c.integer_or("sample_steps", s.sample_steps, Range::closed(1, 1e7));
   s.seed = static_cast<std::uint32_t>(c.integer_or("seed", s.seed, Range::closed(1, 9e8)));
-  s.potential = c.string_or("potential", s.potential.string());
+  if (c.has("potential")) s.potential = c.path("potential");  // relative to the case file
   number(c, "cutoff", s.cutoff, Range::non_negative(), units::length);
   s.lmp = c.string_or("lmp", s.lmp);
   s.ranks = static_cast<int>(c.integer_or("ranks", s.ranks, Range::closed(1, 1024)));

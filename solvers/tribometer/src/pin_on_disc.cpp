@@ -39,7 +39,9 @@ void PinOnDiscSetup::validate() const {
   require(path_length >= size && std::isfinite(path_length), "path_length", path_length,
           "≥ size (the window is part of the path)");
   require(time_step > 0.0 && std::isfinite(time_step), "time_step", time_step, "> 0 s");
-  require(distance >= 0.0 && std::isfinite(distance), "distance", distance, "≥ 0 m");
+  require(distance > 0.0 && std::isfinite(distance), "distance", distance, "> 0 m");
+  require(velocity * time_step <= distance * (1.0 + 1e-12), "time_step", time_step,
+          "≤ distance/velocity (at least one step: a longer step would overshoot the distance)");
   require(layer_thickness >= 0.0, "layer_thickness", layer_thickness, "≥ 0 m or inf");
   require(e_star > 0.0 && std::isfinite(e_star), "e_star", e_star, "> 0 Pa");
   require(nonplanar_slope >= 0.0 && nonplanar_slope < 0.2, "nonplanarity.slope", nonplanar_slope, "[0, 0.2)");
@@ -177,6 +179,17 @@ bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::C
                          fmt::format("{} at iteration {}: {}: {}", e.solver(), e.step(), e.quantity(), e.detail()));
   }
   ++solves_;
+  // The window must hold the whole contact: pressure on its border means the
+  // pin (or its worn flat) is wider than the window, and the periodic
+  // half-space then sees overlapping copies of it.
+  const RealField& pressure = contact_.pressure();
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < g.ny; ++j)
+      if ((i == 0 || j == 0 || i + 1 == g.nx || j + 1 == g.ny) && pressure(i, j) > 0.0)
+        throw InputError(fmt::format("pin-on-disc: at s = {:g} m the contact reaches the edge of the window (size = "
+                                     "{:g} m, contact fraction {:.3g}); allowed: a window larger than the contact, "
+                                     "i.e. a larger size",
+                                     s, g.lx, r.contact_fraction));
   return r;
 }
 
@@ -274,7 +287,8 @@ void PinOnDisc::deposit_swept(double s0, double s1) {
 PinOnDiscSample PinOnDisc::step() {
   PinOnDiscSample sample;
   evaluate(s_, sample, &pin_rate_, &disc_rate_);
-  const double ds = setup_.velocity * setup_.time_step;  // dh = rate · v dt (9.23)
+  double ds = setup_.velocity * setup_.time_step;  // dh = rate · v dt (9.23)
+  if (const double rest = setup_.distance - s_; rest > 0.0 && rest < ds * (1.0 - 1e-9)) ds = rest;  // lands on the distance
   for (std::size_t k = 0; k < pin_rate_.size(); ++k) pin_[k] += pin_rate_[k] * ds;
   if (track_ == 0) {
     for (std::size_t i = 0; i < disc_.size(); ++i) disc_[i] -= disc_rate_[i] * ds;
@@ -348,8 +362,9 @@ void PinOnDisc::restore(const CheckpointState& state) {
   const auto& disc = state.array("disc_profile");
   const auto& p = state.array("contact_pressure");
   if (pin.size() != pin_.size() || disc.size() != disc_.size() || p.size() != pin_.size())
-    throw InputError(fmt::format("{}: a pin-on-disc state of {} cells, the case has {} ({}×{}; disc {} saved, {} here)",
-                                 state.origin, pin.size(), pin_.size(), grid().nx, grid().ny, disc.size(),
+    throw InputError(fmt::format("{}: a pin-on-disc state of {} pin cells, {} disc profile values and {} pressures; "
+                                 "the case has {} pin cells ({}×{}) and {} disc profile values",
+                                 state.origin, pin.size(), disc.size(), p.size(), pin_.size(), grid().nx, grid().ny,
                                  disc_.size()));
   for (const auto* v : {&pin, &disc})
     for (double x : *v)

@@ -6,7 +6,10 @@
 // previous complete checkpoint. It holds one state per owner (a scale:
 // "macro/bem-pin-on-disc"), the fingerprint of the case it belongs to, and
 // the FFTW plans in use (wisdom), so a resumed run computes with the same
-// transforms as the run it continues.
+// transforms as the run it continues. The file records its format version
+// and a SHA-256 checksum of everything it holds: a damaged checkpoint (flipped
+// bytes, a truncated copy, a dataset rewritten by another tool) or one of
+// another format is refused (InputError), never resumed from.
 //
 // A solver that wants to be resumable saves what it needs into a
 // CheckpointState (arrays of doubles are stored bit for bit) and restores
@@ -22,6 +25,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "wearscale/core/config.hpp"
+#include "wearscale/core/hdf5_file.hpp"
 
 namespace wearscale {
 
@@ -67,9 +71,12 @@ class Checkpointer {
   static Checkpointer disabled();
 
   /// Reads the checkpoint to resume from: InputError if it is not a wearscale
-  /// checkpoint, or belongs to a case with other parameters (naming the first
-  /// key that differs). Imports its FFTW wisdom.
+  /// checkpoint of this format, is damaged (checksum, types, shapes), or
+  /// belongs to a case with other parameters (naming the first key that
+  /// differs). Imports its FFTW wisdom.
   void load();
+  /// The same from an open file (fuzzing, tests).
+  void load(const H5Reader& file);
   /// The state `owner` saved before the run stopped, or nullptr.
   const CheckpointState* restored(const std::string& owner) const;
 
@@ -103,6 +110,10 @@ class Checkpointer {
 /// The folder `--resume DIR` continues: InputError unless `resume` is a
 /// folder and `out` (--out, empty if not given) names the same one.
 std::filesystem::path resume_folder(const std::filesystem::path& resume, const std::filesystem::path& out);
+
+/// A fresh run (no --resume) never discards the checkpoint of an unfinished
+/// one: OutputError naming `checkpoint` (and how to continue) if it exists.
+void require_fresh_start(const std::filesystem::path& checkpoint);
 
 /// The [run] keys checkpoint_interval (s, default 600) and checkpoint_steps
 /// (default 0), range-checked.

@@ -6,6 +6,7 @@
 // the file (and line), the key, the value and what is allowed. Keys that no
 // component read are errors too (reject_unknown_keys), so a typo never falls
 // back silently to a default.
+#include <cstdint>
 #include <filesystem>
 #include <initializer_list>
 #include <memory>
@@ -24,15 +25,20 @@ namespace wearscale {
 
 class Config {
  public:
-  /// Reads and parses a TOML file; InputError if it is missing or malformed.
+  /// Reads and parses a TOML file; InputError if it is missing, not a
+  /// regular file, larger than max_case_file_bytes, or malformed.
   static Config load(const std::filesystem::path& file);
+  static constexpr std::uintmax_t max_case_file_bytes = std::uintmax_t{4} << 20;
   /// Parses TOML text; `source` names it in error messages.
   static Config from_string(std::string_view text, std::string source = "<string>");
 
   /// Applies a command-line override "KEY=VALUE" (`--set`). VALUE is read as
   /// TOML (number, bool, "string", [array], {inline = table}); a bare word is
-  /// taken as a string. Intermediate tables are created as needed.
-  void override_value(std::string_view assignment);
+  /// taken as a string. Intermediate tables are created as needed. A value
+  /// of several lines is refused (a second line would be dropped). `origin`
+  /// names where the value came from in messages ("--set", or the sweep
+  /// value of a case file: "case.toml:12 (sweep.values[1])").
+  void override_value(std::string_view assignment, std::string_view origin = "--set");
 
   /// A view of a sub-table; its keys are relative to `key`. An absent table
   /// gives an empty view (every optional getter then returns its fallback).
@@ -58,6 +64,10 @@ class Config {
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const;
   std::string choice_or(std::string_view key, std::string fallback,
                         std::initializer_list<std::string_view> allowed) const;
+  /// A file name: a non-empty string; relative names in a case file are
+  /// relative to the folder of that file, on the command line (--set) to the
+  /// working directory.
+  std::filesystem::path path(std::string_view key) const;
   std::vector<double> numbers(std::string_view key, const Range& range = {},
                               units::Dimension dim = units::dimensionless) const;
   /// The elements of an array as override text: numbers in full precision,
@@ -76,6 +86,8 @@ class Config {
                                  std::string_view allowed = {}) const;
 
   const std::string& source() const;
+  /// Where a key's value comes from: "case.toml:12", or the origin of its override.
+  std::string where(std::string_view key) const;
   /// Absolute dotted key of a key of this view.
   std::string full_key(std::string_view key) const;
   /// The resolved case (overrides applied) as JSON and as TOML text.

@@ -1,5 +1,6 @@
 #pragma once
-// The two kinds of failure a user can meet, and the exit status of each.
+// The kinds of failure a user can meet, and the exit status of each
+// (docs/reliability.md).
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +23,16 @@ class InputError : public std::runtime_error {
   static InputError at_key(const std::string& file, const std::string& key,
                            const std::string& value, const std::string& problem,
                            const std::string& allowed);
+};
+
+/// An output that cannot be written: a folder that cannot be created or is
+/// read-only, a full disk, a folder another run is writing into. The
+/// message names the path and the cause; nothing is left under a final name.
+/// Exit status 2, as bad input: the user can act on it (another --out, free
+/// space) and resume.
+class OutputError : public InputError {
+ public:
+  explicit OutputError(const std::string& message) : InputError(message) {}
 };
 
 /// A numerical failure: divergence, NaN/Inf, an unstable time step. The

@@ -1,23 +1,43 @@
 #pragma once
-// HDF5 output and input: 1D series, column tables, 2D fields and string
-// attributes for provenance. Output files exist under their final name only
-// once complete (commit()); a writer destroyed before commit — by an
-// exception, or a killed process — leaves no file under the final name.
+// HDF5 output and input: 1D series, column tables, 2D fields and attributes
+// for provenance.
+//
+// Writing: the file is built in memory (HDF5's core driver) and written to
+// disk by wearscale itself when committed, every write checked; it exists
+// under its final name only once complete (commit()). A writer destroyed
+// before commit — by an exception, or a killed process — leaves no file under
+// the final name; a full disk or a read-only folder is an OutputError naming
+// the file, never a crash inside HDF5. Chunked (large) datasets carry a
+// Fletcher-32 checksum, so damaged data read back is an error, not numbers.
+//
+// Reading: every dataset and attribute is checked for its type and shape
+// before it is read, and its size against the memory limit, so a file from
+// another tool (h5py, MATLAB) or a damaged one gives an InputError naming
+// the file, the object and what was expected. HDF5 1.10 itself crashes on
+// some malformed files (found by fuzzing, tests/fuzz): every reader of a file
+// a user gives therefore runs through H5Reader::guarded, which performs the
+// read in a child process first and refuses the file as damaged if that
+// child crashes or hangs; a few milliseconds per file.
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/field.hpp"
 
 namespace wearscale {
 
 class H5Writer {
  public:
-  /// Starts writing `final_path` under a temporary name beside it.
-  explicit H5Writer(std::filesystem::path final_path);
+  /// Starts writing `final_path` (a placeholder temporary file is created
+  /// beside it at once, so an unwritable folder fails here, before any work).
+  explicit H5Writer(std::filesystem::path final_path, Commit mode = Commit::WithItsSet);
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
   H5Writer& operator=(const H5Writer&) = delete;
@@ -34,12 +54,15 @@ class H5Writer {
   /// String attribute on a group or dataset ("/" is the file).
   void set_attribute(const std::string& object, const std::string& name, std::string_view value);
   void set_attribute(const std::string& object, const std::string& name, double value);
+  /// A 64-bit integer attribute (counts, steps: read back exactly).
+  void set_integer_attribute(const std::string& object, const std::string& name, std::int64_t value);
   /// A read-only view `view` of the 2D dataset `source` (already written,
   /// rows × cols) with its axes swapped (cols × rows): an HDF5 virtual
   /// dataset of this file, one mapping per source row, no data copied.
   void write_transposed_view(const std::string& view, const std::string& source);
 
-  /// Closes the file and moves it to its final name. Without it, nothing appears.
+  /// Writes the file and moves it to its final name (with its OutputSet, if
+  /// one is open for the folder and the mode says so). Without it, nothing appears.
   void commit();
   const std::filesystem::path& final_path() const { return final_; }
   const std::filesystem::path& partial() const { return partial_; }
@@ -50,30 +73,99 @@ class H5Writer {
   bool exists(const std::string& object) const;
   void close();
   std::filesystem::path final_, partial_;
+  Commit mode_;
   long long file_ = -1;  // hid_t
   bool committed_ = false;
 };
+
+namespace detail {
+/// What `read` did in a child process within `timeout_seconds`.
+struct Trial {
+  std::string failure;      ///< why it did not run to its end ("the HDF5 library crashed reading it (signal 11, …)"); "" if it did
+  std::string input_error;  ///< the message of the InputError it raised, if any
+};
+/// Called inside a child, an empty Trial.
+Trial try_in_child(const std::function<void()>& read, double timeout_seconds);
+/// InputError "<name>: damaged or not what it claims: …" unless `read` runs
+/// to its end in a child (a timeout of 5 s plus 1 s per 20 MB of `bytes`);
+/// the child's own InputError if it raised one (the read is then not
+/// repeated in this process).
+void refuse_if_damaged(const std::string& name, double bytes, const std::function<void()>& read);
+}  // namespace detail
+
+/// `read()`, a reader of the HDF5 file `file` through the C API (lock_hdf5),
+/// guarded as H5Reader::guarded: tried in a child process first, the file
+/// refused as damaged if HDF5 crashes or hangs there.
+template <class Read>
+auto guarded_hdf5_read(const std::filesystem::path& file, Read&& read) {
+  std::error_code ec;
+  const double bytes = static_cast<double>(std::filesystem::file_size(file, ec));
+  detail::refuse_if_damaged(file.string(), ec ? 0.0 : bytes, [&] { (void)read(); });
+  return read();
+}
 
 class H5Reader {
  public:
   /// Opens an HDF5 file; InputError if missing or not HDF5.
   explicit H5Reader(const std::filesystem::path& path);
+  /// Opens an HDF5 file image held in memory (`name` stands for it in
+  /// messages): tests and fuzzing.
+  static H5Reader from_image(std::string_view bytes, const std::string& name);
+
+  /// `read(reader)` on `file`, tried first in a child process: if HDF5
+  /// crashes or hangs there, InputError ("damaged or not what it claims")
+  /// instead of the crash; else the result of `read` in this process (the
+  /// same read of the same bytes takes the same path). For every file a user
+  /// gives (topographies, strength tables, checkpoints).
+  template <class Read>
+  static auto guarded(const std::filesystem::path& file, Read&& read) {
+    return guarded_hdf5_read(file, [&] { return read(H5Reader(file)); });
+  }
+  /// The same on a file image in memory (fuzzing).
+  template <class Read>
+  static auto guarded_image(std::string_view bytes, const std::string& name, Read&& read) {
+    detail::refuse_if_damaged(name, static_cast<double>(bytes.size()), [&] { read(from_image(bytes, name)); });
+    return read(from_image(bytes, name));
+  }
   ~H5Reader();
   H5Reader(const H5Reader&) = delete;
   H5Reader& operator=(const H5Reader&) = delete;
+  H5Reader(H5Reader&& other) noexcept;
 
   bool exists(const std::string& path) const;
+  /// The dimensions of a dataset (empty for a scalar); InputError if it is absent or not a dataset.
   std::vector<std::size_t> shape(const std::string& dataset) const;
+  /// Every value of a numeric (integer or floating-point) dataset of any
+  /// rank, converted to double, in row-major order.
   std::vector<double> read_series(const std::string& dataset) const;
+  /// A scalar or 1D dataset of 64-bit floats, bit for bit: what wearscale
+  /// saves to read back exactly (checkpoints). Any other type or rank is refused.
+  std::vector<double> read_exact(const std::string& dataset) const;
   double read_scalar(const std::string& dataset) const;
-  /// A 2D dataset as a field; the grid size comes from attributes lx, ly
-  /// (defaults 1 × 1 if absent, e.g. a topography written by another tool).
+  /// A 2D numeric dataset as a field; the grid size comes from the number
+  /// attributes lx, ly (defaults 1 × 1 if absent, e.g. a topography written
+  /// by another tool; InputError if present but not one number each).
   RealField read_field(const std::string& dataset) const;
+
+  /// A string attribute: fixed or variable length (h5py's default), a scalar
+  /// or an array of one. InputError naming it if absent or of another kind.
   std::string string_attribute(const std::string& object, const std::string& name) const;
+  /// The same, or nullopt if the object has no such attribute.
+  std::optional<std::string> string_attribute_if(const std::string& object, const std::string& name) const;
+  /// One number (integer or floating-point, a scalar or an array of one).
   double number_attribute(const std::string& object, const std::string& name) const;
+  /// The same, or nullopt if the object has no such attribute (present but
+  /// malformed is still an InputError).
+  std::optional<double> number_attribute_if(const std::string& object, const std::string& name) const;
+  /// One integer (of an integer type only: a float, NaN included, is refused).
+  std::int64_t integer_attribute(const std::string& object, const std::string& name) const;
+
+  const std::string& name() const { return name_; }
 
  private:
-  std::filesystem::path path_;
+  H5Reader() = default;
+  long long open_attribute(const std::string& object, const std::string& name, bool required) const;
+  std::string name_;
   long long file_ = -1;
 };
 

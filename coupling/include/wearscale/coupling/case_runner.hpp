@@ -12,11 +12,14 @@
 // identical to an uninterrupted run. The checkpoint is removed when the run
 // completes.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "wearscale/core/config.hpp"
 
 namespace wearscale::coupling {
 
@@ -34,6 +37,7 @@ struct RunSummary {
   nlohmann::json results;           ///< headline figures {name: {value, unit, description}}
   nlohmann::json parameters;        ///< the resolved case
   std::vector<std::filesystem::path> files;
+  bool complete_before = false;  ///< resumed, but it had completed: its files were not written again
   // A sweep: the key, and one summary per value (results above stay empty).
   std::string sweep_key;
   std::vector<std::string> sweep_values;  ///< per run
@@ -44,8 +48,21 @@ struct RunSummary {
 };
 
 /// Throws InputError for a bad case (before any output is written; for a
-/// sweep, before any of its runs starts), NumericalError when a solver fails,
-/// and Interrupted on SIGINT/SIGTERM (after saving the checkpoints).
+/// sweep, before any of its runs starts), OutputError when the output folder
+/// is in use by another process, holds the checkpoint of an unfinished run
+/// (without resume_dir), or cannot be written, NumericalError when a solver
+/// fails, and Interrupted on SIGINT/SIGTERM (after saving the checkpoints).
+/// The outputs of a run appear together, with its summary.json last
+/// (OutputSet); a sweep shares the thread budget (-j) among its runs.
 RunSummary run_case(const RunOptions& options);
+
+/// Parses the case afresh (a sweep applies each value to its own copy).
+using CaseLoader = std::function<Config()>;
+
+/// Everything run_case checks before it writes anything, without running or
+/// writing: the case from `parse` with `options.overrides`, its sweep (key,
+/// values, table) and the scales of every run. Returns each run's output
+/// folder; throws what run_case would for the same input (InputError).
+std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options);
 
 }  // namespace wearscale::coupling

@@ -13,7 +13,9 @@ bool plotting_available();
 
 /// Runs a gnuplot `script` (without terminal and output lines) that draws
 /// `png`, written atomically: the PNG appears only if gnuplot succeeded
-/// (a warning otherwise; nothing without gnuplot).
+/// (a warning otherwise; nothing without gnuplot) and left a whole image
+/// (OutputError if it did not: a full disk). Data files are read where they
+/// are now (a staged output of the run, OutputSet::readable).
 std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png,
                                                  int width = 1000, int height = 700);
 

@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "wearscale/core/hdf5_file.hpp"
+
 namespace wearscale::materials {
 
 struct StrengthTable {
@@ -38,6 +40,9 @@ struct StrengthTable {
 StrengthTable read_strength_table(const std::filesystem::path& file);
 /// The CSV format above from its text; `origin` names it in messages.
 StrengthTable parse_strength_table_csv(std::string_view text, const std::string& origin);
+/// The same from an open HDF5 file (/strength/{pressure,sigma_max,sigma_dyn},
+/// each with a pressure "unit" attribute; provenance attributes optional).
+StrengthTable parse_strength_table_h5(const H5Reader& file);
 
 /// Writes the table (CSV or HDF5 by extension), atomically. The `material`
 /// is stored as the provenance key "material".

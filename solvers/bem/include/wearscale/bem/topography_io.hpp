@@ -28,6 +28,7 @@
 
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/field.hpp"
+#include "wearscale/core/hdf5_file.hpp"
 
 namespace wearscale::bem {
 
@@ -88,7 +89,9 @@ std::string supported_topography_formats();
 
 /// A height grid from a text/CSV file. InputError naming the file, line and
 /// column for ragged rows, non-numbers, NaN or infinities, and for an empty
-/// file or a missing size (neither a "# lx =" comment nor `size`).
+/// file or a missing size (neither a "# lx =" comment nor `size`). Either
+/// reader refuses heights whose peak-to-valley span exceeds 1000 times the
+/// longer side (heights and sizes in different units).
 RealField read_topography_text(const std::filesystem::path& file, const TopographySize& size = {});
 /// The same from the text itself; `name` stands for the file in messages.
 RealField parse_topography_text(std::string_view text, const std::string& name, const TopographySize& size = {});
@@ -97,6 +100,10 @@ RealField parse_topography_text(std::string_view text, const std::string& name, 
 /// missing, the dataset is not 2D, holds NaN/inf, or has no size (no lx/ly
 /// attributes and none given).
 RealField read_topography_h5(const std::filesystem::path& file, const std::string& dataset = default_surface_dataset,
+                             const TopographySize& size = {});
+/// The same from an open file. Attributes lx, ly must be one number each if
+/// present; the grid is checked against the memory limit before it is read.
+RealField read_topography_h5(const H5Reader& file, const std::string& dataset = default_surface_dataset,
                              const TopographySize& size = {});
 
 /// Any format (read_measured_topography), missing points refused.

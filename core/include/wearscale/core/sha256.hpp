@@ -1,12 +1,13 @@
 #pragma once
-// SHA-256 of bytes, as 64 lowercase hex digits: the key of cached LAMMPS
-// results (every input hashed, so a changed input never reuses a result).
+// SHA-256 of bytes, as 64 lowercase hex digits: e.g. the key of cached LAMMPS
+// results (every input hashed, so a changed input never reuses a result) and the
+// checksum of checkpoints.
 // Computed by OpenSSL's EVP interface.
 #include <memory>
 #include <string>
 #include <string_view>
 
-namespace wearscale::md {
+namespace wearscale {
 
 /// Incremental SHA-256 (FIPS 180-4).
 class Sha256 {
@@ -29,4 +30,4 @@ class Sha256 {
 /// SHA-256 of `bytes` as hex.
 std::string sha256_hex(std::string_view bytes);
 
-}  // namespace wearscale::md
+}  // namespace wearscale

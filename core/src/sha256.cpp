@@ -1,4 +1,4 @@
-#include "wearscale/md/sha256.hpp"
+#include "wearscale/core/sha256.hpp"
 
 #include <openssl/evp.h>
 
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace wearscale::md {
+namespace wearscale {
 
 struct Sha256::Context {
   EVP_MD_CTX* md = EVP_MD_CTX_new();
@@ -44,4 +44,4 @@ std::string sha256_hex(std::string_view bytes) {
   return h.hex();
 }
 
-}  // namespace wearscale::md
+}  // namespace wearscale
