@@ -11,12 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_contact_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_contact_cli_");
+const std::filesystem::path work = work_scratch.path();
 const std::string rough_case = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/rough_contact.toml'";
 }  // namespace
 

@@ -10,12 +10,14 @@
 #include <fstream>
 
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_dem_wear_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_dem_wear_cli_");
+const std::filesystem::path work = work_scratch.path();
 const std::string source = WEARSCALE_SOURCE_DIR;
 }  // namespace
 

@@ -24,12 +24,14 @@
 
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_faults_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_faults_");
+const std::filesystem::path work = work_scratch.path();
 // About 30 explicit steps on a 16² grid with a checkpoint every 10: every kind of write of a run
 // (checkpoints, run.h5, CSV, XDMF, the plot's script, PNG, summary), in a fraction of a second.
 const std::string run_args = "run '" + std::string(WEARSCALE_SOURCE_DIR) +

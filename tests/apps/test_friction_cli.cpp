@@ -12,12 +12,14 @@
 
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_friction_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_friction_cli_");
+const std::filesystem::path work = work_scratch.path();
 const std::string friction_case = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/frictional_contact.toml'";
 // The Mindlin case of Fig. A.4a (n = 243, E = 1, ν = 0.5, μ = 0.5, L = 1, R = 10, p_N,0 = 1.5e-4).
 const std::string sphere = "contact --set contact.grid=243 --set contact.size=1 --set contact.sphere.radius=10 "

@@ -21,13 +21,15 @@
 #include "cli_runner.hpp"
 #include "h5_fixture.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_hostile_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_hostile_");
+const std::filesystem::path work = work_scratch.path();
 const std::string source = WEARSCALE_SOURCE_DIR;
 const std::string pin_on_disc = source + "/cases/pin_on_disc_si_oxide.toml";
 const std::string small = " --set scale.macro.grid=32 --set scale.macro.distance=0.001 --set run.fft_planning=estimate";

@@ -7,13 +7,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 TEST(LongRuns, OxideThicknessSweepFollowsFig921) {
   // The thesis sweep at full length (0.5 m): bare Si at μ_Si, bulk at μ_SiO2,
   // thicker oxide → later transition, higher mean μ, less disc wear.
-  const auto work = fs::temp_directory_path() / ("wearscale_long_" + std::to_string(::getpid()));
+  static const ScratchDir work_scratch("wearscale_long_");
+  const std::filesystem::path work = work_scratch.path();
   const auto r = run_cli("run '" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/oxide_thickness_sweep.toml' --out sweep --json", work);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto runs = nlohmann::json::parse(r.out)["sweep"]["runs"];

@@ -22,12 +22,15 @@
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "xdmf_check.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path work = fs::temp_directory_path() / ("wearscale_paraview_cli_" + std::to_string(::getpid()));
+static const ScratchDir work_scratch("wearscale_paraview_cli_");
+
+const std::filesystem::path work = work_scratch.path();
 
 bool have_pvpython() {
   static const bool found = std::system("command -v pvpython >/dev/null 2>&1") == 0;

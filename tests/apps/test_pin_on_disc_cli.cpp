@@ -10,12 +10,14 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_pod_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_pod_cli_");
+const std::filesystem::path work = work_scratch.path();
 const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
 const std::string nonplanar = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/nonplanar.toml'";
 const std::string small = " --set scale.macro.grid=32 --set scale.macro.distance=0.06";

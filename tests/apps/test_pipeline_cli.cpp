@@ -12,12 +12,14 @@
 
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_pipeline_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_pipeline_cli_");
+const std::filesystem::path work = work_scratch.path();
 const std::string scale_link = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/scale_link.toml'";
 const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
 const std::string short_run = " --set scale.macro.distance=0.01 --set scale.macro.grid=64";

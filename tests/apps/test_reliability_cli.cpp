@@ -22,6 +22,7 @@
 
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "scratch_dir.hpp"
 
 extern char** environ;
 
@@ -29,7 +30,8 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_reliability_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_reliability_");
+const std::filesystem::path work = work_scratch.path();
 const std::string pin_on_disc = std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml";
 // About 2000 explicit steps on a 64² grid: a second or two, long enough to be
 // killed mid-way. FFTW's estimate planning makes separate processes compute alike.

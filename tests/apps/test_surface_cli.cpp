@@ -14,12 +14,14 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_surface_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_surface_cli_");
+const std::filesystem::path work = work_scratch.path();
 constexpr double side = 1e-4;  // L = 100 µm
 
 std::string generate_args(double hurst, const std::string& out) {

@@ -17,12 +17,14 @@
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "xdmf_check.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_wearmap_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_wearmap_cli_");
+const std::filesystem::path work = work_scratch.path();
 
 // Rows of the map CSV (after the '#' comments and the header): x, y, region, then the layers.
 std::vector<std::vector<double>> read_rows(const fs::path& csv, std::string& header) {

@@ -15,12 +15,14 @@
 #include "cli_runner.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "xdmf_check.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 namespace {
-const fs::path work = fs::temp_directory_path() / ("wearscale_wearmap_rough_cli_" + std::to_string(::getpid()));
+const ScratchDir work_scratch("wearscale_wearmap_rough_cli_");
+const std::filesystem::path work = work_scratch.path();
 }  // namespace
 
 TEST(WearmapRoughCli, SmallMapWritesFilesAndShowsTheRegimes) {

@@ -24,6 +24,7 @@
 
 #include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 using namespace wearscale::bem;
@@ -33,7 +34,8 @@ using ::testing::HasSubstr;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale_formats_" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale_formats_");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   return dir / name;
 }

@@ -20,6 +20,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "xdmf_check.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 using namespace wearscale::bem;
@@ -28,7 +29,8 @@ using ::testing::HasSubstr;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale_topo_" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale_topo_");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   return dir / name;
 }

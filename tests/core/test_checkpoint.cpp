@@ -22,6 +22,7 @@
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 namespace fs = std::filesystem;
@@ -29,7 +30,8 @@ using ::testing::HasSubstr;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale_checkpoint_" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale_checkpoint_");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   return dir / name;
 }

@@ -14,13 +14,15 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/output_lock.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  return fs::temp_directory_path() / ("wearscale_output_lock_" + std::to_string(::getpid())) / name;
+  static const ScratchDir scratch("wearscale_output_lock_");
+  return scratch.path() / name;
 }
 
 // A child process holding the lock of `dir` until killed; returns its pid once it holds it.

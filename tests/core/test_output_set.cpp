@@ -16,13 +16,15 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale_output_set_" + std::to_string(::getpid())) / name;
+  static const ScratchDir dir_scratch("wearscale_output_set_");
+  const std::filesystem::path dir = dir_scratch.path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

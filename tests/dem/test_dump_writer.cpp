@@ -11,13 +11,15 @@
 #include <vector>
 
 #include "wearscale/dem/dump_writer.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale::dem;
 namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale-dem-dump-" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale-dem-dump-");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   return dir / name;
 }

@@ -8,6 +8,7 @@
 
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/dem/time_series.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
@@ -15,7 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("wearscale-dem-series-" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale-dem-series-");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   return dir / name;
 }

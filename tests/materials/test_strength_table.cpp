@@ -10,13 +10,15 @@
 #include "h5_fixture.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/shipped_data.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 using namespace wearscale::materials;
 using ::testing::HasSubstr;
 
 namespace {
-const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("wearscale_tables_" + std::to_string(::getpid()));
+const ScratchDir dir_scratch("wearscale_tables_");
+const std::filesystem::path dir = dir_scratch.path();
 
 std::filesystem::path write(const std::string& name, const std::string& text) {
   std::filesystem::create_directories(dir);

@@ -6,12 +6,14 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include "scratch_dir.hpp"
 
 namespace md_test {
 
 /// A fresh folder under the system temp folder, unique to this process and name.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto d = std::filesystem::temp_directory_path() / ("wearscale-md-test-" + std::to_string(::getpid())) / name;
+  static const ScratchDir d_scratch("wearscale-md-test-");
+  const std::filesystem::path d = d_scratch.path() / name;
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;

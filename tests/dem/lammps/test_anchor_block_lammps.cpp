@@ -9,13 +9,15 @@
 #include <string>
 
 #include "wearscale/dem/anchor_block.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale::dem;
 namespace fs = std::filesystem;
 
 TEST(AnchorBlockAgainstLammps, KineticEnergiesAgreeAfterFiveHundredSteps) {
   if (std::system("command -v lmp >/dev/null 2>&1") != 0) GTEST_SKIP() << "lmp not installed";
-  const fs::path dir = fs::temp_directory_path() / ("wearscale-anchor-" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale-anchor-");
+  const std::filesystem::path dir = dir_scratch.path();
   fs::create_directories(dir);
   const std::string deck = std::string(WEARSCALE_BENCH_DECKS) + "/in.dem_anchor.lammps";
   const std::string cmd = "cd '" + dir.string() + "' && lmp -in '" + deck +

@@ -10,12 +10,14 @@
 
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
+#include "scratch_dir.hpp"
 
 using namespace wearscale;
 using namespace wearscale::md;
 
 TEST(LammpsSmoke, SiTwoPressuresUnderAMinute) {
-  const auto dir = std::filesystem::temp_directory_path() / ("wearscale-md-lammps-" + std::to_string(::getpid()));
+  static const ScratchDir dir_scratch("wearscale-md-lammps-");
+  const std::filesystem::path dir = dir_scratch.path();
   std::filesystem::remove_all(dir);
   ShearTestSpec s = preset_spec(Material::Si, "smoke");
   s.pressures = {0.0, 10e9};
