@@ -6,8 +6,6 @@
 
 #include <unistd.h>
 
-#include <chrono>
-
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
 #include "scratch_dir.hpp"
@@ -15,17 +13,14 @@
 using namespace wearscale;
 using namespace wearscale::md;
 
-TEST(LammpsSmoke, SiTwoPressuresUnderAMinute) {
+TEST(LammpsSmoke, SiAtTwoPressuresGivesAPhysicalStrength) {
   static const ScratchDir dir_scratch("wearscale-md-lammps-");
   const std::filesystem::path dir = dir_scratch.path();
   std::filesystem::remove_all(dir);
   ShearTestSpec s = preset_spec(Material::Si, "smoke");
   s.pressures = {0.0, 10e9};
   s.cache_dir = dir / "cache";
-  const auto t0 = std::chrono::steady_clock::now();
   const ShearStudy study = run_shear_study(s);  // InputError (apt-get install lammps) if lmp is missing
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_LT(seconds, 60.0);
   ASSERT_EQ(study.points.size(), 2u);
   for (const auto& p : study.points) {
     EXPECT_FALSE(p.run.cached);
