@@ -1,7 +1,6 @@
 #include "wearscale/core/checkpoint.hpp"
 
 #include <chrono>
-#include <ctime>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +11,7 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/sha256.hpp"
+#include "wearscale/core/utc_time.hpp"
 
 namespace wearscale {
 
@@ -110,14 +110,6 @@ std::string group_of(const std::string& owner) {
   return "/owners/" + g;
 }
 
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 }  // namespace
 
 // ------------------------------------------------------------------ state ---

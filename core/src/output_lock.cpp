@@ -7,9 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstring>
-#include <ctime>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -17,6 +15,7 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/utc_time.hpp"
 
 namespace wearscale {
 
@@ -27,15 +26,6 @@ namespace {
 std::string host_name() {
   char buf[256] = {};
   if (::gethostname(buf, sizeof buf - 1) != 0) return "?";
-  return buf;
-}
-
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
 }
 

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <ctime>
 #include <exception>
 #include <fstream>
 #include <mutex>
@@ -29,6 +27,7 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/core/utc_time.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 #include "wearscale/coupling/plots.hpp"
 
@@ -55,15 +54,6 @@ nlohmann::json RunSummary::to_json() const {
 }
 
 namespace {
-
-std::string utc_now() {
-  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 // The case (parsed afresh by `parse`) with its --set overrides, and `extra`
 // (a sweep value) from `origin`.
