@@ -114,50 +114,55 @@ std::size_t elements(hid_t space) {
   return n > 0 ? static_cast<std::size_t>(n) : 0;
 }
 
-std::optional<Member> attribute_member(hid_t object, const char* attribute, const char* member) {
+// `attribute` of `object`, open, when it exists and holds 1 to 16 elements:
+// `use(attr, type, count)` reads it.
+template <class Use>
+std::optional<Member> with_small_attribute(hid_t object, const char* attribute, Use&& use) {
   if (H5Aexists(object, attribute) <= 0) return std::nullopt;
   Id attr(H5Aopen(object, attribute, H5P_DEFAULT), H5Aclose);
   Id type(H5Aget_type(attr), H5Tclose);
   Id space(H5Aget_space(attr), H5Sclose);
   const std::size_t n = elements(space);
   if (n == 0 || n > 16) return std::nullopt;
-  auto read = [&](hid_t mem, void* buf) { return H5Aread(attr, mem, buf); };
-  const auto values = read_member(type, n, member, read);
-  if (values.empty()) return std::nullopt;
-  return values.front();
+  return use(attr, type, n);
+}
+
+std::optional<Member> attribute_member(hid_t object, const char* attribute, const char* member) {
+  return with_small_attribute(object, attribute, [&](hid_t attr, hid_t type, std::size_t n) -> std::optional<Member> {
+    auto read = [&](hid_t mem, void* buf) { return H5Aread(attr, mem, buf); };
+    const auto values = read_member(type, n, member, read);
+    if (values.empty()) return std::nullopt;
+    return values.front();
+  });
 }
 
 // A plain (non-compound) attribute as text or a number.
 std::optional<Member> attribute_value(hid_t object, const char* attribute) {
-  if (H5Aexists(object, attribute) <= 0) return std::nullopt;
-  Id attr(H5Aopen(object, attribute, H5P_DEFAULT), H5Aclose);
-  Id type(H5Aget_type(attr), H5Tclose);
-  Id space(H5Aget_space(attr), H5Sclose);
-  const std::size_t n = elements(space);
-  if (n == 0 || n > 16) return std::nullopt;
-  if (H5Tget_class(type) == H5T_STRING) {
-    if (H5Tis_variable_str(type) > 0) {
-      Id mem(H5Tcopy(H5T_C_S1), H5Tclose);
-      H5Tset_size(mem, H5T_VARIABLE);
-      std::vector<char*> s(n, nullptr);
-      if (H5Aread(attr, mem, s.data()) < 0) return std::nullopt;
-      Member m{s[0] != nullptr ? s[0] : "", {}};
-      for (auto* p : s) H5free_memory(p);
-      return m;
+  return with_small_attribute(object, attribute, [](hid_t attr, hid_t type, std::size_t n) -> std::optional<Member> {
+    if (H5Tget_class(type) == H5T_STRING) {
+      if (H5Tis_variable_str(type) > 0) {
+        Id mem(H5Tcopy(H5T_C_S1), H5Tclose);
+        H5Tset_size(mem, H5T_VARIABLE);
+        std::vector<char*> s(n, nullptr);
+        if (H5Aread(attr, mem, s.data()) < 0) return std::nullopt;
+        Member m{s[0] != nullptr ? s[0] : "", {}};
+        for (auto* p : s) H5free_memory(p);
+        return m;
+      }
+      const std::size_t width = H5Tget_size(type);
+      if (width == 0 || width > 4096) return std::nullopt;
+      std::vector<char> buf(width * n + 1, '\0');
+      Id mem(H5Tcopy(type), H5Tclose);
+      if (H5Aread(attr, mem, buf.data()) < 0) return std::nullopt;
+      return Member{std::string(buf.data(), strnlen(buf.data(), width)), {}};
     }
-    const std::size_t width = H5Tget_size(type);
-    if (width == 0 || width > 4096) return std::nullopt;
-    std::vector<char> buf(width * n + 1, '\0');
-    Id mem(H5Tcopy(type), H5Tclose);
-    if (H5Aread(attr, mem, buf.data()) < 0) return std::nullopt;
-    return Member{std::string(buf.data(), strnlen(buf.data(), width)), {}};
-  }
-  if (H5Tget_class(type) == H5T_FLOAT || H5Tget_class(type) == H5T_INTEGER) {
-    std::vector<double> v(n);
-    if (H5Aread(attr, H5T_NATIVE_DOUBLE, v.data()) < 0) return std::nullopt;
-    return Member{{}, v};
-  }
-  return std::nullopt;
+    if (H5Tget_class(type) == H5T_FLOAT || H5Tget_class(type) == H5T_INTEGER) {
+      std::vector<double> v(n);
+      if (H5Aread(attr, H5T_NATIVE_DOUBLE, v.data()) < 0) return std::nullopt;
+      return Member{{}, v};
+    }
+    return std::nullopt;
+  });
 }
 
 bool is_dataset(hid_t file, const std::string& path) {
