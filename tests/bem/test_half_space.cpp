@@ -15,6 +15,29 @@ using namespace wearscale::bem;
 using std::numbers::pi;
 
 namespace {
+
+// Two random traction fields (normal deviates from `seed`) and the body's
+// displacements under them.
+struct TwoLoads {
+  VectorField p1, p2, u1, u2;
+};
+TwoLoads random_loads(HalfSpace& body, const Grid2D& grid, unsigned seed) {
+  TwoLoads l{VectorField(grid), VectorField(grid), VectorField(grid), VectorField(grid)};
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n;
+  for (auto* f : {&l.p1.x, &l.p1.y, &l.p1.z, &l.p2.x, &l.p2.y, &l.p2.z})
+    for (auto& v : *f) v = n(rng);
+  body.displacement(l.p1, l.u1);
+  body.displacement(l.p2, l.u2);
+  return l;
+}
+
+// The work of the traction p through the displacement u, summed over the cells.
+double work(const VectorField& p, const VectorField& u) {
+  double w = 0.0;
+  for (std::size_t k = 0; k < p.grid().size(); ++k) w += p.x[k] * u.x[k] + p.y[k] * u.y[k] + p.z[k] * u.z[k];
+  return w;
+}
 // Uniform traction `value` on a disc of diameter d centred at (cx, cy).
 void disc(RealField& f, double d, double cx, double cy, double value) {
   const auto& g = f.grid();
@@ -63,18 +86,8 @@ TEST(HalfSpace, IncompressibleBodiesDecoupleNormalAndTangential) {
 TEST(HalfSpace, BettiReciprocityHoldsForArbitraryTractions) {
   const Grid2D grid(32, 24, 1.0, 0.8);
   HalfSpace body(grid, 1.0, 0.3);
-  VectorField p1(grid), p2(grid), u1(grid), u2(grid);
-  std::mt19937 rng(7);
-  std::normal_distribution<double> n;
-  for (auto* f : {&p1.x, &p1.y, &p1.z, &p2.x, &p2.y, &p2.z})
-    for (auto& v : *f) v = n(rng);
-  body.displacement(p1, u1);
-  body.displacement(p2, u2);
-  double w12 = 0.0, w21 = 0.0;
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    w12 += p1.x[k] * u2.x[k] + p1.y[k] * u2.y[k] + p1.z[k] * u2.z[k];
-    w21 += p2.x[k] * u1.x[k] + p2.y[k] * u1.y[k] + p2.z[k] * u1.z[k];
-  }
+  const auto [p1, p2, u1, u2] = random_loads(body, grid, 7);
+  const double w12 = work(p1, u2), w21 = work(p2, u1);
   EXPECT_NEAR(w12, w21, 1e-12 * std::abs(w12));
   EXPECT_GT(HalfSpace::elastic_energy(p1, u1), 0.0);  // the operator is positive
 }
@@ -243,19 +256,9 @@ TEST(HalfSpace, FreeOperatorIsSymmetricAndPositiveAndMatchesItsNormalBlock) {
   const Grid2D grid(24, 20, 1.2, 1.0);
   HalfSpace body(grid, 1.0, 0.3, Boundary::Free);
   HalfSpace normal = HalfSpace::normal(grid, body.contact_modulus(), Boundary::Free);
-  VectorField p1(grid), p2(grid), u1(grid), u2(grid);
   RealField uz(grid);
-  std::mt19937 rng(11);
-  std::normal_distribution<double> d;
-  for (auto* f : {&p1.x, &p1.y, &p1.z, &p2.x, &p2.y, &p2.z})
-    for (auto& v : *f) v = d(rng);
-  body.displacement(p1, u1);
-  body.displacement(p2, u2);
-  double w12 = 0.0, w21 = 0.0;
-  for (std::size_t k = 0; k < grid.size(); ++k) {
-    w12 += p1.x[k] * u2.x[k] + p1.y[k] * u2.y[k] + p1.z[k] * u2.z[k];
-    w21 += p2.x[k] * u1.x[k] + p2.y[k] * u1.y[k] + p2.z[k] * u1.z[k];
-  }
+  const auto [p1, p2, u1, u2] = random_loads(body, grid, 11);
+  const double w12 = work(p1, u2), w21 = work(p2, u1);
   EXPECT_NEAR(w12, w21, 1e-12 * std::abs(w12));
   EXPECT_GT(HalfSpace::elastic_energy(p1, u1), 0.0);
   // Parseval's forms on the padded grid equal the sums over the window.
