@@ -29,10 +29,8 @@ using ::testing::HasSubstr;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  static const ScratchDir dir_scratch("wearscale_topo_");
-  const std::filesystem::path dir = dir_scratch.path();
-  fs::create_directories(dir);
-  return dir / name;
+  static const ScratchDir dir("wearscale_topo_");
+  return dir.file(name);
 }
 
 fs::path write_text(const std::string& name, const std::string& text) {

@@ -30,10 +30,8 @@ using ::testing::HasSubstr;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  static const ScratchDir dir_scratch("wearscale_checkpoint_");
-  const std::filesystem::path dir = dir_scratch.path();
-  fs::create_directories(dir);
-  return dir / name;
+  static const ScratchDir dir("wearscale_checkpoint_");
+  return dir.file(name);
 }
 
 const std::string case_a = R"({"scale":{"macro":{"grid":64,"backend":"bem-pin-on-disc"}}})";

@@ -18,10 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  static const ScratchDir dir_scratch("wearscale-dem-dump-");
-  const std::filesystem::path dir = dir_scratch.path();
-  fs::create_directories(dir);
-  return dir / name;
+  static const ScratchDir dir("wearscale-dem-dump-");
+  return dir.file(name);
 }
 
 std::vector<std::string> lines_of(const fs::path& path) {

@@ -16,10 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path scratch(const std::string& name) {
-  static const ScratchDir dir_scratch("wearscale-dem-series-");
-  const std::filesystem::path dir = dir_scratch.path();
-  fs::create_directories(dir);
-  return dir / name;
+  static const ScratchDir dir("wearscale-dem-series-");
+  return dir.file(name);
 }
 }  // namespace
 

@@ -26,6 +26,11 @@ class ScratchDir {
   ScratchDir& operator=(const ScratchDir&) = delete;
 
   const std::filesystem::path& path() const { return path_; }
+  /// `name` inside the folder, which is created on first use.
+  std::filesystem::path file(const std::string& name) const {
+    std::filesystem::create_directories(path_);
+    return path_ / name;
+  }
 
  private:
   std::filesystem::path path_;
