@@ -152,8 +152,15 @@ RawTopography parse_ascii(std::string_view text, const std::string& where, const
   h.xscale = number("Xscale");
   h.yscale = number("Yscale");
   h.zscale = number("Zscale");
-  h.compression = keys.contains("Compression") ? static_cast<int>(number("Compression")) : 0;
-  h.data_type = static_cast<int>(number("DataType"));
+  // A format code must be an integer before it is one; check() tests its allowed values.
+  auto code = [&](const char* key, const char* allowed) {
+    const double v = number(key);
+    if (!(std::floor(v) == v && std::abs(v) <= 1e6))
+      refuse(where, fmt::format("{} = {} is not an integer; allowed: {}", key, v, allowed));
+    return static_cast<int>(v);
+  };
+  h.compression = keys.contains("Compression") ? code("Compression", "0") : 0;
+  h.data_type = code("DataType", "0 to 7");
   check(h, where);
   // Every value takes at least two characters: a file too short is refused before anything is allocated.
   const auto values = product(h.points, h.profiles);
