@@ -4,6 +4,7 @@
 // solver's storage (valid until its next solve: copy() to keep one).
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -194,12 +195,15 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
              options.max_iterations = max_iterations;
              options.method = method_from(method);
              ContactResult r;
+             const auto start = std::chrono::steady_clock::now();
              {
                py::gil_scoped_release release;
                r = mean_pressure ? self.solver.solve_mean_pressure(*mean_pressure, options)
                                  : self.solver.solve_interference(*interference, options);
              }
-             return to_dict(r);
+             auto d = to_dict(r);
+             d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+             return d;
            },
            py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(), py::arg("tolerance") = 1e-12,
            py::arg("max_iterations") = 10000, py::arg("method") = "preconditioned",
@@ -207,7 +211,8 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
 "preconditioned" (default) or "polonsky-keer". Releases the GIL. Returns a dict: iterations,
-error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell).
+error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
+solve_seconds (wall time of the C++ solve, GIL released).
 ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
       .def("set_surface", [](PyNormalContact& self, const InArray& h) {
              self.solver.set_surface(field_from(h, self.solver.grid()));
@@ -264,11 +269,14 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
              FrictionalResult r;
+             const auto start = std::chrono::steady_clock::now();
              {
                py::gil_scoped_release release;
                r = self.solver.solve(MeanTraction{mean_pressure, traction_x, traction_y}, options);
              }
-             return to_dict(r);
+             auto d = to_dict(r);
+             d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+             return d;
            },
            py::arg("mean_pressure"), py::arg("traction_x") = 0.0, py::arg("traction_y") = 0.0,
            py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 20000,

@@ -4,6 +4,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 
 namespace wearscale::python {
@@ -28,8 +29,11 @@ void bind_io(py::module_& m) {
         py::arg("file"), py::arg("path"), "Whether the HDF5 file holds a group or dataset at `path`.");
   m.def("attribute", [](const std::string& file, const std::string& object, const std::string& name) -> py::object {
           H5Reader h5(file);
-          if (auto s = h5.string_attribute_if(object, name)) return py::str(*s);
-          return py::float_(h5.number_attribute(object, name));
+          try {
+            return py::float_(h5.number_attribute(object, name));
+          } catch (const InputError&) {
+            return py::str(h5.string_attribute(object, name));  // a string attribute, or the error naming it
+          }
         }, py::arg("file"), py::arg("object"), py::arg("name"), "A string or number attribute (e.g. 'unit', 'lx').");
 }
 
