@@ -23,3 +23,17 @@ def test_a_short_hcp_patch_test_measures_the_target_elastic_constants():
     assert r["tensile_strength"] is None  # strengths=False
     with pytest.raises(ValueError, match="lattice"):
         ws.dem.patch_test(lattice="fcc")
+
+
+def test_a_junction_below_the_critical_size_deforms_and_reports_its_history_and_particles():
+    r = ws.dem.sheared_junction(diameter=8e-9, d0=3e-9, box=[24e-9, 16e-9, 24e-9], sliding_distance=3e-9)
+    sio2 = ws.materials.material("SiO2")
+    d_star = 32 * sio2["surface_energy_J_per_m2"] * sio2["shear_modulus_Pa"] / sio2["shear_strength_Pa"] ** 2  # (6.65)
+    assert r["d_star_m"] == pytest.approx(d_star, rel=1e-12)
+    assert not r["detached"] and r["verdict"] == "deformed plastically"  # D = 8 nm < d* = 18.5 nm (§6.3)
+    h = r["history"]
+    assert h["sliding_m"].shape == h["tangential_force_N"].shape and h["sliding_m"].size > 10
+    assert (h["sliding_m"][1:] >= h["sliding_m"][:-1]).all() and h["sliding_m"][-1] == pytest.approx(3e-9, rel=0.05)
+    assert r["peak_tangential_force_N"] == pytest.approx(h["tangential_force_N"].max(), rel=1e-12)
+    f = r["final"]
+    assert f["position"].shape == (r["particles"], 3) and f["radius"].shape == (r["particles"],)

@@ -35,15 +35,18 @@ if(STEP STREQUAL "cxx")
   run(${CMAKE_COMMAND} -E env WEARSCALE_DATA=${PREFIX}/share/wearscale/data ${consumer}/hertz_consumer)
   # pkg-config names the libraries and headers of the same prefix.
   run(${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${PREFIX}/lib/pkgconfig pkg-config --cflags --libs wearscale)
-  # The installed CLI finds its data relative to itself.
+  # The installed CLI runs and reads the shipped tables of its own prefix (run.h5 records the table's path).
   run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale version)
+  file(REMOVE_RECURSE ${consumer}/data-lookup)
+  run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale -q run
+      ${SOURCE}/tests/install/data_lookup.toml --out ${consumer}/data-lookup)
+  file(STRINGS ${consumer}/data-lookup/run.h5 tables REGEX "share/wearscale/data/thesis_fig9.18_Si.csv")
+  string(FIND "${tables}" "${PREFIX}/share/wearscale/data/" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the installed CLI did not read the data of ${PREFIX}: ${tables}")
+  endif()
 elseif(STEP STREQUAL "python")
-  run(${CMAKE_COMMAND} -E env PYTHONPATH=${PREFIX}/${PYDIR} --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR
-      ${PYTHON} -I -c "import sys; sys.path.insert(0, '${PREFIX}/${PYDIR}'); import wearscale, os; \
-assert wearscale.__file__.startswith('${PREFIX}'), wearscale.__file__; \
-d = wearscale.materials.data_directory(); print('data:', d); \
-assert os.path.realpath(d) == os.path.realpath('${PREFIX}/share/wearscale/data'), d; \
-print(wearscale.materials.interface_law('SiO2', 'Si')); \
-r = wearscale.contact.hertz_check(32); print(r); assert r['approach_relative_error'] < 1e-3"
-      WORKING_DIRECTORY ${PREFIX})
+  # -I: neither PYTHONPATH nor the user's site-packages; the script puts the prefix's first.
+  run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR
+      ${PYTHON} -I ${SOURCE}/tests/install/check_installed.py ${PREFIX} ${PYDIR} WORKING_DIRECTORY ${PREFIX})
 endif()
