@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -161,6 +162,27 @@ TEST(ParaViewCli, WearMapsOpenWithTheirFirstAxisAlongX) {
     EXPECT_EQ(v["value"].get<double>(), ratio[9 * 12 + 2]) << "R_sep at (d_r, d_a) = (" << xs[9] << ", " << ys[2] << ")";
   }
   expect_paraview_shows(rxmf, "count_mean", 3, 2, {0.0, 0.0, 1.0, 1.0}, 2, 1, stored(rh5, "/maps/count_mean", 2, 1));
+}
+
+TEST(ParaViewCli, PinOnDiscSnapshotsCloserThanATenthOfAMillimetreKeepTheirOwnFields) {
+  // 16 µm steps, a snapshot at each: groups once named by the distance to
+  // 0.1 mm shared one group among six steps, whose fields the last overwrote.
+  const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
+  const auto r = run_cli("run " + pin_on_disc +
+                             " --set scale.macro.distance=0.0004 --set scale.macro.grid=32"
+                             " --set scale.macro.time_step=0.002 --set scale.macro.fields_every=1 --out close",
+                         work);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path h5 = work / "close" / "run.h5";
+  const wearscale::H5Reader reader(h5);
+  const auto steps = expect_xdmf_time_series(work / "close" / "fields.xdmf", h5, {32, 32});
+  EXPECT_EQ(steps.size(), 26u) << "one snapshot per sample: 25 steps of 16 um and the final state";
+  std::set<std::string> groups;
+  for (const auto& [time, datasets] : steps) {
+    const std::string group = datasets[0].substr(0, datasets[0].rfind('/'));
+    EXPECT_TRUE(groups.insert(group).second) << group << " holds two snapshots";
+    EXPECT_EQ(reader.number_attribute(group, "distance"), time) << group;
+  }
 }
 
 TEST(ParaViewCli, PinOnDiscSnapshotsAreATimeSeriesOverTheSlidingDistance) {
