@@ -30,7 +30,7 @@ ax.set_xlim(0, 1)
 ax.set_ylim(0, 2)
 ax.set_xlabel("d/l")
 ax.set_ylabel("d*/l")
-ax.set_title(f"Fig. 4.6 at ν = {nu:g}: C_inter = {c_max:.3f} (θ = 0), {c_min:.3f} (θ = π/2)")
+ax.set_title(f"Fig. 4.6 at ν = {nu:g}\nC_inter = {c_max:.3f} (θ = 0, filled), {c_min:.3f} (θ = π/2, dashed)", fontsize=10)
 ax.legend(loc="upper left", fontsize=8)
 save(fig, f"{args.out}/wear_map_fig46_nu{nu:g}.png")
 
