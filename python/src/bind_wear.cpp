@@ -4,7 +4,10 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
+#include "wearscale/wear/candidate_particles.hpp"
+#include "wearscale/wear/energy_release.hpp"
 #include "wearscale/wear/rough_wear_map.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
 
@@ -42,6 +45,64 @@ py::dict to_dict(const WearMap& map) {
   d["layers"] = layers;
   d["parameters"] = map.parameters;
   return d;
+}
+
+using BoolArray = py::array_t<bool, py::array::c_style | py::array::forcecast>;
+
+Grid2D square_cells(const BoolArray& a, double lx, const std::string& what) {
+  if (a.ndim() != 2) throw InputError(what + ": a 2D mask is needed");
+  const auto nx = static_cast<std::size_t>(a.shape(0)), ny = static_cast<std::size_t>(a.shape(1));
+  return Grid2D(nx, ny, lx, lx * static_cast<double>(ny) / static_cast<double>(nx));
+}
+
+Disc disc_of(const std::tuple<long, long, long>& d, const Grid2D& g) {
+  Disc disc{std::get<0>(d), std::get<1>(d), std::get<2>(d)};
+  if (disc.cells < 1 || disc.i < 0 || disc.j < 0 || disc.i + disc.cells > static_cast<long>(g.nx) ||
+      disc.j >= static_cast<long>(g.ny))
+    throw InputError("wear: disc (i, j, cells) must lie on the grid with cells >= 1");
+  return disc;
+}
+
+py::array disc_mask(std::size_t nx, std::size_t ny, const std::tuple<long, long, long>& d) {
+  const Grid2D g(nx, ny, 1.0, static_cast<double>(ny) / static_cast<double>(nx));
+  const Disc disc = disc_of(d, g);
+  py::array_t<bool> out({nx, ny});
+  auto* o = out.mutable_data();
+  std::fill(o, o + nx * ny, false);
+  disc.for_each_row(g, [&](long j, long first, long last) {
+    for (long i = first; i <= last; ++i) o[static_cast<std::size_t>(i) * ny + static_cast<std::size_t>(j)] = true;
+  });
+  return out;
+}
+
+py::dict energy_release(const BoolArray& contact, double lx, double shear_modulus, double poisson,
+                        double junction_strength, const std::tuple<long, long, long>& d) {
+  const Grid2D g = square_cells(contact, lx, "wear.energy_release");
+  const Disc disc = disc_of(d, g);
+  std::vector<std::uint8_t> loaded(g.size());
+  for (std::size_t k = 0; k < g.size(); ++k) loaded[k] = contact.data()[k] ? 1 : 0;
+  double work = 0.0, self = 0.0, energy = 0.0;
+  {
+    py::gil_scoped_release release;
+    const TangentialCompliance f(g, shear_modulus, poisson);
+    const EnergyRelease er(f, junction_strength);
+    RealField p(g), u(g);
+    auto w = f.workspace();
+    er.traction(loaded, p);
+    f.displacement(p, u, w);
+    energy = f.energy(p, u);
+    DiscSums sums(g);
+    sums.build(loaded, &u);
+    work = junction_strength * g.cell_area() * sums.sum(disc);  // W_C
+    self = er.self_energy(disc, loaded);
+  }
+  py::dict out;
+  out["release_J"] = EnergyRelease::release(work, self);
+  out["work_J"] = work;
+  out["self_energy_J"] = self;
+  out["elastic_energy_J"] = energy;
+  out["disc_diameter_m"] = disc.diameter(g);
+  return out;
 }
 
 }  // namespace
@@ -84,6 +145,16 @@ particle, 2 two separated, 3 combined. Returns the same dict as analytic_map_2d.
           return energy_ratio_3d(static_cast<ParticleCase>(particle_case), d_over_l, dstar_over_l, c_inter);
         }, py::arg("case"), py::arg("d_over_l"), py::arg("dstar_over_l"), py::arg("c_inter"),
         "R = (C_n + (3 pi/8) C_inter d/l)(d/d*) C_case (4.48).");
+  m.def("disc_mask", &disc_mask, py::arg("nx"), py::arg("ny"), py::arg("disc"),
+        "The cells of a disc (i, j, cells): its diameter along x runs over `cells` cells from (i, j) to "
+        "(i + cells - 1, j); a cell belongs to it when its centre lies within cells/2 of the disc's centre.");
+  m.def("energy_release", &energy_release, py::arg("contact"), py::arg("lx"), py::arg("shear_modulus"),
+        py::arg("poisson"), py::arg("junction_strength"), py::arg("disc"),
+        R"(The elastic energy released (5.3) by detaching one candidate particle: the disc (i, j, cells) cut
+out of micro-contacts `contact` (a bool (nx, ny) mask on a free window lx [m] wide, square cells)
+loaded by the tangential traction p_x = junction_strength [Pa] (§5.2). Returns release_J
+(= work_J - self_energy_J: W_C = dA sigma_j sum_C u minus 1/2 dA p_C.(F p_C)), and the elastic energy
+of the whole loading elastic_energy_J = 1/2 dA sum p u (4.2). shear_modulus [Pa], -1 < poisson <= 0.5.)");
   m.def("rough_wear_map", [](std::size_t n, double hurst, double k_l, double k_s, double poisson,
                              std::vector<std::uint64_t> seeds, std::vector<double> loads,
                              std::vector<double> critical_diameters, double tensile_strength) {

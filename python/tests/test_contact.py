@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import wearscale as ws
+from _approx import approx
 
 E_STAR = 1e11
 
@@ -26,8 +27,8 @@ def test_hertz_check_agrees_with_the_analytic_sphere():
     assert r["contact_radius_relative_error"] < 2e-2  # a from the contact area, one cell of 4a/64
     # The unworn SiO2 pin on a SiO2 disc of §8.1 (R = 3 mm, 1 N): contact diameter 78.2 µm.
     h = ws.contact.hertz(3e-3, 1.0, ws.contact.effective_modulus(73e9, 0.17, 73e9, 0.17))
-    assert 2 * h["contact_radius_m"] == pytest.approx(78.2e-6, rel=2e-3)
-    assert h["mean_pressure_Pa"] == pytest.approx(2 / 3 * h["peak_pressure_Pa"], rel=1e-14)
+    assert 2 * h["contact_radius_m"] == approx(78.2e-6, rel=2e-3)
+    assert h["mean_pressure_Pa"] == approx(2 / 3 * h["peak_pressure_Pa"], rel=1e-14)
 
 
 def test_normal_contact_meets_the_contact_conditions_and_the_imposed_load(rough):
@@ -36,11 +37,11 @@ def test_normal_contact_meets_the_contact_conditions_and_the_imposed_load(rough)
     p, g, u = c.pressure, c.gap, c.displacement
     for a in (p, g, u):
         assert a.shape == (64, 64) and a.dtype == np.float64 and not a.flags.writeable
-    assert p.mean() == pytest.approx(2e6, rel=1e-12) and r["mean_pressure_Pa"] == pytest.approx(2e6, rel=1e-12)
+    assert p.mean() == approx(2e6, rel=1e-12) and r["mean_pressure_Pa"] == approx(2e6, rel=1e-12)
     assert p.min() >= 0.0
     scale = rough.heights.std()
     assert np.abs(g[p > 0]).max() < 1e-8 * scale and g.min() > -1e-8 * scale  # g = 0 in contact, ≥ 0 outside
-    assert r["contact_fraction"] == pytest.approx(np.count_nonzero(p > 0) / p.size, abs=0)
+    assert r["contact_fraction"] == approx(np.count_nonzero(p > 0) / p.size, abs=0)
     assert np.array_equal(c.contact, p > 0) and c.contact.dtype == np.bool_
     assert abs(u.mean()) < 1e-12 * np.abs(u).max()
     assert r["error"] < 1e-12 and r["solve_seconds"] > 0
@@ -66,7 +67,7 @@ def test_a_warm_started_load_ramp_matches_cold_solves_in_fewer_iterations(rough)
         cold = ws.contact.NormalContact(rough, e_star=E_STAR)
         r = cold.solve(mean_pressure=p0)
         cold_iterations += r["iterations"]
-        assert w["contact_fraction"] == pytest.approx(r["contact_fraction"], abs=2 / 64**2)
+        assert w["contact_fraction"] == approx(r["contact_fraction"], abs=2 / 64**2)
     assert sum(w["iterations"] for w in ramp[1:]) < cold_iterations - ws.contact.NormalContact(
         rough, e_star=E_STAR).solve(mean_pressure=loads[0])["iterations"]
     assert all(b["contact_fraction"] >= a["contact_fraction"] for a, b in zip(ramp, ramp[1:]))  # A grows with p
@@ -86,7 +87,7 @@ def test_the_warm_start_state_restores_a_bit_identical_next_solve(rough):
 def test_an_interference_solve_reaches_the_imposed_interference(rough):
     c = ws.contact.NormalContact(rough, e_star=E_STAR)
     r = c.solve(interference=0.3 * rough.heights.std())
-    assert r["interference_m"] == pytest.approx(0.3 * rough.heights.std(), rel=1e-6)
+    assert r["interference_m"] == approx(0.3 * rough.heights.std(), rel=1e-6)
 
 
 def test_bad_contact_input_is_a_value_error_with_the_key_and_range(rough):
@@ -121,10 +122,10 @@ def test_frictional_contact_gives_mindlins_stick_zone_and_the_arrays_of_traction
     c = sphere_frictional()
     p_n, ratio = 2e5, 0.5
     r = c.solve(mean_pressure=p_n, traction_x=ratio * 0.5 * p_n)
-    assert r["mean_traction_x_Pa"] == pytest.approx(ratio * 0.5 * p_n, rel=1e-9)
-    assert r["stick_fraction"] + r["slip_fraction"] == pytest.approx(r["contact_fraction"], rel=1e-12)
+    assert r["mean_traction_x_Pa"] == approx(ratio * 0.5 * p_n, rel=1e-9)
+    assert r["stick_fraction"] + r["slip_fraction"] == approx(r["contact_fraction"], rel=1e-12)
     stick_over_contact = r["stick_fraction"] / r["contact_fraction"]  # (c/a)²
-    assert math.sqrt(stick_over_contact) == pytest.approx((1 - ratio) ** (1 / 3), abs=0.05)
+    assert math.sqrt(stick_over_contact) == approx((1 - ratio) ** (1 / 3), abs=0.05)
     m = c.stick_slip
     assert m.dtype == np.uint8 and m.shape == (64, 64) and set(np.unique(m)) <= {0, 1, 2}
     assert np.array_equal(m > 0, c.pressure > 0)
@@ -149,7 +150,7 @@ def test_stresses_at_the_surface_carry_the_pressure_and_decay_with_depth(rough):
     s = ws.contact.stresses(c.pressure, rough.lx, poisson=0.3, depths=[0.0, 2e-5], tensor=True)
     top, deep = s[0.0], s[2e-5]
     assert np.allclose(top["zz_Pa"], -c.pressure, atol=1e-9 * c.pressure.max())  # σ_zz = −p at z = 0
-    assert deep["zz_Pa"].mean() == pytest.approx(-2e6, rel=1e-9)  # the mean load carries to every depth
+    assert deep["zz_Pa"].mean() == approx(-2e6, rel=1e-9)  # the mean load carries to every depth
     assert np.ptp(deep["zz_Pa"]) < np.ptp(top["zz_Pa"])  # and spreads
     assert (top["sigma_I_Pa"] >= top["sigma_III_Pa"]).all()
     assert np.allclose(top["tau_max_Pa"], (top["sigma_I_Pa"] - top["sigma_III_Pa"]) / 2)
@@ -186,7 +187,7 @@ hprime_rms = 0.1
     c = ws.contact.NormalContact(h, lx, e_star=1e11)
     r = c.solve(mean_pressure=2e6, tolerance=1e-12)
     assert np.abs(c.pressure - p_cli).max() <= 1e-12 * p_cli.max()
-    assert r["contact_fraction"] == pytest.approx(summary["results"]["contact_fraction"]["value"], rel=1e-12)
+    assert r["contact_fraction"] == approx(summary["results"]["contact_fraction"]["value"], rel=1e-12)
     # run() takes the same case through the same study
     res = ws.run(str(case), out=tmp_path / "out2")
     assert np.abs(res.load("/fields/pressure") - p_cli).max() <= 1e-12 * p_cli.max()

@@ -3,6 +3,7 @@
 import pytest
 
 import wearscale as ws
+from _approx import approx
 
 
 def test_the_hertz_pin_case_gives_the_thesis_contact_diameter(source_dir, tmp_path):
@@ -10,7 +11,7 @@ def test_the_hertz_pin_case_gives_the_thesis_contact_diameter(source_dir, tmp_pa
     assert isinstance(r, dict) and r.output_dir == tmp_path / "o"
     values = r.results
     diameter = 2 * values["contact_radius"]
-    assert diameter == pytest.approx(78.2e-6, rel=2e-3)  # §8.1
+    assert diameter == approx(78.2e-6, rel=2e-3)  # §8.1
 
 
 def test_a_dict_case_with_keyword_overrides_runs_like_its_file(source_dir, tmp_path):
@@ -19,7 +20,7 @@ def test_a_dict_case_with_keyword_overrides_runs_like_its_file(source_dir, tmp_p
                                 "elastic_modulus": "73 GPa", "poisson_ratio": 0.17}}}
     a = ws.run(case, out=tmp_path / "a").results
     b = ws.run(case, out=tmp_path / "b", scale__macro__normal_load="8 N").results
-    assert b["contact_radius"] == pytest.approx(2 * a["contact_radius"], rel=1e-12)  # a ∝ F^(1/3)
+    assert b["contact_radius"] == approx(2 * a["contact_radius"], rel=1e-12)  # a ∝ F^(1/3)
     from wearscale.run import to_toml
     assert ws.run(to_toml(case), out=tmp_path / "c").results == a  # the same case as TOML text
 

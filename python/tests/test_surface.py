@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import wearscale as ws
+from _approx import approx
 
 
 def test_generate_returns_float64_heights_of_the_grid_and_its_parameters():
@@ -27,9 +28,9 @@ def test_rescaling_hits_the_requested_roughness_to_round_off(key, target):
     s = ws.surface.generate(64, 1e-3, k_l=2, k_s=24, seed=1, **{key: target})
     measured = {"sa": ws.surface.sa(s.heights), "rms": ws.surface.h_rms(s.heights),
                 "slope_rms": ws.surface.h_prime_rms(s.heights, s.lx)}[key]
-    assert measured == pytest.approx(target, rel=1e-12)
+    assert measured == approx(target, rel=1e-12)
     a = s.analyze()
-    assert a[{"sa": "sa_m", "rms": "h_rms_m", "slope_rms": "h_prime_rms"}[key]] == pytest.approx(target, rel=1e-12)
+    assert a[{"sa": "sa_m", "rms": "h_rms_m", "slope_rms": "h_prime_rms"}[key]] == approx(target, rel=1e-12)
 
 
 @pytest.mark.parametrize("hurst", [0.5, 0.8])
@@ -40,7 +41,7 @@ def test_analyze_recovers_the_hurst_exponent_within_its_standard_error(hurst):
     a = ws.surface.analyze(s, q_min=k_l * q, q_max=k_s * q)
     # The generated amplitudes equal the target PSD exactly (no random amplitudes),
     # so the fit returns H up to the binning of the annuli.
-    assert a["hurst"] == pytest.approx(hurst, abs=max(3 * a["hurst_error"], 0.01))
+    assert a["hurst"] == approx(hurst, abs=max(3 * a["hurst_error"], 0.01))
     assert a["psd_q_rad_per_m"].shape == a["psd_c_m4"].shape and len(a["psd_count"]) == a["psd_q_rad_per_m"].size
     assert a["psd_2d_m4"].shape == (n, n // 2 + 1)
 
