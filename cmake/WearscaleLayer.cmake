@@ -4,18 +4,23 @@
 # alias `wearscale::<name>`. Its public headers live in <folder>/include and
 # are visible only to the layer itself and to layers that declare it in
 # DEPENDS: a solver that includes a coupling header fails to compile.
+# Installed (cmake/WearscaleInstall.cmake) as wearscale::<name> of find_package(wearscale).
+include(GNUInstallDirs)
 function(wearscale_layer)
   cmake_parse_arguments(L "" "NAME;DIR" "DEPENDS;LIBS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${L_DIR}/src/*.cpp)
   add_library(wearscale_${L_NAME} STATIC ${sources})
   add_library(wearscale::${L_NAME} ALIAS wearscale_${L_NAME})
-  target_include_directories(wearscale_${L_NAME} PUBLIC ${L_DIR}/include PRIVATE ${L_DIR}/src)
+  target_include_directories(wearscale_${L_NAME} PUBLIC $<BUILD_INTERFACE:${L_DIR}/include>
+                             $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}> PRIVATE ${L_DIR}/src)
   set(deps)
   foreach(d IN LISTS L_DEPENDS)
     list(APPEND deps wearscale::${d})
   endforeach()
   target_link_libraries(wearscale_${L_NAME} PUBLIC ${deps} ${L_LIBS} PRIVATE wearscale_flags)
-  set_target_properties(wearscale_${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_target_properties(wearscale_${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${L_NAME})
+  # Installed by cmake/WearscaleInstall.cmake: the library and its include/ folder as a whole.
+  set_property(GLOBAL PROPERTY WEARSCALE_LAYER_${L_NAME}_DIR ${L_DIR})
   set_property(GLOBAL APPEND PROPERTY WEARSCALE_LAYERS ${L_NAME})
   set_property(GLOBAL PROPERTY WEARSCALE_LAYER_${L_NAME}_DEPENDS ${L_DEPENDS})
 endfunction()

@@ -1,6 +1,9 @@
 #include "wearscale/materials/shipped_data.hpp"
 
+#include <dlfcn.h>
+
 #include <cstdlib>
+#include <mutex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -9,9 +12,50 @@
 
 namespace wearscale::materials {
 
+namespace {
+
+std::mutex override_mutex;
+std::filesystem::path override_dir;  // set_data_directory()
+
+const char* environment(const char* name) {
+  const char* v = std::getenv(name);
+  return v != nullptr && *v != '\0' ? v : nullptr;
+}
+
+// share/wearscale/data above the program or module this code is linked into:
+// P/bin/wearscale and P/lib/python3.X/dist-packages/wearscale/_wearscale*.so
+// both find P/share/wearscale/data, wherever P was installed or moved to.
+std::filesystem::path installed_data_directory() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&installed_data_directory), &info) == 0 || info.dli_fname == nullptr) return {};
+  std::error_code ec;
+  auto dir = std::filesystem::weakly_canonical(std::filesystem::path(info.dli_fname), ec).parent_path();
+  if (ec) return {};
+  for (int up = 0; up < 6 && !dir.empty(); ++up, dir = dir.parent_path()) {
+    const auto candidate = dir / "share" / "wearscale" / "data";
+    if (std::filesystem::is_directory(candidate, ec)) return candidate;
+    if (dir == dir.root_path()) break;
+  }
+  return {};
+}
+
+}  // namespace
+
+void set_data_directory(const std::filesystem::path& dir) {
+  const std::lock_guard lock(override_mutex);
+  override_dir = dir;
+}
+
 std::filesystem::path data_directory() {
-  if (const char* dir = std::getenv("WEARSCALE_DATA_DIR"); dir != nullptr && *dir != '\0') return dir;
-  return WEARSCALE_MATERIALS_DATA_DIR;
+  if (const char* dir = environment("WEARSCALE_DATA")) return dir;
+  if (const char* dir = environment("WEARSCALE_DATA_DIR")) return dir;  // the name before 0.1 installs
+  {
+    const std::lock_guard lock(override_mutex);
+    if (!override_dir.empty()) return override_dir;
+  }
+  static const std::filesystem::path installed = installed_data_directory();
+  if (!installed.empty()) return installed;
+  return WEARSCALE_MATERIALS_DATA_DIR;  // the source tree: a program run from its build tree
 }
 
 std::vector<std::string> shipped_sets() { return {"thesis", "lammps"}; }
@@ -29,8 +73,9 @@ StrengthTable shipped_table(const std::string& set, const std::string& material)
   const auto path = shipped_table_path(set, material);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
-    throw InputError(fmt::format("no shipped '{}' strength table for material '{}' ({} does not exist); shipped "
-                                 "tables exist for Si and SiO2",
+    throw InputError(fmt::format("no shipped '{}' strength table for material '{}' ({} does not exist; the data "
+                                 "folder is $WEARSCALE_DATA, else share/wearscale/data of the installation, else "
+                                 "the source tree's materials/data); shipped tables exist for Si and SiO2",
                                  set, material, path.string()));
   return read_strength_table(path);
 }

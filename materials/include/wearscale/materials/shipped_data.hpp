@@ -8,9 +8,14 @@
 
 namespace wearscale::materials {
 
-/// The folder of shipped data: $WEARSCALE_DATA_DIR if set, else the source
-/// tree's materials/data.
+/// The folder of shipped data, the first of: $WEARSCALE_DATA, $WEARSCALE_DATA_DIR
+/// (the older name), set_data_directory(), share/wearscale/data above the
+/// installed program or Python module (cmake --install), the source tree's
+/// materials/data (a program run from its build tree).
 std::filesystem::path data_directory();
+/// Makes data_directory() return `dir` (unless an environment variable is set);
+/// empty: back to the search above.
+void set_data_directory(const std::filesystem::path& dir);
 
 /// Shipped tables by name: "thesis" (Fig. 9.18 laws) or "lammps" (computed
 /// by wearscale's LAMMPS backend, smoke preset), for "Si" or "SiO2".

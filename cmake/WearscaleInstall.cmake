@@ -1,0 +1,51 @@
+# `cmake --install build --prefix P`: every layer's static library and its
+# include/ folder (whole, so a header moving between libraries needs no rule
+# here), the exported targets wearscale::<layer> with wearscaleConfig.cmake
+# and wearscaleConfigVersion.cmake, a pkg-config file, the shipped data
+# (share/wearscale/data, found by the library relative to the installed
+# program or module, or through WEARSCALE_DATA) and the CLI. The Python
+# package installs from python/CMakeLists.txt. docs/install.md says how to use them.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(WEARSCALE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/wearscale CACHE STRING
+    "Where wearscaleConfig.cmake goes, relative to the prefix")
+
+# The interface targets the layers link (flags, FFTW, HDF5, MPI) go with them.
+foreach(helper flags fftw hdf5 mpi)
+  set_target_properties(wearscale_${helper} PROPERTIES EXPORT_NAME ${helper})
+endforeach()
+install(TARGETS wearscale_flags wearscale_fftw wearscale_hdf5 wearscale_mpi EXPORT wearscaleTargets)
+
+get_property(wearscale_layers GLOBAL PROPERTY WEARSCALE_LAYERS)
+set(wearscale_pc_libs)
+foreach(layer IN LISTS wearscale_layers)
+  get_property(dir GLOBAL PROPERTY WEARSCALE_LAYER_${layer}_DIR)
+  install(TARGETS wearscale_${layer} EXPORT wearscaleTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY ${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  # pkg-config wants dependents before their dependencies: the layers were added bottom up.
+  list(PREPEND wearscale_pc_libs "-lwearscale_${layer}")
+endforeach()
+list(JOIN wearscale_pc_libs " " WEARSCALE_PC_LIBS)
+# The prefix relative to the .pc file's folder, so the installed tree may move.
+file(RELATIVE_PATH WEARSCALE_PC_UP /p/${CMAKE_INSTALL_LIBDIR}/pkgconfig /p)
+list(TRANSFORM HDF5_C_INCLUDE_DIRS PREPEND "-I" OUTPUT_VARIABLE pc_cflags)
+list(JOIN pc_cflags " " WEARSCALE_PC_CFLAGS)
+list(JOIN HDF5_C_LIBRARIES " " WEARSCALE_PC_HDF5)
+
+install(EXPORT wearscaleTargets NAMESPACE wearscale:: FILE wearscaleTargets.cmake
+        DESTINATION ${WEARSCALE_INSTALL_CMAKEDIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/wearscaleConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/wearscaleConfig.cmake INSTALL_DESTINATION ${WEARSCALE_INSTALL_CMAKEDIR}
+  PATH_VARS CMAKE_INSTALL_DATADIR)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/wearscaleConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/wearscaleConfig.cmake ${PROJECT_BINARY_DIR}/wearscaleConfigVersion.cmake
+        DESTINATION ${WEARSCALE_INSTALL_CMAKEDIR})
+
+configure_file(${PROJECT_SOURCE_DIR}/cmake/wearscale.pc.in ${PROJECT_BINARY_DIR}/wearscale.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/wearscale.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/materials/data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/wearscale/data)
+install(TARGETS wearscale RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -1,0 +1,342 @@
+// wearscale.contact: normal (§2.3.2) and frictional (App. A) BEM contact of a
+// rigid surface on an elastic half-space, the stresses below it and Hertz.
+// Every solve releases the GIL; result fields are read-only views on the
+// solver's storage (valid until its next solve: copy() to keep one).
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "wearscale/bem/frictional_contact.hpp"
+#include "wearscale/bem/hertz.hpp"
+#include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/bem/principal_stresses.hpp"
+#include "wearscale/bem/subsurface_stress.hpp"
+#include "wearscale/bem/surface_generator.hpp"
+#include "wearscale/core/errors.hpp"
+
+namespace wearscale::python {
+
+namespace {
+
+using namespace wearscale::bem;
+
+Boundary boundary_from(const std::string& name) {
+  if (name == "periodic") return Boundary::Periodic;
+  if (name == "free") return Boundary::Free;
+  throw InputError("contact: boundary = '" + name + "'; allowed: periodic | free");
+}
+
+ContactMethod method_from(const std::string& name) {
+  if (name == "preconditioned") return ContactMethod::PreconditionedCG;
+  if (name == "polonsky-keer") return ContactMethod::PolonskyKeer;
+  throw InputError("contact: method = '" + name + "'; allowed: preconditioned | polonsky-keer");
+}
+
+py::dict to_dict(const ContactResult& r) {
+  py::dict d;
+  d["iterations"] = r.iterations;
+  d["error"] = r.error;
+  d["mean_pressure_Pa"] = r.mean_pressure;
+  d["contact_fraction"] = r.contact_fraction;
+  d["interference_m"] = r.interference;
+  d["elastic_energy_J"] = r.elastic_energy;
+  return d;
+}
+
+py::dict to_dict(const FrictionalResult& r) {
+  py::dict d;
+  d["iterations"] = r.iterations;
+  d["bound_updates"] = r.bound_updates;
+  d["unsettled_points"] = r.unsettled_points;
+  d["error"] = r.error;
+  d["normal_error"] = r.normal_error;
+  d["tangential_error"] = r.tangential_error;
+  d["mean_pressure_Pa"] = r.mean_traction.normal;
+  d["mean_traction_x_Pa"] = r.mean_traction.x;
+  d["mean_traction_y_Pa"] = r.mean_traction.y;
+  d["contact_fraction"] = r.contact_fraction;
+  d["stick_fraction"] = r.stick_fraction;
+  d["slip_fraction"] = r.slip_fraction;
+  d["full_sliding"] = r.full_sliding;
+  d["interference_m"] = r.interference;
+  d["tangential_displacement_x_m"] = r.tangential_displacement_x;
+  d["tangential_displacement_y_m"] = r.tangential_displacement_y;
+  d["elastic_energy_J"] = r.elastic_energy;
+  d["frictional_force_ratio"] = r.frictional_force_ratio;
+  return d;
+}
+
+FrictionLaw law_from(const std::string& law, std::optional<double> mu, std::optional<double> shear_strength) {
+  if (law == "coulomb") {
+    if (!mu) throw InputError("contact.FrictionalContact: law = 'coulomb' needs mu (>= 0)");
+    return FrictionLaw::coulomb(*mu);
+  }
+  if (law == "tresca") {
+    if (!shear_strength) throw InputError("contact.FrictionalContact: law = 'tresca' needs shear_strength [Pa] (>= 0)");
+    return FrictionLaw::tresca(*shear_strength);
+  }
+  throw InputError("contact.FrictionalContact: law = '" + law + "'; allowed: coulomb | tresca");
+}
+
+// The solvers keep a reference to nothing of Python's: the heights are copied in.
+struct PyNormalContact {
+  NormalContact solver;
+  PyNormalContact(const InArray& h, double lx, double ly, double e_star, const std::string& boundary)
+      : solver(field_from(h, grid_of(h, lx, ly, "contact.NormalContact")), e_star, boundary_from(boundary)) {}
+};
+
+struct PyFrictionalContact {
+  FrictionalContact solver;
+  PyFrictionalContact(const InArray& h, double lx, double ly, double young, double poisson, const std::string& law,
+                      std::optional<double> mu, std::optional<double> shear_strength)
+      : solver(field_from(h, grid_of(h, lx, ly, "contact.FrictionalContact")), young, poisson,
+               law_from(law, mu, shear_strength)) {}
+};
+
+RealField optional_field(const std::optional<InArray>& a, const Grid2D& g, const std::string& what) {
+  if (!a) return RealField(g);
+  require_shape(*a, g, what);
+  return field_from(*a, g);
+}
+
+py::dict stresses(const InArray& pressure, double lx, double ly, double poisson, const std::vector<double>& depths,
+                  const std::optional<InArray>& traction_x, const std::optional<InArray>& traction_y, bool tensor) {
+  const Grid2D g = grid_of(pressure, lx, ly, "contact.stresses");
+  VectorField p(g);
+  p.z = field_from(pressure, g);
+  p.x = optional_field(traction_x, g, "traction_x");
+  p.y = optional_field(traction_y, g, "traction_y");
+  py::dict out;
+  SubsurfaceStress stress(g, poisson);
+  stress.set_traction(p);
+  for (double z : depths) {
+    StressField s(g);
+    PrincipalStresses principal(g);
+    {
+      py::gil_scoped_release release;
+      stress.stress(z, s);
+      principal_stresses(s, principal);
+    }
+    py::dict d;
+    d["sigma_I_Pa"] = owned(std::move(principal.first));
+    d["sigma_II_Pa"] = owned(std::move(principal.second));
+    d["sigma_III_Pa"] = owned(std::move(principal.third));
+    d["tau_max_Pa"] = owned(std::move(principal.max_shear));
+    if (tensor) {
+      d["xx_Pa"] = owned(std::move(s.xx));
+      d["yy_Pa"] = owned(std::move(s.yy));
+      d["zz_Pa"] = owned(std::move(s.zz));
+      d["xy_Pa"] = owned(std::move(s.xy));
+      d["xz_Pa"] = owned(std::move(s.xz));
+      d["yz_Pa"] = owned(std::move(s.yz));
+    }
+    out[py::float_(z)] = d;
+  }
+  return out;
+}
+
+// A sphere pressed on a free (non-periodic) window against Hertz's solution.
+py::dict hertz_check(std::size_t n, double radius, double load, double e_star) {
+  const HertzContact hertz{radius, load, e_star};
+  const double a = hertz.contact_radius();
+  const double size = 4.0 * a;  // the window holds the contact with a margin of one radius
+  const Grid2D g = Grid2D::square(n, size);
+  ContactResult r;
+  double peak = 0.0;
+  {
+    py::gil_scoped_release release;
+    NormalContact contact(sphere(g, radius, size / 2, size / 2), e_star, Boundary::Free);
+    r = contact.solve_mean_pressure(load / g.area());
+    for (double p : contact.pressure()) peak = std::max(peak, p);
+  }
+  const double area = r.contact_fraction * g.area();
+  py::dict d;
+  d["grid"] = n;
+  d["contact_radius_m"] = std::sqrt(area / M_PI);
+  d["contact_radius_hertz_m"] = a;
+  d["peak_pressure_Pa"] = peak;
+  d["peak_pressure_hertz_Pa"] = hertz.peak_pressure();
+  d["approach_m"] = r.interference;
+  d["approach_hertz_m"] = hertz.approach();
+  d["approach_relative_error"] = std::abs(r.interference / hertz.approach() - 1.0);
+  d["contact_radius_relative_error"] = std::abs(std::sqrt(area / M_PI) / a - 1.0);
+  d["peak_pressure_relative_error"] = std::abs(peak / hertz.peak_pressure() - 1.0);
+  d["iterations"] = r.iterations;
+  return d;
+}
+
+}  // namespace
+
+void bind_contact(py::module_& m) {
+  py::class_<PyNormalContact>(m, "NormalContact", R"(Frictionless normal contact (§2.3.2, (2.43)) of a rigid surface on an elastic half-space.
+
+NormalContact(heights, lx, ly=-1, e_star, boundary="periodic")
+heights [m]: (nx, ny) array, positive towards the elastic body (copied once); lx, ly [m]: the
+window (ly < 0: square cells); e_star [Pa] > 0: the contact modulus E/(1-nu^2) (1.12).
+boundary: "periodic" (one cell of a periodic surface) or "free" (a window on an isolated body;
+a contact that reaches the window's border is refused).
+The solver is Polonsky-Keer's constrained conjugate gradient, FFT-preconditioned by default.
+Each solve starts from the last pressure (a warm start for load ramps); reset() forgets it.
+pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [Pa], [m], [m].)")
+      .def(py::init<const InArray&, double, double, double, const std::string&>(), py::arg("heights"),
+           py::arg("lx"), py::arg("ly") = -1.0, py::arg("e_star"), py::arg("boundary") = "periodic")
+      .def("solve",
+           [](PyNormalContact& self, std::optional<double> mean_pressure, std::optional<double> interference,
+              double tolerance, int max_iterations, const std::string& method) {
+             if (mean_pressure.has_value() == interference.has_value())
+               throw InputError("contact.NormalContact.solve: give exactly one of mean_pressure [Pa] >= 0, interference [m]");
+             ContactOptions options;
+             options.tolerance = tolerance;
+             options.max_iterations = max_iterations;
+             options.method = method_from(method);
+             ContactResult r;
+             const auto start = std::chrono::steady_clock::now();
+             {
+               py::gil_scoped_release release;
+               r = mean_pressure ? self.solver.solve_mean_pressure(*mean_pressure, options)
+                                 : self.solver.solve_interference(*interference, options);
+             }
+             auto d = to_dict(r);
+             d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+             return d;
+           },
+           py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(), py::arg("tolerance") = 1e-12,
+           py::arg("max_iterations") = 10000, py::arg("method") = "preconditioned",
+           R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
+
+tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
+"preconditioned" (default) or "polonsky-keer". Releases the GIL. Returns a dict: iterations,
+error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
+solve_seconds (wall time of the C++ solve, GIL released).
+ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
+      .def("set_surface", [](PyNormalContact& self, const InArray& h) {
+             self.solver.set_surface(field_from(h, self.solver.grid()));
+           }, py::arg("heights"), "Replaces the rigid surface (same grid), keeping the last pressure as a warm start.")
+      .def("reset", [](PyNormalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
+      .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.pressure(), self); },
+                             "Contact pressure p >= 0 [Pa], (nx, ny), read-only view.")
+      .def_property_readonly("gap", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.gap(), self); },
+                             "Gap g = u - h + d [m]: 0 in contact, >= 0 outside, read-only view.")
+      .def_property_readonly("displacement", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.displacement(), self); },
+                             "Surface displacement u [m] (zero mean; positive into the solid), read-only view.")
+      .def_property_readonly("surface", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.surface(), self); },
+                             "The rigid surface's heights [m], read-only view.")
+      .def_property_readonly("contact", [](PyNormalContact& self) {
+             py::array_t<bool> out({self.solver.grid().nx, self.solver.grid().ny});
+             auto* o = out.mutable_data();
+             const auto& p = self.solver.pressure();
+             for (std::size_t k = 0; k < p.size(); ++k) o[k] = p[k] > 0.0;
+             return out;
+           }, "Points in contact (p > 0), a bool array (a copy).")
+      .def_property_readonly("e_star", [](PyNormalContact& self) { return self.solver.e_star(); }, "E* [Pa].")
+      .def_property_readonly("shape", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); })
+      .def_property_readonly("size", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); },
+                             "(lx, ly) [m].")
+      .def_property_readonly("history", [](PyNormalContact& self) { return self.solver.history(); },
+                             "The errors of the last solve's iterations.")
+      .def_property("warm_start",
+           [](py::object self) {
+             auto& s = self.cast<PyNormalContact&>().solver;
+             return py::make_tuple(view(s.pressure(), self), s.warm_gap_shift());
+           },
+           [](PyNormalContact& self, const py::tuple& state) {
+             const auto p = state[0].cast<InArray>();
+             require_shape(p, self.solver.grid(), "warm_start pressure");
+             self.solver.set_warm_start({p.data(), static_cast<std::size_t>(p.size())}, state[1].cast<double>());
+           },
+           "(pressure [Pa], mean gap shift [m]): restoring both makes the next solve bit-identical to an uninterrupted one.");
+
+  py::class_<PyFrictionalContact>(m, "FrictionalContact", R"(Frictional contact (Appendix A): a rigid surface pressed and sheared on an elastic flat.
+
+FrictionalContact(heights, lx, ly=-1, young, poisson, law="coulomb", mu=None, shear_strength=None)
+young [Pa] > 0, poisson in (-1, 0.5] of the flat (the rigid surface's compliance folded in, (A.1));
+law: "coulomb" (p_T,max = mu p_N, (A.2)) or "tresca" (p_T,max = shear_strength [Pa], (A.3)).
+Normal and tangential are coupled for nu < 0.5 (Boussinesq-Cerruti tensor). Periodic cell.
+Each solve starts from the last solution (warm start); reset() forgets it.)")
+      .def(py::init<const InArray&, double, double, double, double, const std::string&, std::optional<double>,
+                    std::optional<double>>(),
+           py::arg("heights"), py::arg("lx"), py::arg("ly") = -1.0, py::arg("young"), py::arg("poisson"),
+           py::arg("law") = "coulomb", py::arg("mu") = py::none(), py::arg("shear_strength") = py::none())
+      .def("solve",
+           [](PyFrictionalContact& self, double mean_pressure, double traction_x, double traction_y, double tolerance,
+              int max_iterations) {
+             FrictionalOptions options;
+             options.tolerance = tolerance;
+             options.max_iterations = max_iterations;
+             FrictionalResult r;
+             const auto start = std::chrono::steady_clock::now();
+             {
+               py::gil_scoped_release release;
+               r = self.solver.solve(MeanTraction{mean_pressure, traction_x, traction_y}, options);
+             }
+             auto d = to_dict(r);
+             d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+             return d;
+           },
+           py::arg("mean_pressure"), py::arg("traction_x") = 0.0, py::arg("traction_y") = 0.0,
+           py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 20000,
+           R"(Solves for imposed mean tractions <p_N> = mean_pressure >= 0 and <p_T> = (traction_x, traction_y) [Pa].
+
+tolerance on the relative cost (A.14). Releases the GIL. A tangential load above what friction
+carries (gross sliding) is a ValueError, never clamped. Returns a dict of scalars (units in the
+names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement_x_m, ...)")
+      .def("reset", [](PyFrictionalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
+      .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().z, self); },
+                             "p_N [Pa], read-only view.")
+      .def_property_readonly("traction_x", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().x, self); },
+                             "p_x [Pa], read-only view.")
+      .def_property_readonly("traction_y", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().y, self); },
+                             "p_y [Pa], read-only view.")
+      .def_property_readonly("displacement", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.displacement().z, self); },
+                             "u_z [m] (zero mean), read-only view.")
+      .def_property_readonly("displacement_x", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.displacement().x, self); },
+                             "u_x [m], read-only view.")
+      .def_property_readonly("displacement_y", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.displacement().y, self); },
+                             "u_y [m], read-only view.")
+      .def_property_readonly("gap", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.normal_gap(), self); },
+                             "Normal gap g_N [m], read-only view.")
+      .def_property_readonly("slip_x", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.slip().x, self); },
+                             "Slip g_T,x [m]: 0 where sticking, read-only view.")
+      .def_property_readonly("slip_y", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.slip().y, self); },
+                             "Slip g_T,y [m], read-only view.")
+      .def_property_readonly("stick_slip", [](PyFrictionalContact& self) { return codes(self.solver.stick_slip_map()); },
+                             "uint8 (nx, ny): 0 open, 1 stick, 2 slip (a copy).")
+      .def_property_readonly("shape", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); })
+      .def_property_readonly("size", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); })
+      .def_property_readonly("poisson", [](PyFrictionalContact& self) { return self.solver.poisson(); })
+      .def_property_readonly("young", [](PyFrictionalContact& self) { return self.solver.young(); });
+
+  m.def("stresses", &stresses, py::arg("pressure"), py::arg("lx"), py::arg("ly") = -1.0, py::arg("poisson"),
+        py::arg("depths"), py::arg("traction_x") = py::none(), py::arg("traction_y") = py::none(),
+        py::arg("tensor") = false,
+        R"(Stresses in a periodic half-space below surface tractions [Pa] (Boussinesq-Cerruti; App. A.3).
+
+pressure (p_z), traction_x, traction_y: (nx, ny) arrays over lx x ly metres; poisson in (-1, 0.5];
+depths: z >= 0 [m] (0: the surface). Returns {z: {sigma_I_Pa, sigma_II_Pa, sigma_III_Pa, tau_max_Pa,
+and with tensor=True xx_Pa ... yz_Pa}}: sigma_I is the largest principal stress of (4.24),
+tau_max = (sigma_I - sigma_III)/2.)");
+  m.def("effective_modulus", &effective_modulus, py::arg("e1"), py::arg("nu1"), py::arg("e2"), py::arg("nu2"),
+        "E* of two bodies: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 (1.12) [Pa].");
+  m.def("hertz", [](double radius, double load, double e_star) {
+          const HertzContact h{radius, load, e_star};
+          py::dict d;
+          d["contact_radius_m"] = h.contact_radius();
+          d["peak_pressure_Pa"] = h.peak_pressure();
+          d["mean_pressure_Pa"] = h.mean_pressure();
+          d["approach_m"] = h.approach();
+          return d;
+        }, py::arg("radius"), py::arg("load"), py::arg("e_star"),
+        "Hertz's sphere on a flat: a = (3FR/4E*)^(1/3), p0 = 3F/(2 pi a^2), delta = a^2/R (SI units).");
+  m.def("hertz_check", &hertz_check, py::arg("n") = 128, py::arg("radius") = 3e-3, py::arg("load") = 1.0,
+        py::arg("e_star") = 73e9 / (1 - 0.17 * 0.17),
+        R"(Solves a sphere (radius [m], load [N], e_star [Pa]) on a free n x n window of 4 a and compares
+it with Hertz: returns the computed and analytic contact radius, peak pressure and approach and
+their relative errors (a few percent at n = 128, shrinking as 1/n).)");
+}
+
+}  // namespace wearscale::python

@@ -1,0 +1,22 @@
+"""wearscale: friction and adhesive wear across scales, from Python.
+
+Submodules (each function's docstring gives units, ranges and the thesis' equation numbers):
+
+- :mod:`wearscale.surface`   rough surfaces: generate, analyze (PSD, Hurst, Sa, h_rms, h'_rms), read/write files
+- :mod:`wearscale.contact`   BEM normal and frictional contact, stresses at depth, Hertz
+- :mod:`wearscale.materials` material records, strength tables, the junction model (§7.1.2, §9.3.2)
+- :mod:`wearscale.wear`      analytic 2D/3D wear maps, the rough-surface wear map
+- :mod:`wearscale.dem`       the cohesive DEM patch test and material targets
+- :mod:`wearscale.io`        HDF5 datasets of wearscale's outputs as NumPy arrays
+- :func:`wearscale.run`      any case through the CLI's runner, ``--set`` overrides as keywords
+
+All quantities are SI (m, Pa, N, J). Bad input raises :class:`InputError` (a ValueError)
+naming the key, value and allowed range; a numerical failure raises :class:`NumericalError`
+(an ArithmeticError). Solves release the GIL, so threads run them in parallel.
+"""
+from ._wearscale import InputError, NumericalError, OutputError, __version__
+from . import contact, dem, io, materials, surface, wear
+from .run import RunResult, run
+
+__all__ = ["InputError", "NumericalError", "OutputError", "RunResult", "__version__", "contact", "dem", "io",
+           "materials", "run", "surface", "wear"]

@@ -1,0 +1,52 @@
+# ctest install.*: `cmake --install` of the build tree into a scratch prefix,
+# then (STEP=cxx) an external CMake project that find_package(wearscale)s it,
+# links wearscale::bem and checks a Hertz contact, or (STEP=python) the
+# installed Python package imported from outside the source and build trees.
+#   cmake -DBUILD=<build tree> -DPREFIX=<scratch> -DSTEP=cxx|python [-DPYTHON=...] [-DPYDIR=...] -P install_test.cmake
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${err}")
+  endif()
+endfunction()
+
+file(REMOVE_RECURSE ${PREFIX})
+run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX})
+# The installed tree may not point back at the source or build trees.
+file(GLOB_RECURSE configs ${PREFIX}/*.cmake ${PREFIX}/*.pc)
+foreach(f IN LISTS configs)
+  file(READ ${f} text)
+  string(FIND "${text}" "${SOURCE}" at)
+  if(NOT at EQUAL -1)
+    message(FATAL_ERROR "${f} names the source tree ${SOURCE}")
+  endif()
+endforeach()
+
+if(STEP STREQUAL "cxx")
+  set(consumer ${PREFIX}-consumer)
+  file(REMOVE_RECURSE ${consumer})
+  run(${CMAKE_COMMAND} -S ${SOURCE}/tests/install/consumer -B ${consumer} -DCMAKE_BUILD_TYPE=Release
+      -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_CXX_COMPILER=${CXX})
+  run(${CMAKE_COMMAND} --build ${consumer})
+  # WEARSCALE_DATA unset: the program finds share/wearscale/data above its own
+  # folder only if it sits in the prefix; it is run from the consumer's build
+  # tree, so it is pointed at the installed data explicitly, as a user would.
+  run(${CMAKE_COMMAND} -E env WEARSCALE_DATA=${PREFIX}/share/wearscale/data ${consumer}/hertz_consumer)
+  # pkg-config names the libraries and headers of the same prefix.
+  run(${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${PREFIX}/lib/pkgconfig pkg-config --cflags --libs wearscale)
+  # The installed CLI runs and reads the shipped tables of its own prefix (run.h5 records the table's path).
+  run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale version)
+  file(REMOVE_RECURSE ${consumer}/data-lookup)
+  run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale -q run
+      ${SOURCE}/tests/install/data_lookup.toml --out ${consumer}/data-lookup)
+  file(STRINGS ${consumer}/data-lookup/run.h5 tables REGEX "share/wearscale/data/thesis_fig9.18_Si.csv")
+  string(FIND "${tables}" "${PREFIX}/share/wearscale/data/" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the installed CLI did not read the data of ${PREFIX}: ${tables}")
+  endif()
+elseif(STEP STREQUAL "python")
+  # -I: neither PYTHONPATH nor the user's site-packages; the script puts the prefix's first.
+  run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR
+      ${PYTHON} -I ${SOURCE}/tests/install/check_installed.py ${PREFIX} ${PYDIR} WORKING_DIRECTORY ${PREFIX})
+endif()
