@@ -29,8 +29,6 @@ void report(nlohmann::json& results, const std::string& name, double v, const st
   results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
 }
 
-// The keys both wear studies share (the sliding cell), read from `c`; the
-// cell size is read by each study. Every value is range-checked here.
 // [dem] law: the contact law between the particles, a registered name
 // (contact_law.hpp); [dem] friction: its Coulomb μ, read for the hooke law.
 void read_contact_law(const Config& root, std::string& law, double& friction) {
@@ -51,6 +49,8 @@ void require_cohesive_law(const Config& root, const char* study) {
     throw root.section("dem").error("law", fmt::format("the {} measures the cohesive law's strengths", study), "cohesive");
 }
 
+// The keys both wear studies share (the sliding cell), read from `c`; the
+// cell size is read by each study. Every value is range-checked here.
 void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cell) {
   cell.material = dem_material(root);
   read_contact_law(root, cell.law, cell.friction);
