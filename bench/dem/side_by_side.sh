@@ -40,7 +40,7 @@ done | tee "$work/all"
 echo "== ratios (wearscale Hooke / engine, per round)"
 awk 'function v() { match($0, /[0-9.]+ M particle/); return substr($0, RSTART, RLENGTH - 11) + 0 }
      /^wearscale Hooke\/20/ { w20 = v() } /^wearscale Hooke\/40/ { w40 = v() }
-     /^LAMMPS.*n=20/ { printf "32 000:  wearscale / LAMMPS   = %.2f\n", w20 / v() }
-     /^LAMMPS.*n=40/ { printf "256 000: wearscale / LAMMPS   = %.2f\n", w40 / v() }
-     /^LIGGGHTS.*n=20/ { printf "32 000:  wearscale / LIGGGHTS = %.2f\n", w20 / v() }
-     /^LIGGGHTS.*n=40/ { printf "256 000: wearscale / LIGGGHTS = %.2f\n", w40 / v() }' "$work/all"
+     /^LAMMPS.*n=20.*M particle/ { printf "32 000:  wearscale / LAMMPS   = %.2f\n", w20 / v() }
+     /^LAMMPS.*n=40.*M particle/ { printf "256 000: wearscale / LAMMPS   = %.2f\n", w40 / v() }
+     /^LIGGGHTS.*n=20.*M particle/ { printf "32 000:  wearscale / LIGGGHTS = %.2f\n", w20 / v() }
+     /^LIGGGHTS.*n=40.*M particle/ { printf "256 000: wearscale / LIGGGHTS = %.2f\n", w40 / v() }' "$work/all"
