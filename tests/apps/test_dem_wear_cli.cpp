@@ -62,3 +62,21 @@ TEST(DemWearCli, TrappedParticlesRefusesParticlesThatDoNotFit) {
   EXPECT_FALSE(fs::exists(work / "bad_tp" / "trapped_particles.dump"));
   fs::remove_all(work);
 }
+
+TEST(DemWearCli, TheContactLawKeyNamesARegisteredLawAndTheStrengthStudiesRefuseHooke) {
+  fs::create_directories(work);
+  const std::string rough = "dem rough-shear '" + source + "/cases/dem_rough_shear.toml' --out bad_law";
+  auto r = run_cli(rough + " --set 'dem.law=\"hertz\"'", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.law"));
+  EXPECT_THAT(r.err, HasSubstr("hertz"));
+  EXPECT_THAT(r.err, HasSubstr("cohesive, "));  // the registered laws, in name order
+  r = run_cli(rough + " --set dem.friction=0.3", work);  // μ belongs to the hooke law only
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("friction"));
+  r = run_cli("dem patch-test '" + source + "/cases/dem_patch_test.toml' --out bad_law --set 'dem.law=\"hooke\"'", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.law"));
+  EXPECT_THAT(r.err, HasSubstr("cohesive law's strengths"));
+  EXPECT_FALSE(fs::exists(work / "bad_law" / "rough_shear_history.csv"));
+}

@@ -14,7 +14,7 @@
 namespace wearscale::dem::test_support {
 
 inline double critical_step(const Simulation& s) {
-  return std::get<CohesiveLaw>(s.law()).critical_time_step(s.particles());
+  return s.law_as<CohesiveLaw>().critical_time_step(s.particles());
 }
 
 // `material`'s law on the lattice with nx × ny × nz cells of spheres of

@@ -86,8 +86,8 @@ TEST(AmorphousSample, RepulsionPhaseSeparatesDeeplyOverlappingParticles) {
   EXPECT_GT(closest_approach(sim.particles(), sim.box()), 0.8);
   EXPECT_EQ(sim.box().hi.x, box.hi.x);  // the box is fixed in phase 1
   // The law's switches are restored.
-  EXPECT_TRUE(std::get<CohesiveLaw>(sim.law()).cohesion);
-  EXPECT_TRUE(std::get<CohesiveLaw>(sim.law()).tangential);
+  EXPECT_TRUE(sim.law_as<CohesiveLaw>().cohesion);
+  EXPECT_TRUE(sim.law_as<CohesiveLaw>().tangential);
 }
 
 TEST(AmorphousSample, RelaxationConvergesToZeroNormalStressAndTheTargetDensity) {
@@ -117,7 +117,7 @@ TEST(AmorphousSample, RelaxationConvergesToZeroNormalStressAndTheTargetDensity) 
     }
   }
   auto sim = simulation_of(sample.particles, sample.box);
-  std::get<CohesiveLaw>(sim.law()).tangential = false;
+  sim.law_as<CohesiveLaw>().tangential = false;
   sim.set_track_virial(true);
   sim.compute_forces();
   EXPECT_LT(max_normal_stress(box_stress(sim)), 2e-12 * table_6_4().young);

@@ -90,7 +90,7 @@ void match_density(Particles& p, const Box& box, double density) {
 }
 
 RelaxationReport relax_amorphous(Simulation& sim, const RelaxationSettings& s) {
-  auto* law = std::get_if<CohesiveLaw>(&sim.law());
+  auto* law = dynamic_cast<CohesiveLaw*>(&sim.law());
   if (!law) throw InputError("amorphous DEM sample: the relaxation (§6.2.2) needs the cohesive force law");
   require(s.time_step > 0.0, "time step / Δt_c", s.time_step, "> 0");
   require(s.repulsion_steps >= 0, "repulsion steps", static_cast<double>(s.repulsion_steps), "≥ 0");

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/dem/neighbor_list.hpp"
+#include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/dem/particles.hpp"
 
 namespace wearscale::dem {
@@ -166,4 +168,87 @@ double CohesiveLaw::critical_damping(const Particles& p) const {
   return dem::critical_damping(p.mass[smallest], pair(p, smallest, smallest).k_n);
 }
 
+void CohesiveLaw::prepare(const Particles& p, const NeighborList& list) {
+  const auto& off = list.offsets();
+  const auto& nb = list.neighbors();
+  const std::size_t n = p.size();
+  pairs_.resize(list.pairs());
+#pragma omp parallel for schedule(static) if (n >= 4096)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) pairs_[k] = pair(p, i, nb[k]);
+}
+
+// The cohesive force of §6.1: (6.2)-(6.5).
+inline PairForce CohesiveLaw::contact(std::size_t k, const PairState& s, double* hist, double dt,
+                                      bool advance) const {
+  const CohesivePair& p = pairs_[k];
+  PairForce out{};
+  const double r2 = dot(s.d, s.d);
+  const double contact = s.ri + s.rj;
+  const double range = cohesion ? contact + p.delta_f : contact;
+  if (r2 >= range * range) {
+    hist[0] = hist[1] = hist[2] = 0.0;
+    out.active = false;
+    return out;
+  }
+  const double r = std::sqrt(r2);
+  const Vec3 n = s.d * (1.0 / r);
+  const double delta_n = r - contact;
+  const double f_n = cohesion ? normal_force(p, delta_n) : p.k_n * std::min(delta_n, 0.0);
+  const Vec3 vrel = s.vi - s.vj + cross(s.ri * s.wi + s.rj * s.wj, n);
+  const double v_n = dot(vrel, n);
+  out.force = (f_n - p.c_n * v_n) * n;  // (6.2), normal part; positive f_n pulls i toward j
+  if (tangential && p.k_t > 0.0) {
+    // The sliding distance integrates the contact's tangential velocity and
+    // is turned into the current tangent plane; the total tangential force,
+    // spring and damping, is capped by F'_m,T (6.4)-(6.5), the spring
+    // stretched back to match, as in the thesis' LAMMPS pair style
+    // gran/cohesive/history (built on gran/hooke/history).
+    const Vec3 v_t = vrel - v_n * n;
+    Vec3 xi{hist[0], hist[1], hist[2]};
+    if (advance) xi += v_t * dt;
+    const bool sliding = dot(xi, xi) != 0.0;
+    if (advance) xi -= dot(xi, n) * n;
+    Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
+    const double cap = tangential_cap(p, delta_n);  // (6.4)-(6.5)
+    const double f2 = dot(f_t, f_t);
+    if (f2 > cap * cap) {
+      if (sliding) {
+        const double ratio = cap / std::sqrt(f2);
+        const Vec3 lag = v_t * (p.c_t / p.k_t);
+        xi = ratio * (xi + lag) - lag;
+        f_t *= ratio;
+      } else {
+        f_t = {};
+      }
+    }
+    if (advance) {
+      hist[0] = xi.x;
+      hist[1] = xi.y;
+      hist[2] = xi.z;
+    }
+    out.force += f_t;
+    out.tangential = f_t;
+  }
+  out.normal = n;
+  out.active = true;
+  return out;
+}
+
+void CohesiveLaw::add_pair_forces(PairLoop& loop) const { run_pair_loop(*this, loop); }
+
+void CohesiveLaw::add_pair_energy(const Particles&, std::size_t, std::size_t, std::size_t k, double delta,
+                                  const double* h, double& e) const {
+  const auto& pp = pairs_[k];
+  if (cohesion) {
+    e += normal_energy(pp, delta);
+  } else if (delta < 0.0) {
+    e += 0.5 * pp.k_n * delta * delta;
+  }
+  e += 0.5 * pp.k_t * (h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+}
+
 }  // namespace wearscale::dem
+
+WEARSCALE_CONTACT_LAW(cohesive, "the thesis' reversible cohesive pair force (6.2)-(6.5)",
+                      [](const ContactLawInputs& in) { return std::make_unique<wearscale::dem::CohesiveLaw>(in.materials); })

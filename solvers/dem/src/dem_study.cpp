@@ -1,14 +1,17 @@
 #include "wearscale/dem/dem_study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -26,10 +29,31 @@ void report(nlohmann::json& results, const std::string& name, double v, const st
   results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
 }
 
+// [dem] law: the contact law between the particles, a registered name
+// (contact_law.hpp); [dem] friction: its Coulomb μ, read for the hooke law.
+void read_contact_law(const Config& root, std::string& law, double& friction) {
+  const Config c = root.section("dem");
+  law = c.string_or("law", "cohesive");
+  const auto known = contact_law_names();
+  if (std::find(known.begin(), known.end(), law) == known.end())
+    throw c.error("law", fmt::format("unknown DEM contact law '{}'", law), fmt::format("{}", fmt::join(known, ", ")));
+  if (law == "hooke") friction = c.number_or("friction", 0.5, Range::non_negative());
+}
+
+// The studies that measure the cohesive law itself refuse another one.
+void require_cohesive_law(const Config& root, const char* study) {
+  std::string law;
+  double friction = 0.0;
+  read_contact_law(root, law, friction);
+  if (law != "cohesive")
+    throw root.section("dem").error("law", fmt::format("the {} measures the cohesive law's strengths", study), "cohesive");
+}
+
 // The keys both wear studies share (the sliding cell), read from `c`; the
 // cell size is read by each study. Every value is range-checked here.
 void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cell) {
   cell.material = dem_material(root);
+  read_contact_law(root, cell.law, cell.friction);
   cell.d0 = c.number("d0", Range::positive(), units::length);
   cell.largest = c.number_or("largest", 1.25 * cell.d0, Range::at_least(cell.d0), units::length);
   cell.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
@@ -184,6 +208,7 @@ CohesiveMaterial dem_material(const Config& root) {
 nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
   PatchTestSpec spec;
   spec.material = dem_material(root);
+  require_cohesive_law(root, "patch test");
   const Config c = root.section("dem.patch_test");
   const bool unitless = spec.material.name == "table-6.4";
   spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
@@ -251,6 +276,7 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
 nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
   ShearedJunctionSpec spec;
   spec.material = dem_material(root);
+  require_cohesive_law(root, "junction study");
   const Config c = root.section("dem.junction");
   spec.diameter = c.number("diameter", Range::positive(), units::length);
   spec.d0 = c.number("d0", Range::positive(), units::length);

@@ -3,10 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "wearscale/core/errors.hpp"
 
 namespace wearscale::dem {
+
+namespace {
+// From this many particles the list is built on all threads.
+constexpr std::size_t parallel_build = 8192;
+}  // namespace
 
 void NeighborList::clear() {
   offset_.clear();
@@ -17,9 +23,11 @@ void NeighborList::clear() {
   built_image_.clear();
 }
 
-void NeighborList::build(const Particles& p, const Box& box, double reach, double skin) {
+void NeighborList::build(const Particles& p, const Box& box, double reach, double skin, int history_size) {
   const std::size_t n = p.size();
-  const bool carry = built_at_.size() == n && built_image_.size() == n && !offset_.empty();
+  const bool carry =
+      built_at_.size() == n && built_image_.size() == n && !offset_.empty() && history_size == history_size_;
+  history_size_ = history_size;
   if (carry) {
     old_offset_.swap(offset_);
     old_neighbor_.swap(neighbor_);
@@ -29,7 +37,6 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   } else {
     old_offset_.clear();
   }
-  candidates_.clear();
   half_skin_ = 0.5 * skin;
   ++builds_;
 
@@ -47,15 +54,30 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   }
   grid_.build(p.position, box, cut);
   images_ = grid_.images();
-  grid_.for_each_candidate(p.position, [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
-    if (p.wall[i] != no_wall && p.wall[i] == p.wall[j]) return;  // rigid within a wall
-    const double reach_ij = p.radius[i] + p.radius[j] + range;
-    if (dot(d, d) >= reach_ij * reach_ij) return;
-    if (i <= j)
-      candidates_.push_back({i, j, s});
-    else
-      candidates_.push_back({j, i, images_.mirrored(s)});
-  });
+  // The search split by cell layers over the threads, each into its own
+  // candidates; the rows are sorted below, so the list is the same on any
+  // number of threads.
+  const int threads = n >= parallel_build ? std::max(1, std::min(omp_get_max_threads(), grid_.layers())) : 1;
+  thread_candidates_.resize(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    auto& out = thread_candidates_[static_cast<std::size_t>(t)];
+    out.clear();
+    const int layers = grid_.layers();
+    grid_.for_each_candidate(
+        p.position,
+        [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
+          if (p.wall[i] != no_wall && p.wall[i] == p.wall[j]) return;  // rigid within a wall
+          const double reach_ij = p.radius[i] + p.radius[j] + range;
+          if (dot(d, d) >= reach_ij * reach_ij) return;
+          if (i <= j)
+            out.push_back({i, j, s});
+          else
+            out.push_back({j, i, images_.mirrored(s)});
+        },
+        layers * t / threads, layers * (t + 1) / threads);
+  }
   sort_and_keep_history(p);
   built_at_.assign(p.position.begin(), p.position.end());
   built_image_.assign(p.image.begin(), p.image.end());
@@ -65,23 +87,29 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
   const std::size_t n = p.size();
   // Counting sort of the candidates by their lower index.
   count_.assign(n + 1, 0);
-  for (const auto& c : candidates_) ++count_[c.i + 1];
+  std::size_t total = 0;
+  for (const auto& part : thread_candidates_) {
+    for (const auto& c : part) ++count_[c.i + 1];
+    total += part.size();
+  }
   offset_.resize(n + 1);
   offset_[0] = 0;
   for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + count_[i + 1];
-  neighbor_.resize(candidates_.size());
-  shift_.resize(candidates_.size());
+  neighbor_.resize(total);
+  shift_.resize(total);
   for (std::size_t i = 0; i < n; ++i) count_[i] = offset_[i];
-  for (const auto& c : candidates_) {
-    const std::uint32_t k = count_[c.i]++;
-    neighbor_[k] = c.j;
-    shift_[k] = c.shift;
-  }
+  for (const auto& part : thread_candidates_)
+    for (const auto& c : part) {
+      const std::uint32_t k = count_[c.i]++;
+      neighbor_[k] = c.j;
+      shift_[k] = c.shift;
+    }
   // Each particle's neighbours in increasing (index, image): memory order,
   // and the merge with the previous list below.
   auto before = [&](std::uint32_t a, std::uint8_t sa, std::uint32_t b, std::uint8_t sb) {
     return a < b || (a == b && sa < sb);
   };
+#pragma omp parallel for schedule(static) if (n >= parallel_build)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t b = offset_[i], e = offset_[i + 1];
     for (std::uint32_t k = b + 1; k < e; ++k) {
@@ -97,7 +125,8 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
       shift_[m] = s;
     }
   }
-  history_.assign(3 * neighbor_.size(), 0.0);
+  const auto stride = static_cast<std::size_t>(history_size_);
+  history_.assign(stride * neighbor_.size(), 0.0);
   if (old_offset_.size() != n + 1) return;
   // A contact is the pair and the image of j met by i in unwrapped terms:
   // x_j + s L − x_i with X = x + image L is X_j − X_i + (s − image_j + image_i) L,
@@ -109,6 +138,7 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
     return d;
   };
   const bool same_images = old_images_ == images_;
+#pragma omp parallel for schedule(static) if (n >= parallel_build)
   for (std::size_t i = 0; i < n; ++i) {
     const std::array<int, 3> di = wrapped(i);
     std::uint32_t a = old_offset_[i];
@@ -127,7 +157,8 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
           now = images_.find(s);
         }
         if (now != shift_[k]) continue;
-        for (std::uint32_t c = 0; c < 3; ++c) history_[3 * k + c] = old_history_[3 * b + c];
+        std::copy_n(old_history_.begin() + static_cast<std::ptrdiff_t>(stride * b), stride,
+                    history_.begin() + static_cast<std::ptrdiff_t>(stride * k));
         break;
       }
     }

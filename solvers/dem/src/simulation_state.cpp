@@ -74,7 +74,9 @@ void NeighborList::save(CheckpointState& out, const std::string& prefix) const {
   out.put(prefix + "builds", static_cast<double>(builds_));
 }
 
-void NeighborList::restore(const CheckpointState& in, const std::string& prefix, const Particles& p) {
+void NeighborList::restore(const CheckpointState& in, const std::string& prefix, const Particles& p,
+                           int history_size) {
+  history_size_ = history_size;
   const std::size_t particles = p.size();
   images_ = PeriodicImages{};  // format 1: the 27 nearest images
   if (in.has(prefix + "images")) {
@@ -94,7 +96,7 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   offset_.resize(built ? particles + 1 : 0);
   neighbor_.resize(pairs);
   shift_.resize(pairs);
-  history_ = sized(in, prefix + "history", 3 * pairs);
+  history_ = sized(in, prefix + "history", static_cast<std::size_t>(history_size) * pairs);
   built_at_.resize(in.array(prefix + "built_at").size() / 3);
   from_doubles(in, prefix + "offsets", offset_);
   from_doubles(in, prefix + "neighbors", neighbor_);
@@ -231,7 +233,7 @@ void Simulation::restore_state(const CheckpointState& in) {
     wall.displacement = vec(in, k + "displacement");
   }
 
-  neighbors_.restore(in, "dem.list.", p);
+  neighbors_.restore(in, "dem.list.", p, law_->history_size());
   const auto& clock = sized(in, "dem.clock", 6);
   step_ = static_cast<long>(clock[0]);
   since_build_ = static_cast<long>(clock[1]);

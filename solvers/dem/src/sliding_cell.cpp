@@ -59,9 +59,9 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   for (std::size_t i : top) wall_mass += particles.mass[i];
   for (double r : particles.radius) max_radius = std::max(max_radius, r);
 
-  CohesiveLaw law({spec.material});
-  const double dt = spec.time_step * law.critical_time_step(particles);
-  bond_ = BondCriterion::cohesive(law, max_radius);
+  auto law = make_contact_law(spec.law, {{spec.material}, spec.d0, spec.friction});
+  const double dt = spec.time_step * law->critical_time_step(particles);
+  bond_ = BondCriterion::cohesive(CohesiveLaw({spec.material}), max_radius);
   sim_ = std::make_unique<Simulation>(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true});
   sim_->set_time_step(dt);
   area_ = size.x * size.y;

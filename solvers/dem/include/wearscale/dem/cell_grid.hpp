@@ -33,8 +33,12 @@ class CellGrid {
   /// particle and one of its own images (image above zero();
   /// its opposite is the same pair). d = x_j + shift(image) − x_i; the
   /// caller applies its own distance test.
+  /// Only the home cells of layers [z_begin, z_end) along z (-1: to the
+  /// last): threads may split the search by layers.
   template <class Visit>
-  void for_each_candidate(std::span<const Vec3> x, Visit&& visit) const;
+  void for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_begin = 0, int z_end = -1) const;
+  /// Cell layers along z.
+  int layers() const { return cells_[2]; }
 
  private:
   static constexpr std::uint32_t none = 0xffffffffu;
@@ -58,13 +62,14 @@ class CellGrid {
 };
 
 template <class Visit>
-void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit) const {
+void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_begin, int z_end) const {
   const std::uint8_t zero = images_.zero();
+  if (z_end < 0) z_end = cells_[2];
   if (half_stencil_) {
     static constexpr int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
                                            {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
                                            {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
-    for (int cz = 0; cz < cells_[2]; ++cz)
+    for (int cz = z_begin; cz < z_end; ++cz)
       for (int cy = 0; cy < cells_[1]; ++cy)
         for (int cx = 0; cx < cells_[0]; ++cx) {
           const std::size_t home = flat(cx, cy, cz);
@@ -83,7 +88,7 @@ void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit) const 
         }
     return;
   }
-  for (int cz = 0; cz < cells_[2]; ++cz)
+  for (int cz = z_begin; cz < z_end; ++cz)
     for (int cy = 0; cy < cells_[1]; ++cy)
       for (int cx = 0; cx < cells_[0]; ++cx) {
         const std::size_t home = flat(cx, cy, cz);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/contact_law.hpp"
 
 namespace wearscale::dem {
 
@@ -71,7 +72,7 @@ double critical_damping(double mass, double k_n);
 
 /// The force law over a table of materials (a particle's material tag indexes
 /// it); pairs of two materials use mix().
-class CohesiveLaw {
+class CohesiveLaw final : public ContactLaw {
  public:
   explicit CohesiveLaw(std::vector<CohesiveMaterial> materials);
 
@@ -90,13 +91,27 @@ class CohesiveLaw {
   double reach(double max_radius) const;
   /// The smallest critical time step (6.6) over the particles (against
   /// themselves: the stiffest, lightest pairs).
-  double critical_time_step(const Particles& p) const;
+  double critical_time_step(const Particles& p) const override;
   /// c_c (6.64) of the smallest particle.
   double critical_damping(const Particles& p) const;
+
+  std::unique_ptr<ContactLaw> clone() const override { return std::make_unique<CohesiveLaw>(*this); }
+  std::string_view name() const override { return "cohesive"; }
+  /// δ_f (6.57) with cohesion, 0 without.
+  double pull_off_distance(double max_radius) const override { return cohesion ? reach(max_radius) : 0.0; }
+  /// The pairs' parameters (6.53)-(6.61), once per build.
+  void prepare(const Particles& p, const NeighborList& list) override;
+  void add_pair_forces(PairLoop& loop) const override;
+  void add_pair_energy(const Particles& p, std::size_t i, std::size_t j, std::size_t k, double delta,
+                     const double* history, double& energy) const override;
+
+  /// The pair force (6.2)-(6.5) of listed pair k (pair_loop.hpp inlines it).
+  PairForce contact(std::size_t k, const PairState& s, double* hist, double dt, bool advance) const;
 
  private:
   std::vector<CohesiveMaterial> materials_;
   std::vector<CohesiveMaterial> mixed_;
+  std::vector<CohesivePair> pairs_;  // per listed pair, from prepare()
 };
 
 }  // namespace wearscale::dem

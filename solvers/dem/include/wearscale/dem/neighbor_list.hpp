@@ -36,13 +36,17 @@ class NeighborList {
   /// kept: the same particles and the same image once the wraps since the
   /// last build are undone. InputError when a periodic length is shorter than
   /// the largest particle diameter (a particle would overlap itself).
-  void build(const Particles& p, const Box& box, double reach, double skin);
+  /// `history_size` doubles of history per pair (the contact law's); the
+  /// histories are carried over only between builds of the same size.
+  void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
 
   std::size_t pairs() const { return neighbor_.size(); }
   const std::vector<std::uint32_t>& offsets() const { return offset_; }
   const std::vector<std::uint32_t>& neighbors() const { return neighbor_; }
   const std::vector<std::uint8_t>& shifts() const { return shift_; }
-  /// Tangential history, 3 per pair, in list order.
+  /// Doubles of history per pair.
+  int history_size() const { return history_size_; }
+  /// Tangential history, history_size() per pair, in list order.
   std::vector<double>& history() { return history_; }
   const std::vector<double>& history() const { return history_; }
 
@@ -66,7 +70,8 @@ class NeighborList {
   /// `particles` (whose images, unchanged since the saved build, are those
   /// of the build). A list saved without its images' reach (DEM state format
   /// 1) used the 27 nearest images.
-  void restore(const CheckpointState& in, const std::string& prefix, const Particles& particles);
+  void restore(const CheckpointState& in, const std::string& prefix, const Particles& particles,
+               int history_size = 3);
 
  private:
   void sort_and_keep_history(const Particles& p);
@@ -85,11 +90,12 @@ class NeighborList {
     std::uint32_t i, j;
     std::uint8_t shift;
   };
-  std::vector<Candidate> candidates_;
+  std::vector<std::vector<Candidate>> thread_candidates_;  // one per building thread
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
   std::vector<Vec3> built_at_;
   std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
+  int history_size_ = 3;
   double half_skin_ = 0.0;
   long builds_ = 0;
 };

@@ -2,36 +2,52 @@
 // A DEM system and its time integration: particles in a box, a force law,
 // walls, a neighbour list, and velocity Verlet with rotations (6.1).
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <functional>
-#include <variant>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/dem/box.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
+#include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/hooke_law.hpp"
 #include "wearscale/dem/neighbor_list.hpp"
+#include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/dem/particles.hpp"
 #include "wearscale/dem/wall.hpp"
 
 namespace wearscale::dem {
 
-using ForceLaw = std::variant<CohesiveLaw, HookeLaw>;
-
-/// Symmetric 3×3 tensor as xx, yy, zz, xy, xz, yz.
-using SymTensor = std::array<double, 6>;
-
 class Simulation {
  public:
-  Simulation(Particles particles, Box box, ForceLaw law, NeighborSettings neighbors);
+  Simulation(Particles particles, Box box, std::unique_ptr<ContactLaw> law, NeighborSettings neighbors);
+  template <std::derived_from<ContactLaw> Law>
+  Simulation(Particles particles, Box box, Law law, NeighborSettings neighbors)
+      : Simulation(std::move(particles), box, std::make_unique<Law>(std::move(law)), neighbors) {}
+  Simulation(Simulation&&) noexcept = default;
+  Simulation& operator=(Simulation&&) noexcept = default;
 
   Particles& particles() { return particles_; }
   const Particles& particles() const { return particles_; }
   Box& box() { return box_; }
   const Box& box() const { return box_; }
-  ForceLaw& law() { return law_; }
-  const ForceLaw& law() const { return law_; }
+  /// The contact law. Changing its parameters is allowed between steps
+  /// (call reset() when that changes its reach or per-pair parameters).
+  ContactLaw& law() { return *law_; }
+  const ContactLaw& law() const { return *law_; }
+  /// The law as its class; InputError naming both when it is another one.
+  template <std::derived_from<ContactLaw> Law>
+  Law& law_as() {
+    return const_cast<Law&>(std::as_const(*this).law_as<Law>());
+  }
+  template <std::derived_from<ContactLaw> Law>
+  const Law& law_as() const {
+    if (const auto* l = dynamic_cast<const Law*>(law_.get())) return *l;
+    throw_wrong_law();
+  }
   const NeighborList& neighbor_list() const { return neighbors_; }
 
   /// Freezes `members` into a rigid wall; returns its index.
@@ -94,8 +110,7 @@ class Simulation {
   double reach() const;
 
  private:
-  template <class Law, bool Virial>
-  void pair_forces(const Law& law, bool advance);
+  [[noreturn]] void throw_wrong_law() const;
   /// advance: the step's force evaluation, which moves the sliding histories.
   void forces(bool advance);
   void prepare_pairs();
@@ -105,12 +120,13 @@ class Simulation {
 
   Particles particles_;
   Box box_;
-  ForceLaw law_;
+  std::unique_ptr<ContactLaw> law_;
   NeighborSettings settings_;
   NeighborList neighbors_;
   std::vector<Wall> walls_;
-  std::vector<CohesivePair> pair_params_;  // per pair, cohesive law only
-  // Per-thread force/torque/virial buffers (threads 1..T-1).
+  std::size_t block_ = 0;  // rows per colour block of the threaded pair loop (0: buffers)
+  // Per-thread force/torque/virial buffers (threads 1..T-1), only for lists
+  // that reach too far in index for the colour blocks.
   std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
   std::vector<std::vector<SymTensor>> thread_virial_;
   std::vector<SymTensor> virial_;

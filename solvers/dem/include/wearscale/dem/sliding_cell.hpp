@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "wearscale/dem/amorphous_sample.hpp"
@@ -24,6 +25,11 @@ inline constexpr int cell_bottom = 0, cell_top = 1, cell_third = 2;
 
 struct SlidingCellSpec {
   CohesiveMaterial material;
+  /// The contact law between the particles (contact_law.hpp; the cell's
+  /// sample is relaxed, and worn particles are told, with the cohesive law's
+  /// bonds either way) and its Coulomb μ where it has one.
+  std::string law = "cohesive";
+  double friction = 0.5;
   double d0 = 0.0;                ///< mode of the particle diameters
   double largest = 0.0;           ///< d_l (0: 1.25 d0; §6.2.3 fixes it across discretizations)
   Vec3 box{};                     ///< L (sliding, periodic) × W (periodic depth) × H (normal)
