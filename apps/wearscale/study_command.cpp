@@ -55,7 +55,12 @@ void add_runner_flags(CLI::App* cmd, StudyFlags& f, const std::string& example) 
 
 void add_schema_flags(CLI::App* cmd, StudyFlags& f, const std::string& study) {
   for (const auto& spec : studies::study_registry().create(study)->schema())
-    if (!spec.flag.empty()) cmd->add_option(spec.flag, f.keys[spec.key], studies::help_line(spec));
+    if (spec.flag.empty()) continue;
+    else if (spec.switch_value.empty())
+      cmd->add_option(spec.flag, f.keys[spec.key], studies::help_line(spec));
+    else  // a switch: sets its key to one value
+      cmd->add_flag_callback(spec.flag, [&f, spec] { f.keys[spec.key] = spec.switch_value; },
+                             fmt::format("{} = {}: {}", spec.key, spec.switch_value, spec.doc));
 }
 
 int run_study(StudyFlags& f) {

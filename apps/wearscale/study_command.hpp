@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "wearscale/studies/runner.hpp"
+#include "wearscale/studies/study.hpp"
 
 namespace wearscale::app {
 

@@ -40,6 +40,8 @@ nlohmann::json RunSummary::to_json() const {
                       {"provenance", provenance}};
   if (sweep_key.empty()) {
     j["results"] = results;
+    for (const auto& [key, value] : notes.items())
+      if (!j.contains(key)) j[key] = value;
   } else {
     nlohmann::json runs_json = nlohmann::json::array();
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -112,7 +114,8 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   const std::string default_name = run.study->default_case_name();  // empty: the case must name itself
   run.summary.case_name = default_name.empty() ? cfg.string("case.name") : cfg.string_or("case.name", default_name);
   cfg.string_or("case.description", "");
-  const std::string case_dir = cfg.string_or("output.dir", "out/" + run.summary.case_name);
+  const std::string default_dir = run.study->default_output_dir();
+  const std::string case_dir = cfg.string_or("output.dir", default_dir.empty() ? "out/" + run.summary.case_name : default_dir);
   run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
   cfg.mark_used("sweep");  // read by run_case
   // [run]: how the run is carried out, not what it computes.
@@ -160,6 +163,8 @@ void find_resume_point(PreparedRun& run) {
     return;
   }
   run.summary.results = j.value("results", nlohmann::json::object());
+  for (const auto& [key, value] : j.items())  // the study's own fields
+    if (!RunSummary{}.to_json().contains(key) && key != "results") run.summary.notes[key] = value;
   for (const auto& f : j.value("files", nlohmann::json::array()))
     if (f.is_string()) run.summary.files.emplace_back(f.get<std::string>());
   run.complete = true;
@@ -182,7 +187,9 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   std::optional<OutputLock> lock;
   if (command != nullptr) lock.emplace(OutputLock::folder(summary.output_dir, *command));
   create_output_folder(summary.output_dir);
-  remove_stale_partials(summary.output_dir);  // left by a killed run
+  // Temporary files left by a killed run; a resumed one may continue some (a DEM study's snapshot file),
+  // so they go only once it has completed.
+  if (!run.resume) remove_stale_partials(summary.output_dir);
   if (!run.checkpoints) run.checkpoints.emplace(summary.output_dir / "checkpoint.h5", run.fingerprint, run.policy);
   OutputSet outputs(summary.output_dir, "summary.json");
   H5Writer h5(summary.output_dir / "run.h5");
@@ -204,6 +211,7 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
   summary.results = context.results();
+  summary.notes = context.notes();
   summary.files = context.files();
   h5.commit();
   summary.files.insert(summary.files.begin(), h5.final_path());
@@ -213,6 +221,7 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
                run.checkpoints->seconds_saving());
   run.checkpoints->discard();  // complete: nothing to resume
+  if (run.resume) remove_stale_partials(summary.output_dir);  // those this run did not continue
 }
 
 // How to continue an interrupted run, added to the Interrupted message.
@@ -294,9 +303,11 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     sweep.study = study->name();
     const std::string default_name = study->default_case_name();
     sweep.case_name = default_name.empty() ? probe.string("case.name") : probe.string_or("case.name", default_name);
+    const std::string default_dir = study->default_output_dir();
+    sweep.output_dir = options.output_dir ? *options.output_dir
+                                          : std::filesystem::path(probe.string_or(
+                                                "output.dir", default_dir.empty() ? "out/" + sweep.case_name : default_dir));
   }
-  sweep.output_dir = options.output_dir ? *options.output_dir
-                                        : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
   sweep.sweep_key = key;
   sweep.series_key = plan.series_key;
   // Every run is checked before any starts.

@@ -91,10 +91,12 @@ std::string study_of(const Config& cfg) {
     return name;
   }
   if (cfg.has("scale")) return "pipeline";
-  for (const auto& table : cfg.keys())
-    if (table != "case" && table != "output" && table != "run" && table != "sweep" && table != "materials" &&
-        registry.contains(table))
-      return table;
+  for (const auto& table : cfg.keys()) {
+    if (table == "case" || table == "output" || table == "run" || table == "sweep" || table == "materials") continue;
+    if (registry.contains(table)) return table;
+    for (const auto& sub : cfg.keys(table))
+      if (registry.contains(table + "/" + sub)) return table + "/" + sub;
+  }
   return "pipeline";  // its checks name what is missing ([scale.<kind>])
 }
 

@@ -41,6 +41,7 @@ struct RunSummary {
   std::vector<std::string> scales;  ///< the parts it ran, in order (a pipeline's scale ids)
   nlohmann::json provenance;        ///< wearscale version, time, command
   nlohmann::json results;           ///< headline figures {name: {value, unit, description}}
+  nlohmann::json notes = nlohmann::json::object();  ///< the study's other summary fields (RunContext::note)
   nlohmann::json parameters;        ///< the resolved case
   std::vector<std::filesystem::path> files;
   bool complete_before = false;  ///< resumed, but it had completed: its files were not written again

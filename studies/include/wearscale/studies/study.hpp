@@ -34,6 +34,7 @@ struct KeySpec {
   std::string fallback;  ///< default value as text, "" when the key is required or optional
   std::string doc;       ///< one line
   std::string flag;      ///< the command-line alias of the key's command, "--pressure", or ""
+  std::string switch_value = {};  ///< a flag without a value sets the key to this ("--no-strengths": "false")
 };
 
 using Schema = std::vector<KeySpec>;
@@ -58,6 +59,8 @@ class Study {
   virtual Schema schema() const = 0;
   /// The case name and output folder of a case that names neither.
   virtual std::string default_case_name() const { return name(); }
+  /// The output folder of a case that names none; empty: out/<case name>.
+  virtual std::string default_output_dir() const { return {}; }
   /// Reads and checks every key the study uses before anything is written
   /// (InputError on a bad one); a study that reads its keys at the start of
   /// run() need not override it. Returns the parts it runs, in order (the
@@ -108,7 +111,7 @@ const StudyRegistry& study_registry();
 
 /// The study a case runs: [case] study = NAME, else "pipeline" for a case
 /// with [scale.*] tables, else the study named by the case's one top-level
-/// table that is a study's name ([contact] → contact).
+/// table (or table.subtable: [dem.junction] → dem/junction) that is a study's name ([contact] → contact).
 std::string study_of(const Config& cfg);
 
 }  // namespace wearscale::studies
