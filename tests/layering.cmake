@@ -1,5 +1,5 @@
 # Fails if a layer includes a header of a layer it must not depend on
-# (ARCHITECTURE.md: solvers never include coupling/, core includes nothing above it).
+# (docs/architecture.md: solvers never include coupling/, core includes nothing above it).
 set(rules
   "core|wearscale/(materials|bem|dem|wear|tribometer|coupling)/"
   "materials|wearscale/(bem|dem|wear|tribometer|coupling)/"
@@ -19,5 +19,5 @@ foreach(rule IN LISTS rules)
   endforeach()
 endforeach()
 if(violations)
-  message(FATAL_ERROR "layering violations (see ARCHITECTURE.md):\n${violations}")
+  message(FATAL_ERROR "layering violations (see docs/architecture.md):\n${violations}")
 endif()
