@@ -28,6 +28,7 @@
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/utc_time.hpp"
+#include "wearscale/core/worker_pool.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {
@@ -367,25 +368,23 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   log::info("sweep over {}: {} runs on {} worker(s) × {} thread(s) → {}", key, runs.size(), workers, per_run,
             sweep.output_dir.string());
   std::vector<std::exception_ptr> errors(runs.size());
-  std::atomic<std::size_t> next{0}, done{0};
+  std::size_t done = 0;
   std::mutex progress_mutex;
   Progress progress("sweep", static_cast<double>(runs.size()), "runs");
-  auto work = [&] {
-    if (workers > 1) omp_set_num_threads(per_run);
-    for (std::size_t k = next++; k < runs.size() && !interrupt_requested(); k = next++) {
-      try {
-        execute(runs[k], options, false, &command);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-      std::lock_guard guard(progress_mutex);
-      progress.update(static_cast<double>(++done));
+  WorkerOptions pool;
+  pool.workers = workers;
+  pool.omp_threads = workers > 1 ? per_run : 0;
+  pool.caller_omp_too = true;
+  pool.stop = [] { return interrupt_requested(); };
+  run_on_workers(runs.size(), pool, [&](std::size_t k) {
+    try {
+      execute(runs[k], options, false, &command);
+    } catch (...) {
+      errors[k] = std::current_exception();
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+    std::lock_guard guard(progress_mutex);
+    progress.update(static_cast<double>(++done));
+  });
   progress.finish();
   try {
     throw_if_interrupted("sweep");  // also when the signal came between runs
