@@ -75,7 +75,10 @@ int thread_budget() { return std::max(1, omp_get_max_threads()); }
 // The command that runs (or continues) this case with the same options and
 // threads, for messages: a resumed run is bit for bit only on as many threads.
 std::string command_line(const RunOptions& options, int threads) {
-  if (!options.command.empty()) return options.command;
+  if (!options.command.empty())  // a command's own line, with its threads
+    return options.command.find(" -j") != std::string::npos || options.command.find("--threads") != std::string::npos
+               ? options.command
+               : options.command + fmt::format(" -j {}", threads);
   std::string line = "wearscale run " + options.case_file.string();
   for (const auto& o : options.overrides) line += fmt::format(" --set '{}'", o);
   return line + fmt::format(" -j {}", threads);
