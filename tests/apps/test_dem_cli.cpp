@@ -28,7 +28,7 @@ TEST(DemCli, PatchTestReportsElasticConstantsBesideTargets) {
   EXPECT_NEAR(j["results"]["poisson"]["value"].get<double>(), 0.1, 0.012);
   EXPECT_THAT(j["results"]["poisson"]["description"].get<std::string>(), HasSubstr("target 0.1"));
   EXPECT_TRUE(fs::exists(work / "pt" / "patch_test.csv"));
-  EXPECT_TRUE(fs::exists(work / "pt" / "patch_test.json"));
+  EXPECT_TRUE(fs::exists(work / "pt" / "summary.json"));
 }
 
 TEST(DemCli, JunctionWritesHistorySnapshotsAndVerdict) {
@@ -38,7 +38,7 @@ TEST(DemCli, JunctionWritesHistorySnapshotsAndVerdict) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["results"]["d_star"]["value"].get<double>(), 18.5e-9, 0.5e-9);  // (6.65)
   EXPECT_TRUE(j.contains("verdict"));
-  for (const char* f : {"junction_history.csv", "junction.h5", "junction.dump", "junction.json"})
+  for (const char* f : {"junction_history.csv", "junction.h5", "junction.dump", "summary.json"})
     EXPECT_TRUE(fs::exists(work / "jn" / f)) << f;
   const std::string dump = slurp(work / "jn" / "junction.dump");
   EXPECT_THAT(dump, HasSubstr("ITEM: ATOMS id type x y z radius"));
@@ -69,11 +69,11 @@ TEST(DemCli, PatchTestRefusesGarbageInsteadOfReportingIt) {
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_THAT(r.err, HasSubstr("second neighbours"));
   EXPECT_THAT(r.err, HasSubstr("d0 ≥ 74.99"));
-  EXPECT_FALSE(fs::exists(work / "near" / "patch_test.json"));
+  EXPECT_FALSE(fs::exists(work / "near" / "summary.json"));
   r = run_cli("dem patch-test --length 8 --no-strengths --set dem.patch_test.time_step=0.4 --out hot --json", work);
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_THAT(r.err, HasSubstr("numerical failure"));
-  EXPECT_FALSE(fs::exists(work / "hot" / "patch_test.json"));
+  EXPECT_FALSE(fs::exists(work / "hot" / "summary.json"));
 }
 
 // nano/dem's Si keys (#18): `amorphous` names case materials (or "none"),

@@ -435,7 +435,7 @@ TEST(HostileInput, ANonsensicalPatchTestMeasurementIsNeverAResult) {
     EXPECT_LT(nu, 0.5);
   } else {
     EXPECT_TRUE(r.status == 1 || r.status == 2) << r.status << ": " << r.err;
-    EXPECT_FALSE(fs::exists(dir / "out" / "patch_test.json"));
+    EXPECT_FALSE(fs::exists(dir / "out" / "summary.json"));
   }
   fs::remove_all(dir);
 }

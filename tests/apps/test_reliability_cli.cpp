@@ -215,7 +215,7 @@ TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
 }
 
 // The DEM studies a user runs on their own, reduced to a second or two:
-// `wearscale dem STUDY ARGS` writes NAME.json, and DUMP if not empty.
+// `wearscale dem STUDY ARGS` writes summary.json, and DUMP if not empty.
 struct DemStudy {
   std::string label, args, name, dump;
   friend void PrintTo(const DemStudy& s, std::ostream* os) { *os << s.label; }
@@ -237,7 +237,7 @@ const std::vector<DemStudy> dem_studies = {
 // The output of two runs of a DEM study is the same: results, history and
 // snapshots bit for bit, and no checkpoint or temporary file is left.
 void expect_same_dem_outputs(const DemStudy& study, const fs::path& a, const fs::path& b) {
-  EXPECT_EQ(results_of(a / (study.name + ".json")), results_of(b / (study.name + ".json")));
+  EXPECT_EQ(results_of(a / "summary.json"), results_of(b / "summary.json"));
   if (!study.dump.empty()) {
     EXPECT_EQ(slurp(a / (study.name + "_history.csv")), slurp(b / (study.name + "_history.csv")));
     const std::string dump = slurp(b / study.dump);
@@ -300,7 +300,7 @@ TEST(Resume, SigintStopsADemStudyCleanlyAndItResumes) {
   r = run_cli(args + " --resume stopped --json", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("already complete"));
-  EXPECT_EQ(nlohmann::json::parse(r.out)["results"], results_of(dir / "reference" / "junction.json"));
+  EXPECT_EQ(nlohmann::json::parse(r.out)["results"], results_of(dir / "reference" / "summary.json"));
   r = run_cli(args + " --set dem.junction.pressure=2e8 --resume stopped", dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_THAT(r.err, HasSubstr("dem.junction.pressure"));

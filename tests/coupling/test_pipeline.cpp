@@ -8,6 +8,8 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 
+#include <type_traits>
+
 using namespace wearscale;
 using namespace wearscale::coupling;
 using ::testing::HasSubstr;
@@ -17,7 +19,26 @@ const Key strength_si{Quantity::ShearStrength, "Si"};
 const Key law{Quantity::InterfaceLaw, "SiO2/Si"};
 const Key macro{Quantity::MacroResult, "pin/disc"};
 
-// A scale that records when it ran and provides doubles.
+// Each quantity's value (of its own type) carries one number through a chain of fake scales.
+double number_of(const Exchange& ex, const Key& k) {
+  switch (k.what) {
+    case Quantity::ShearStrength: return ex.get<Quantity::ShearStrength>(k.subject).sigma_max(0.0);
+    case Quantity::InterfaceLaw: return ex.get<Quantity::InterfaceLaw>(k.subject).mu0;
+    case Quantity::MacroResult: return ex.get<Quantity::MacroResult>(k.subject).get<double>();
+  }
+  return 0.0;
+}
+void put_number(Exchange& ex, const Key& k, double x, const Provenance& p) {
+  switch (k.what) {
+    case Quantity::ShearStrength:
+      ex.put<Quantity::ShearStrength>(k.subject, materials::StrengthLaw::constant(k.subject, x, 1e12, "test"), p);
+      return;
+    case Quantity::InterfaceLaw: ex.put<Quantity::InterfaceLaw>(k.subject, {k.subject, "", 1.0, x}, p); return;
+    case Quantity::MacroResult: ex.put<Quantity::MacroResult>(k.subject, x, p); return;
+  }
+}
+
+// A scale that records when it ran and provides numbers.
 struct FakeScale : Scale {
   FakeScale(std::vector<Key> in, std::vector<Key> out, std::vector<std::string>* log, std::string id)
       : in_(std::move(in)), out_(std::move(out)), log_(log), id_(std::move(id)) {}
@@ -25,8 +46,8 @@ struct FakeScale : Scale {
   std::vector<Key> provides() const override { return out_; }
   void run(Exchange& ex, RunContext&) override {
     double sum = 1.0;
-    for (const auto& k : in_) sum += ex.get<double>(k);
-    for (const auto& k : out_) ex.put(k, sum, Provenance{"test", id_, {}});
+    for (const auto& k : in_) sum += number_of(ex, k);
+    for (const auto& k : out_) put_number(ex, k, sum, Provenance{"test", id_, {}});
     log_->push_back(id_);
   }
   std::vector<Key> in_, out_;
@@ -57,7 +78,7 @@ TEST_F(PipelineTest, RunsProvidersBeforeConsumersWhateverTheDeclarationOrder) {
   Exchange ex;
   p.run(ex, ctx);
   EXPECT_EQ(ran, (std::vector<std::string>{"molecular", "nano", "macro"}));
-  EXPECT_EQ(ex.get<double>(macro), 3.0);  // 1 → 2 → 3 through the chain
+  EXPECT_EQ(number_of(ex, macro), 3.0);  // 1 → 2 → 3 through the chain
   EXPECT_EQ(ex.provenance(law).backend, "nano");
 }
 
@@ -82,13 +103,18 @@ TEST_F(PipelineTest, CyclesAreRefused) {
   EXPECT_THAT(input_error_of([&] { p.order(); }), HasSubstr("cycle"));
 }
 
+// The type of each quantity is checked at compile time (get<Quantity::ShearStrength>
+// returns a StrengthLaw; asking for another type does not compile), so only a
+// missing or twice-provided key is left to check at run time.
 TEST(Exchange, TypedAccessAndProvenance) {
   Exchange ex;
-  ex.put(strength_si, 10.6e9, Provenance{"molecular", "table", {{"file", "si.csv"}}});
-  EXPECT_EQ(ex.get<double>(strength_si), 10.6e9);
+  ex.put<Quantity::ShearStrength>("Si", materials::StrengthLaw::constant("Si", 10.6e9, 1e12, "test"),
+                                  Provenance{"molecular", "table", {{"file", "si.csv"}}});
+  static_assert(std::is_same_v<decltype(ex.get<Quantity::ShearStrength>("Si")), const materials::StrengthLaw&>);
+  EXPECT_EQ(ex.get<Quantity::ShearStrength>("Si").sigma_max(1e9), 10.6e9);
   EXPECT_EQ(ex.provenance(strength_si).parameters["file"], "si.csv");
-  EXPECT_THROW(ex.get<int>(strength_si), std::logic_error);
-  EXPECT_THROW(ex.get<double>(law), std::logic_error);
-  EXPECT_THROW(ex.put(strength_si, 1.0, Provenance{}), std::logic_error);
+  EXPECT_THROW(ex.get<Quantity::InterfaceLaw>("SiO2/Si"), std::logic_error);
+  EXPECT_THROW(ex.put<Quantity::ShearStrength>("Si", materials::StrengthLaw::constant("Si", 1.0, 1e12, "test"), Provenance{}),
+               std::logic_error);
   EXPECT_EQ(strength_si.to_string(), "ShearStrength(Si)");
 }

@@ -11,13 +11,13 @@
 
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/coupling/case_runner.hpp"
+#include "wearscale/studies/runner.hpp"
 
 using namespace wearscale;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);
-  coupling::RunOptions options;
+  studies::RunOptions options;
   options.case_file = "fuzz.toml";
   options.output_dir = "fuzz-out";  // never created: check_case writes nothing
   while (text.substr(0, 4) == "set ") {
@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::string body(text);
   try {
-    (void)coupling::check_case([&] { return Config::from_string(body, "fuzz.toml"); }, options);
+    (void)studies::check_case([&] { return Config::from_string(body, "fuzz.toml"); }, options);
   } catch (const InputError&) {
   }
   return 0;

@@ -39,7 +39,7 @@ void publish_strength(Exchange& exchange, RunContext& ctx, const std::string& ma
   for (const auto& [k, v] : t.provenance) ctx.h5().set_attribute(group, k, v);
   provenance.parameters["table"] = t.origin;
   provenance.parameters["material"] = material;
-  exchange.put(Key{Quantity::ShearStrength, material}, std::move(law), std::move(provenance));
+  exchange.put<Quantity::ShearStrength>(material, std::move(law), std::move(provenance));
 }
 
 }  // namespace wearscale::coupling

@@ -3,7 +3,7 @@
 // The closed form is the reference the BEM pin-on-disc model starts from.
 #include <vector>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "wearscale/bem/hertz.hpp"
 #include "wearscale/core/csv.hpp"
 
@@ -44,7 +44,7 @@ class MacroHertz final : public Scale {
     const auto csv = ctx.output_dir() / "pressure_profile.csv";
     write_csv(csv, {"r_m", "pressure_Pa"}, {r, p}, {"Hertz pressure profile of the unworn pin (macro/hertz)"});
     ctx.add_file(csv);
-    exchange.put(provides().front(), ctx.results(), provenance_);
+    exchange.put<Quantity::MacroResult>(provides().front().subject, ctx.results(), provenance_);
   }
 
  private:
@@ -55,7 +55,7 @@ class MacroHertz final : public Scale {
 
 }  // namespace
 
-void register_macro_hertz(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(macro_hertz) {
   registry.add({"macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)", {},
                 {"MacroResult(pin/disc)"}},
                [](const ScaleSetup& s) { return std::make_unique<MacroHertz>(s); });

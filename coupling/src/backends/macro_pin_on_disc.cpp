@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/csv.hpp"
@@ -116,8 +116,8 @@ class MacroPinOnDisc final : public Scale {
   std::vector<Key> provides() const override { return {{Quantity::MacroResult, "pin/disc"}}; }
 
   void run(Exchange& exchange, RunContext& ctx) override {
-    s_.on_substrate = exchange.get<materials::InterfaceLaw>({Quantity::InterfaceLaw, pin_ + "/" + disc_});
-    s_.on_layer = exchange.get<materials::InterfaceLaw>({Quantity::InterfaceLaw, pin_ + "/" + layer_});
+    s_.on_substrate = exchange.get<Quantity::InterfaceLaw>(pin_ + "/" + disc_);
+    s_.on_layer = exchange.get<Quantity::InterfaceLaw>(pin_ + "/" + layer_);
     tribometer::PinOnDisc model(s_);
 
     // Resuming: the model, the samples so far and the field snapshots written
@@ -199,7 +199,7 @@ class MacroPinOnDisc final : public Scale {
       series.write(ctx.output_dir() / "fields.xdmf", ctx.h5().final_path(), "s", "m");
       ctx.add_file(ctx.output_dir() / "fields.xdmf");
     }
-    exchange.put(provides().front(), ctx.results(), provenance_);
+    exchange.put<Quantity::MacroResult>(provides().front().subject, ctx.results(), provenance_);
   }
 
  private:
@@ -392,7 +392,7 @@ class MacroPinOnDisc final : public Scale {
 
 }  // namespace
 
-void register_macro_pin_on_disc(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(macro_pin_on_disc) {
   registry.add({"macro", "bem-pin-on-disc", "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)",
                 {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"},
                 {"MacroResult(pin/disc)"}},

@@ -2,7 +2,7 @@
 // strength σ_m,T of each material record (Table 2.1): σ_max = σ_dyn = σ_m,T.
 #include <map>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/strength_law.hpp"
 
@@ -29,7 +29,7 @@ class MolecularIdeal final : public Scale {
   }
 
   void run(Exchange& exchange, RunContext&) override {
-    for (const auto& [m, law] : laws_) exchange.put(Key{Quantity::ShearStrength, m}, law, provenance_);
+    for (const auto& [m, law] : laws_) exchange.put<Quantity::ShearStrength>(m, law, provenance_);
   }
 
  private:
@@ -39,7 +39,7 @@ class MolecularIdeal final : public Scale {
 
 }  // namespace
 
-void register_molecular_ideal(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(molecular_ideal) {
   registry.add({"molecular", "ideal", "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)", {},
                 {"ShearStrength(<each material of [materials]>)"}},
                [](const ScaleSetup& s) { return std::make_unique<MolecularIdeal>(s); });

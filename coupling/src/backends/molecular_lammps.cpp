@@ -4,7 +4,7 @@
 // sweep or a rerun does not recompute them.
 #include <map>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/strength_law.hpp"
@@ -54,7 +54,7 @@ class MolecularLammps final : public Scale {
 
 }  // namespace
 
-void register_molecular_lammps(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(molecular_lammps) {
   registry.add({"molecular", "lammps",
                 "σ_max(p), σ_dyn(p) from live LAMMPS shear tests of Si (SW) and SiO2 (Vashishta) (§9.3.1), cached",
                 {},

@@ -3,7 +3,7 @@
 // user's file per material (§9.3.1).
 #include <map>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/shipped_data.hpp"
@@ -60,7 +60,7 @@ class MolecularTable final : public Scale {
 
 }  // namespace
 
-void register_molecular_table(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(molecular_table) {
   registry.add({"molecular", "table",
                 "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables",
                 {},

@@ -1,7 +1,7 @@
 // nano/analytic: the junction model of §7.1.2 on the molecular strengths —
 // an InterfaceLaw (p_crit (7.5), μ0 (9.13), A/A0 (7.6), wear rate (9.21))
 // for each interface the pin meets: the disc, and its oxide layer if any.
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/junction_model.hpp"
 #include "wearscale/materials/material.hpp"
@@ -38,9 +38,9 @@ class NanoAnalytic final : public Scale {
   }
 
   void run(Exchange& exchange, RunContext& ctx) override {
-    const auto& pin_law = exchange.get<materials::StrengthLaw>({Quantity::ShearStrength, pin_});
+    const auto& pin_law = exchange.get<Quantity::ShearStrength>(pin_);
     for (const auto& c : counterfaces_) {
-      const auto& law = exchange.get<materials::StrengthLaw>({Quantity::ShearStrength, c});
+      const auto& law = exchange.get<Quantity::ShearStrength>(c);
       const auto interface = materials::interface_law(pin_, pin_law, c, law);
       const std::string tag = pin_ + "-" + c;
       ctx.report("p_crit_" + tag, interface.p_crit, "Pa",
@@ -48,7 +48,7 @@ class NanoAnalytic final : public Scale {
       ctx.report("mu0_" + tag, interface.mu0, "1", "steady friction coefficient of " + interface.pair + " (9.13)");
       ctx.report("steady_slope_" + tag, materials::steady_slope_rms(interface.p_crit, e_star_), "1",
                  "steady RMS slope √(2π) p_crit/E* with E* of the pin material (9.17)");
-      exchange.put(Key{Quantity::InterfaceLaw, interface.pair}, interface, provenance_);
+      exchange.put<Quantity::InterfaceLaw>(interface.pair, interface, provenance_);
     }
   }
 
@@ -61,7 +61,7 @@ class NanoAnalytic final : public Scale {
 
 }  // namespace
 
-void register_nano_analytic(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(nano_analytic) {
   registry.add({"nano", "analytic", "junction model of §7.1.2: p_crit, μ0, A/A0 and wear rate per interface",
                 {"ShearStrength(pin, disc, layer)"},
                 {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"}},

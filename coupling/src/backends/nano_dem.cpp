@@ -23,8 +23,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "backends/backends.hpp"
+#include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
+#include "wearscale/core/worker_pool.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
@@ -338,7 +339,7 @@ class NanoDem final : public Scale {
                         {"final_contact_ratio", res.final_contact_ratio}, {"peak_p_T", res.peak_tangential},
                         {"steady_p_T", res.steady_tangential}, {"outcome", res.verdict()}});
       p.parameters["runs"] = runs;
-      exchange.put(Key{Quantity::InterfaceLaw, law.pair}, law, std::move(p));
+      exchange.put<Quantity::InterfaceLaw>(law.pair, law, std::move(p));
     }
   }
 
@@ -358,7 +359,7 @@ class NanoDem final : public Scale {
   // of the molecular law at the working pressure — p_crit of (7.5) unless
   // given: the local pressure of a sliding junction flattened to A_min (7.6).
   ParticleMaterial particle_material(const Exchange& exchange, const std::string& name) const {
-    const auto& law = exchange.get<materials::StrengthLaw>({Quantity::ShearStrength, name});
+    const auto& law = exchange.get<Quantity::ShearStrength>(name);
     const auto& record = library_.get(name);
     const double p_work = working_pressure_ ? *working_pressure_ : materials::critical_pressure(law);
     ParticleMaterial out;
@@ -388,30 +389,25 @@ class NanoDem final : public Scale {
     for (const auto& s : specs) keys.push_back(run_key(s));
     std::vector<std::shared_future<JunctionStrengthResult>> futures(specs.size());
     std::vector<char> computed(specs.size(), 0);
-    std::atomic<std::size_t> next{0};
-    auto work = [&](bool own_thread) {
-      if (own_thread) omp_set_num_threads(1);
-      for (std::size_t k = next++; k < specs.size(); k = next++) {
-        auto claim = JunctionRuns::instance().claim(keys[k]);
-        futures[k] = claim.result;
-        if (!claim.mine) continue;  // another run of this process computes it
-        try {
-          bool fresh = false;
-          claim.mine->set_value(compute(specs[k], keys[k], pair, ctx, fresh));
-          computed[k] = fresh ? 1 : 0;
-        } catch (...) {
-          JunctionRuns::instance().forget(keys[k]);
-          claim.mine->set_exception(std::current_exception());
-        }
-      }
-    };
     // At most the OpenMP threads of this run (one per run inside a sweep,
     // whose runs then share the junctions through JunctionRuns).
-    const int threads = std::min({jobs_, std::max(1, omp_get_max_threads()), static_cast<int>(specs.size())});
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, true);
-    work(false);
-    for (auto& t : pool) t.join();
+    WorkerOptions workers;
+    workers.workers = static_cast<unsigned>(
+        std::min({jobs_, std::max(1, omp_get_max_threads()), static_cast<int>(specs.size())}));
+    workers.omp_threads = 1;
+    run_on_workers(specs.size(), workers, [&](std::size_t k) {
+      auto claim = JunctionRuns::instance().claim(keys[k]);
+      futures[k] = claim.result;
+      if (!claim.mine) return;  // another run of this process computes it
+      try {
+        bool fresh = false;
+        claim.mine->set_value(compute(specs[k], keys[k], pair, ctx, fresh));
+        computed[k] = fresh ? 1 : 0;
+      } catch (...) {
+        JunctionRuns::instance().forget(keys[k]);
+        claim.mine->set_exception(std::current_exception());
+      }
+    });
     std::vector<Run> out;
     for (std::size_t k = 0; k < specs.size(); ++k) out.emplace_back(specs[k], futures[k].get(), computed[k] == 0);
     return out;
@@ -528,7 +524,7 @@ class NanoDem final : public Scale {
 
 }  // namespace
 
-void register_nano_dem(ScaleRegistry& registry) {
+WEARSCALE_BACKEND(nano_dem) {
   registry.add({"nano", "dem",
                 "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear rate per "
                 "interface, cached",

@@ -1,11 +1,11 @@
 #pragma once
 // The typed blackboard through which scales hand quantities to each other;
 // every entry remembers which scale and backend produced it, with what.
-#include <any>
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <typeinfo>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -25,23 +25,22 @@ struct Provenance {
 
 class Exchange {
  public:
-  /// Stores `value` under `key`; a key is written once (two providers is a pipeline error).
-  template <class T>
-  void put(const Key& key, T value, Provenance provenance) {
+  /// Stores `value` as quantity Q of `subject`; a key is written once (two
+  /// providers is a pipeline error). The value's type is Q's (quantity.hpp).
+  template <Quantity Q>
+  void put(std::string subject, QuantityType<Q> value, Provenance provenance) {
+    Key key{Q, std::move(subject)};
     if (entries_.count(key) != 0)
       throw std::logic_error("exchange: " + key.to_string() + " provided twice (by " +
                              entries_.at(key).provenance.backend + " and " + provenance.backend + ")");
-    entries_.emplace(key, Entry{std::any(std::move(value)), std::move(provenance)});
+    entries_.emplace(std::move(key), Entry{Value(std::in_place_index<index(Q)>, std::move(value)), std::move(provenance)});
   }
 
-  /// The value of `key` as a T; a missing key or a wrong type is a programming
-  /// error of the pipeline (the pipeline checks providers before running).
-  template <class T>
-  const T& get(const Key& key) const {
-    const auto& e = entry(key);
-    if (const T* v = std::any_cast<T>(&e.value)) return *v;
-    throw std::logic_error("exchange: " + key.to_string() + " holds " + e.value.type().name() + ", asked for " +
-                           typeid(T).name());
+  /// Quantity Q of `subject`; a missing key is a programming error of the
+  /// pipeline (it checks providers before running).
+  template <Quantity Q>
+  const QuantityType<Q>& get(const std::string& subject) const {
+    return std::get<index(Q)>(entry({Q, subject}).value);
   }
 
   bool contains(const Key& key) const { return entries_.count(key) != 0; }
@@ -49,8 +48,13 @@ class Exchange {
   std::vector<Key> keys() const;
 
  private:
+  static constexpr std::size_t index(Quantity q) { return static_cast<std::size_t>(q); }
+  // One alternative per quantity, in the enum's order.
+  using Value = std::variant<QuantityType<Quantity::ShearStrength>, QuantityType<Quantity::InterfaceLaw>,
+                             QuantityType<Quantity::MacroResult>>;
+  static_assert(std::variant_size_v<Value> == quantity_count, "every Quantity has its type in Exchange::Value");
   struct Entry {
-    std::any value;
+    Value value;
     Provenance provenance;
   };
   const Entry& entry(const Key& key) const;

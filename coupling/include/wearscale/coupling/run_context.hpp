@@ -32,6 +32,11 @@ class RunContext {
   /// A file the run wrote besides run.h5 (CSV, XDMF, PNG), listed in the summary.
   void add_file(const std::filesystem::path& file) { files_.push_back(file); }
 
+  /// A field of the summary besides the headline figures, e.g. a DEM study's
+  /// verdict: shown at the top level of summary.json.
+  void note(const std::string& key, nlohmann::json value) { notes_[key] = std::move(value); }
+  const nlohmann::json& notes() const { return notes_; }
+
   const nlohmann::json& results() const { return results_; }
   /// False when the run is one of several running side by side (a sweep).
   bool show_progress() const { return show_progress_; }
@@ -41,6 +46,7 @@ class RunContext {
   std::filesystem::path dir_;
   H5Writer& h5_;
   nlohmann::json results_ = nlohmann::json::object();
+  nlohmann::json notes_ = nlohmann::json::object();
   std::vector<std::filesystem::path> files_;
   bool show_progress_ = true;
   Checkpointer* checkpoints_ = nullptr;

@@ -34,7 +34,23 @@ struct ScaleSetup {
 
 using ScaleRegistry = Registry<Scale, const ScaleSetup&>;
 
-/// Every built-in backend, registered once (coupling/src/backends.cpp).
+/// Every backend of the build, each registered by its WEARSCALE_BACKEND line.
 const ScaleRegistry& scale_registry();
 
 }  // namespace wearscale::coupling
+
+/// The registration of a backend, beside its class in coupling/src/backends/
+/// and inside namespace wearscale::coupling; the body adds it to `registry`:
+///
+///   WEARSCALE_BACKEND(macro_hertz) {
+///     registry.add({"macro", "hertz", "one line", {consumes...}, {provides...}},
+///                  [](const ScaleSetup& s) { return std::make_unique<MacroHertz>(s); });
+///   }
+///
+/// The build collects these lines (cmake/WearscaleRegistrations.cmake) into
+/// scale_registry(): a new backend is one new file and nothing else.
+#define WEARSCALE_BACKEND(name)                             \
+  namespace registered {                                    \
+  void add_##name(ScaleRegistry& registry);                 \
+  }                                                         \
+  void registered::add_##name(ScaleRegistry& registry)

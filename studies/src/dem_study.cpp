@@ -1,5 +1,11 @@
-#include "wearscale/dem/dem_study.hpp"
-
+// The DEM studies (`wearscale dem ...`), configured by the [dem] table of a
+// case: the patch tests of §6.2, the sheared junction of §6.3, the sheared
+// rough surfaces of §7.2 and the loose particles trapped between flat
+// surfaces of §7.3. Each validates every key before it starts and writes its
+// outputs into the run's folder. Each saves its state into the run's
+// checkpoints as it goes (owner "dem/<study>", with the position of its
+// snapshot file) and continues from the state restored: a killed run resumed
+// gives the same outputs bit for bit (one thread).
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -19,15 +25,16 @@
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/trapped_particles.hpp"
 #include "wearscale/materials/material.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/studies/study.hpp"
 
-namespace wearscale::dem {
+namespace wearscale::studies {
 
 namespace {
 
-void report(nlohmann::json& results, const std::string& name, double v, const std::string& unit,
-            const std::string& what) {
-  results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
-}
+using namespace dem;
+
+CohesiveMaterial dem_material(const Config& root);
 
 // [dem] law: the contact law between the particles, a registered name
 // (contact_law.hpp); [dem] friction: its Coulomb μ, read for the hooke law.
@@ -166,8 +173,6 @@ struct SlidingDumps {
   long cell_record_every = 1;
 };
 
-}  // namespace
-
 CohesiveMaterial dem_material(const Config& root) {
   const Config c = root.section("dem");
   const std::string name = c.string_or("material", "table-6.4");
@@ -205,7 +210,9 @@ CohesiveMaterial dem_material(const Config& root) {
   return m;
 }
 
-nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
+nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
+  const std::filesystem::path& out = context.output_dir();
+  Checkpointer* checkpoints = &context.checkpoints();
   PatchTestSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "patch test");
@@ -245,20 +252,19 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
   bar.reset();
 
   const std::string stress_unit = unitless ? "1" : "Pa";
-  nlohmann::json results = nlohmann::json::object();
-  report(results, "young", result.young, stress_unit, fmt::format("measured E (target {:g})", spec.material.young));
-  report(results, "poisson", result.poisson, "1", fmt::format("measured ν (target {:g})", spec.material.poisson));
-  report(results, "d_min", result.d_min, unitless ? "1" : "m", "minimum particle size 4γ/σ_m,N (6.62)");
-  report(results, "d_c", result.d_c, unitless ? "1" : "m", "critical particle size 4γE/σ_m,N² (6.35)");
-  report(results, "particles", static_cast<double>(result.particles), "1", "particles in the sample");
-  report(results, "elastic_steps", static_cast<double>(result.elastic_steps), "1",
+  context.report("young", result.young, stress_unit, fmt::format("measured E (target {:g})", spec.material.young));
+  context.report("poisson", result.poisson, "1", fmt::format("measured ν (target {:g})", spec.material.poisson));
+  context.report("d_min", result.d_min, unitless ? "1" : "m", "minimum particle size 4γ/σ_m,N (6.62)");
+  context.report("d_c", result.d_c, unitless ? "1" : "m", "critical particle size 4γE/σ_m,N² (6.35)");
+  context.report("particles", static_cast<double>(result.particles), "1", "particles in the sample");
+  context.report("elastic_steps", static_cast<double>(result.elastic_steps), "1",
          result.elastic_converged ? "steps to rest under the load" : "steps run (the wall had not stopped)");
   std::vector<std::string> names{"E", "nu"};
   std::vector<double> measured{result.young, result.poisson}, target{spec.material.young, spec.material.poisson};
   if (result.tensile_strength) {
-    report(results, "tensile_strength", *result.tensile_strength, stress_unit,
+    context.report("tensile_strength", *result.tensile_strength, stress_unit,
            fmt::format("peak σ_yy in tension (target {:g}, (6.63))", result.target_tensile));
-    report(results, "shear_strength", *result.shear_strength, stress_unit,
+    context.report("shear_strength", *result.shear_strength, stress_unit,
            fmt::format("peak σ_xy in shear (target {:g})", result.target_shear));
     names.insert(names.end(), {"sigma_mN", "sigma_mT"});
     measured.insert(measured.end(), {*result.tensile_strength, *result.shear_strength});
@@ -270,10 +276,12 @@ nlohmann::json run_patch_test_study(const Config& root, const std::filesystem::p
   write_csv(csv, {"quantity_index", "measured", "target"}, {index, measured, target},
             {fmt::format("DEM patch test (§6.2), {} {}, d0 = {:g}", spec.amorphous ? "amorphous" : "HCP", spec.material.name, spec.d0),
              fmt::format("quantities: {}", fmt::join(names, ", "))});
-  return {{"results", results}, {"files", {csv.string()}}};
+  return {{"files", {csv.string()}}};
 }
 
-nlohmann::json run_junction_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
+nlohmann::json run_junction_study(const Config& root, RunContext& context) {
+  const std::filesystem::path& out = context.output_dir();
+  Checkpointer* checkpoints = &context.checkpoints();
   ShearedJunctionSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "junction study");
@@ -329,9 +337,8 @@ nlohmann::json run_junction_study(const Config& root, const std::filesystem::pat
   h5.write_table("/history", {"time", "sliding", "tangential_force", "normal_force", "kinetic_energy"}, {t, s, ft, fn, ke},
                  {"s", "m", "N", "N", "J"});
   h5.set_attribute("/", "case_toml", root.to_toml());
-  nlohmann::json results = nlohmann::json::object();
   auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    report(results, name, v, unit, what);
+    context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
   put("detached", r.detached ? 1.0 : 0.0, "1", r.verdict());
@@ -345,11 +352,13 @@ nlohmann::json run_junction_study(const Config& root, const std::filesystem::pat
   put("particles", static_cast<double>(r.particles), "1", "particles");
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
-  return {{"results", results}, {"verdict", r.verdict()},
+  return {{"verdict", r.verdict()},
           {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
 }
 
-nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::path& out, Checkpointer* checkpoints) {
+nlohmann::json run_rough_shear_study(const Config& root, RunContext& context) {
+  const std::filesystem::path& out = context.output_dir();
+  Checkpointer* checkpoints = &context.checkpoints();
   RoughShearSpec spec;
   const Config c = root.section("dem.rough_shear");
   read_sliding_cell(root, c, spec.cell);
@@ -392,9 +401,8 @@ nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::
       fmt::format("sheared rough {} surfaces (§7.2): L = {:.3g} m, Sa = {:g} L, d0 = {:.3g} m, p_N = {:.3g} Pa; {}",
                   spec.cell.material.name, spec.cell.box.x, spec.roughness, d0, spec.cell.pressure, r.regime));
   h5.set_attribute("/", "case_toml", root.to_toml());
-  nlohmann::json results = nlohmann::json::object();
   auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    report(results, name, v, unit, what);
+    context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
   put("mean_pressure", r.mean_pressure, "Pa", "mean measured p_N over the second half of the slide");
@@ -417,11 +425,12 @@ nlohmann::json run_rough_shear_study(const Config& root, const std::filesystem::
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"results", results}, {"verdict", r.regime}, {"files", files}};
+  return {{"verdict", r.regime}, {"files", files}};
 }
 
-nlohmann::json run_trapped_particles_study(const Config& root, const std::filesystem::path& out,
-                                           Checkpointer* checkpoints) {
+nlohmann::json run_trapped_particles_study(const Config& root, RunContext& context) {
+  const std::filesystem::path& out = context.output_dir();
+  Checkpointer* checkpoints = &context.checkpoints();
   TrappedParticlesSpec spec;
   const Config c = root.section("dem.trapped_particles");
   read_sliding_cell(root, c, spec.cell);
@@ -458,9 +467,8 @@ nlohmann::json run_trapped_particles_study(const Config& root, const std::filesy
       fmt::format("{} {} particles of D = {:.3g} m trapped between flat surfaces (§7.3), d0 = {:.3g} m, p_N = {:.3g} Pa; {}",
                   spec.count, spec.cell.material.name, spec.diameter, d0, spec.cell.pressure, r.regime()));
   h5.set_attribute("/", "case_toml", root.to_toml());
-  nlohmann::json results = nlohmann::json::object();
   auto put = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    report(results, name, v, unit, what);
+    context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
   double loose = 0.0;
@@ -481,7 +489,159 @@ nlohmann::json run_trapped_particles_study(const Config& root, const std::filesy
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"results", results}, {"verdict", r.regime()}, {"files", files}};
+  return {{"verdict", r.regime()}, {"files", files}};
 }
 
-}  // namespace wearscale::dem
+// A measured E ≤ 0 or ν outside (−1, 0.5) is no elastic solid: the patch
+// test failed to measure one (exit 1), whatever the sample did.
+void require_elastic_bounds(const nlohmann::json& results) {
+  const double e = results["young"]["value"].get<double>(), nu = results["poisson"]["value"].get<double>();
+  if (!(e > 0.0) || !(nu > -1.0 && nu < 0.5))
+    throw NumericalError("DEM patch test", 0, "elastic constants",
+                         fmt::format("measured E = {:g}, ν = {:g}: not an elastic solid (allowed: E > 0, −1 < ν < 0.5); "
+                                     "the sample did not respond elastically to the load (compare d0 with the printed "
+                                     "d_min and the time step)",
+                                     e, nu));
+}
+
+// What the four DEM studies share: case name "dem", folder out/dem-<study>,
+// [dem] material keys, and the outputs their driver lists.
+class DemStudy : public Study {
+ public:
+  std::string default_case_name() const override { return "dem"; }
+  std::string default_output_dir() const override {
+    std::string leaf = name().substr(name().find('/') + 1);
+    std::replace(leaf.begin(), leaf.end(), '_', '-');
+    return "out/dem-" + leaf;
+  }
+
+ protected:
+  // The driver's outputs (files, verdict) into the context; a sheared study's force history plotted.
+  static void finish(const nlohmann::json& outputs, RunContext& context, const std::string& history) {
+    for (const auto& f : outputs["files"]) context.add_file(f.get<std::string>());
+    if (!outputs.contains("verdict")) return;
+    const std::string verdict = outputs["verdict"].get<std::string>();
+    context.note("verdict", verdict);
+    const auto& out = context.output_dir();
+    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), verdict))
+      context.add_file(*png);
+  }
+  static Schema material_keys(const std::string& flag_doc) {
+    return {{"dem.material", "string", "", "", "", flag_doc, "--material"},
+            {"dem.poisson", "number", "≤ 0.25", "1", "", "target Poisson's ratio", ""},
+            {"dem.restitution", "number", "(0, 1]", "1", "", "coefficient of restitution", ""},
+            {"dem.scaling_exponent", "number", "", "1", "", "size-scaling exponent s of (6.57)", ""}};
+  }
+  static Schema sliding_keys(const std::string& table, const std::string& slide_default) {
+    return {{table + ".d0", "number", "> 0", "m", "", "mode of the particle diameters", "--d0"},
+            {table + ".velocity", "number", "> 0", "m/s", "", "sliding velocity of the top wall", "--velocity"},
+            {table + ".pressure", "number", "≥ 0", "Pa", "", "normal pressure on the top wall", "--pressure"},
+            {table + ".sliding_distance", "number", "> 0", "m", slide_default, "sliding distance", "--slide"},
+            {table + ".seed", "integer", "≥ 0", "1", "", "seed of the amorphous sample", "--seed"}};
+  }
+};
+
+class PatchTestStudy final : public DemStudy {
+ public:
+  std::string name() const override { return "dem/patch_test"; }
+  std::string summary() const override {
+    return "E, ν (confined compression) and σ_m,N, σ_m,T (walls pulled, sheared) of a DEM sample (§6.2)";
+  }
+  Schema schema() const override {
+    Schema s = material_keys("table-6.4 (Table 6.4, unitless), Si, SiO2 or a [materials.define] name");
+    s[1].flag = "--nu";
+    s[3].flag = "--s";
+    s.insert(s.end(),
+             {{"dem.patch_test.lattice", "choice", "hcp | amorphous", "", "hcp", "sample lattice", "--lattice"},
+              {"dem.patch_test.d0", "number", "> 0", "m", "0.6 d_c",
+               "particle diameter (HCP) or mode of diameters, e.g. 90 or \"6 nm\"", "--d0"},
+              {"dem.patch_test.length", "number", "[6, 400]", "1", "25", "sample length L in d0", "--length"},
+              {"dem.patch_test.width", "number", "[1.25, 100]", "1", "3", "sample width in d0", ""},
+              {"dem.patch_test.seed", "integer", "≥ 0", "1", "", "seed of the amorphous sample", "--seed"},
+              {"dem.patch_test.strengths", "boolean", "", "", "true", "also pull and shear the walls", "--no-strengths",
+               "false"}});
+    return s;
+  }
+  void run(const Config& inputs, RunContext& context) override {
+    const auto outputs = run_patch_test_study(inputs, context);
+    require_elastic_bounds(context.results());
+    finish(outputs, context, "");
+  }
+};
+}  // namespace
+}  // namespace wearscale::studies
+WEARSCALE_STUDY(PatchTestStudy)
+
+namespace wearscale::studies {
+namespace {
+class JunctionStudy final : public DemStudy {
+ public:
+  std::string name() const override { return "dem/junction"; }
+  std::string summary() const override {
+    return "a cylindrical junction sheared between two surfaces (§6.3): plastic deformation or a rolling wear particle";
+  }
+  Schema schema() const override {
+    Schema s = material_keys("Si, SiO2 or a [materials.define] name");
+    s.push_back({"dem.junction.diameter", "number", "> 0", "m", "", "junction diameter D, e.g. 20e-9 or \"20 nm\"", "--D"});
+    const Schema sliding = sliding_keys("dem.junction", "1.5 D");
+    s.insert(s.end(), sliding.begin(), sliding.end());
+    return s;
+  }
+  void run(const Config& inputs, RunContext& context) override {
+    finish(run_junction_study(inputs, context), context, "junction");
+  }
+};
+}  // namespace
+}  // namespace wearscale::studies
+WEARSCALE_STUDY(JunctionStudy)
+
+namespace wearscale::studies {
+namespace {
+class RoughShearStudy final : public DemStudy {
+ public:
+  std::string name() const override { return "dem/rough_shear"; }
+  std::string summary() const override {
+    return "two rough surfaces sheared under a normal pressure (§7.2): worn particles, F_T history, Sa evolution";
+  }
+  Schema schema() const override {
+    Schema s = material_keys("Si, SiO2 or a [materials.define] name");
+    s.push_back({"dem.rough_shear.length", "number", "> 0", "m", "", "cell length L (thesis: 25, 50, 100 d0)", "--length"});
+    s.push_back({"dem.rough_shear.roughness", "number", "> 0", "1", "", "initial Sa / L (thesis: 0.01, 0.02, 0.04)",
+                 "--roughness"});
+    const Schema sliding = sliding_keys("dem.rough_shear", "L");
+    s.insert(s.end(), sliding.begin(), sliding.end());
+    return s;
+  }
+  void run(const Config& inputs, RunContext& context) override {
+    finish(run_rough_shear_study(inputs, context), context, "rough_shear");
+  }
+};
+}  // namespace
+}  // namespace wearscale::studies
+WEARSCALE_STUDY(RoughShearStudy)
+
+namespace wearscale::studies {
+namespace {
+class TrappedParticlesStudy final : public DemStudy {
+ public:
+  std::string name() const override { return "dem/trapped_particles"; }
+  std::string summary() const override {
+    return "n loose particles sheared between flat surfaces (§7.3): rolling particles or a shear band";
+  }
+  Schema schema() const override {
+    Schema s = material_keys("Si, SiO2 or a [materials.define] name");
+    s.push_back({"dem.trapped_particles.count", "integer", "≥ 1", "1", "", "number of loose particles (thesis: 2 to 4)", "--n"});
+    s.push_back({"dem.trapped_particles.diameter", "number", "> 0", "m", "", "diameter of the loose particles (= the gap)", "--D"});
+    s.push_back({"dem.trapped_particles.length", "number", "> 0", "m", "3 n D", "cell length L", "--length"});
+    const Schema sliding = sliding_keys("dem.trapped_particles", "L");
+    s.insert(s.end(), sliding.begin(), sliding.end());
+    return s;
+  }
+  void run(const Config& inputs, RunContext& context) override {
+    finish(run_trapped_particles_study(inputs, context), context, "trapped_particles");
+  }
+};
+
+}  // namespace
+}  // namespace wearscale::studies
+WEARSCALE_STUDY(TrappedParticlesStudy)

@@ -1,4 +1,4 @@
-#include "wearscale/coupling/case_runner.hpp"
+#include "wearscale/studies/runner.hpp"
 
 #include <omp.h>
 
@@ -28,18 +28,21 @@
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/utc_time.hpp"
-#include "wearscale/coupling/pipeline.hpp"
-#include "wearscale/coupling/plots.hpp"
+#include "wearscale/core/worker_pool.hpp"
+#include "wearscale/studies/study.hpp"
 
-namespace wearscale::coupling {
+namespace wearscale::studies {
 
 nlohmann::json RunSummary::to_json() const {
   std::vector<std::string> names;
   for (const auto& f : files) names.push_back(f.string());
-  nlohmann::json j = {{"case", case_name}, {"output_dir", output_dir.string()}, {"scales", scales},
-                      {"files", names}, {"parameters", parameters}};
+  nlohmann::json j = {{"study", study},         {"case", case_name},     {"output_dir", output_dir.string()},
+                      {"scales", scales},       {"files", names},        {"parameters", parameters},
+                      {"provenance", provenance}};
   if (sweep_key.empty()) {
     j["results"] = results;
+    for (const auto& [key, value] : notes.items())
+      if (!j.contains(key)) j[key] = value;
   } else {
     nlohmann::json runs_json = nlohmann::json::array();
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -72,37 +75,19 @@ int thread_budget() { return std::max(1, omp_get_max_threads()); }
 // The command that runs (or continues) this case with the same options and
 // threads, for messages: a resumed run is bit for bit only on as many threads.
 std::string command_line(const RunOptions& options, int threads) {
+  if (!options.command.empty())  // a command's own line, with its threads
+    return options.command.find(" -j") != std::string::npos || options.command.find("--threads") != std::string::npos
+               ? options.command
+               : options.command + fmt::format(" -j {}", threads);
   std::string line = "wearscale run " + options.case_file.string();
   for (const auto& o : options.overrides) line += fmt::format(" --set '{}'", o);
   return line + fmt::format(" -j {}", threads);
 }
 
-Pipeline build_pipeline(const Config& cfg) {
-  const auto& registry = scale_registry();
-  const auto kinds = cfg.keys("scale");
-  if (kinds.empty())
-    throw InputError(fmt::format("{}: the case has no [scale.<kind>] table; known kinds: {}", cfg.source(),
-                                 fmt::join(registry.kinds(), ", ")));
-  Pipeline pipeline;
-  for (const auto& kind : kinds) {
-    const Config section = cfg.section("scale." + kind);
-    const auto names = registry.names(kind);
-    if (names.empty())
-      throw cfg.error("scale." + kind, "unknown scale kind", fmt::format("{}", fmt::join(registry.kinds(), ", ")));
-    const std::string backend = section.string("backend");
-    if (!registry.contains(kind, backend))
-      throw section.error("backend", "unknown backend", fmt::format("{}", fmt::join(names, ", ")));
-    const ScaleSetup setup{kind, backend, section, cfg};
-    pipeline.add(kind + "/" + backend, registry.create(kind, backend, setup));
-  }
-  pipeline.order();
-  return pipeline;
-}
-
 // A case checked and ready to run: every key read, every scale built.
 struct PreparedRun {
   Config cfg;
-  Pipeline pipeline;
+  std::unique_ptr<Study> study;
   RunSummary summary;
   CheckpointPolicy policy;
   PlanRigor fft_rigor = PlanRigor::Measure;
@@ -112,12 +97,29 @@ struct PreparedRun {
   bool complete = false;                   // resumed, but it had finished: its outputs stand
 };
 
-PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out) {
+// The study a case runs: the one its command names, else the one it names.
+std::unique_ptr<Study> study_for(const Config& cfg, const RunOptions& options) {
+  cfg.mark_used("case.study");
+  return study_registry().create(options.study.empty() ? study_of(cfg) : options.study);
+}
+
+// The provenance of a run in summary.json: what made it, the same for the same
+// inputs (a resumed run's summary is the uninterrupted one's, byte for byte).
+// run.h5 adds when and by which command line.
+nlohmann::json provenance_of(const RunSummary& summary, const RunOptions& options) {
+  return {{"wearscale_version", WEARSCALE_VERSION}, {"study", summary.study}, {"case_file", options.case_file.string()}};
+}
+
+PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
   PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false};
   Config& cfg = run.cfg;
-  run.summary.case_name = cfg.string("case.name");
+  run.study = study_for(cfg, options);
+  run.summary.study = run.study->name();
+  const std::string default_name = run.study->default_case_name();  // empty: the case must name itself
+  run.summary.case_name = default_name.empty() ? cfg.string("case.name") : cfg.string_or("case.name", default_name);
   cfg.string_or("case.description", "");
-  const std::string case_dir = cfg.string_or("output.dir", "out/" + run.summary.case_name);
+  const std::string default_dir = run.study->default_output_dir();
+  const std::string case_dir = cfg.string_or("output.dir", default_dir.empty() ? "out/" + run.summary.case_name : default_dir);
   run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
   cfg.mark_used("sweep");  // read by run_case
   // [run]: how the run is carried out, not what it computes.
@@ -125,9 +127,7 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   const Config r = cfg.section("run");
   run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
                                                                                                 : PlanRigor::Measure;
-  run.pipeline = build_pipeline(cfg);
-  cfg.reject_unknown_keys();
-  run.summary.scales = run.pipeline.ids();
+  run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();
   run.fingerprint = case_fingerprint(run.summary.parameters);
   return run;
@@ -167,6 +167,8 @@ void find_resume_point(PreparedRun& run) {
     return;
   }
   run.summary.results = j.value("results", nlohmann::json::object());
+  for (const auto& [key, value] : j.items())  // the study's own fields
+    if (!RunSummary{}.to_json().contains(key) && key != "results") run.summary.notes[key] = value;
   for (const auto& f : j.value("files", nlohmann::json::array()))
     if (f.is_string()) run.summary.files.emplace_back(f.get<std::string>());
   run.complete = true;
@@ -181,6 +183,7 @@ void check_fresh_start(const PreparedRun& run) { require_fresh_start(run.summary
 // `command` locks the folder when the caller has not (the runs of a sweep).
 void execute(PreparedRun& run, const RunOptions& options, bool show_progress, const std::string* command) {
   RunSummary& summary = run.summary;
+  summary.provenance = provenance_of(summary, options);
   if (run.complete) {
     log::info("{}: already complete", summary.output_dir.string());
     return;
@@ -188,7 +191,9 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   std::optional<OutputLock> lock;
   if (command != nullptr) lock.emplace(OutputLock::folder(summary.output_dir, *command));
   create_output_folder(summary.output_dir);
-  remove_stale_partials(summary.output_dir);  // left by a killed run
+  // Temporary files left by a killed run; a resumed one may continue some (a DEM study's snapshot file),
+  // so they go only once it has completed.
+  if (!run.resume) remove_stale_partials(summary.output_dir);
   if (!run.checkpoints) run.checkpoints.emplace(summary.output_dir / "checkpoint.h5", run.fingerprint, run.policy);
   OutputSet outputs(summary.output_dir, "summary.json");
   H5Writer h5(summary.output_dir / "run.h5");
@@ -196,23 +201,12 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   h5.set_attribute("/", "case_toml", run.cfg.to_toml());
   h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
   h5.set_attribute("/", "created", utc_now());
+  h5.set_attribute("/", "command", command_line(options, thread_budget()));
+
+  h5.set_attribute("/", "study", summary.study);
 
   RunContext context(summary.output_dir, h5, show_progress, &*run.checkpoints);
-  Exchange exchange;
-  run.pipeline.run(exchange, context);
-
-  nlohmann::json provenance = nlohmann::json::object();
-  for (const auto& key : exchange.keys()) {
-    const auto p = exchange.provenance(key).to_json();
-    provenance[key.to_string()] = p;
-    // One group per quantity, named by it, so the producer of each is visible in the file.
-    std::string subject = key.subject;  // "SiO2/Si" would nest groups: store it as "SiO2-Si"
-    std::replace(subject.begin(), subject.end(), '/', '-');
-    const std::string group = "/exchange/" + to_string(key.what) + "/" + subject;
-    h5.set_attribute(group, "producer", p["scale"].get<std::string>() + "/" + p["backend"].get<std::string>());
-    h5.set_attribute(group, "provenance", p.dump());
-  }
-  h5.set_attribute("/", "provenance", provenance.dump(1));
+  run.study->run(run.cfg, context);
   for (const auto& [name, r] : context.results().items()) {
     const double value = r["value"].get<double>();
     if (!std::isfinite(value))  // never a NaN (null in JSON) or infinite headline figure
@@ -221,20 +215,17 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
   summary.results = context.results();
+  summary.notes = context.notes();
   summary.files = context.files();
   h5.commit();
   summary.files.insert(summary.files.begin(), h5.final_path());
-  const auto friction = summary.output_dir / "friction.csv";
-  if (std::filesystem::exists(OutputSet::readable(friction)))
-    if (auto png = plot_friction_curves({{summary.case_name, friction}}, summary.output_dir / "friction.png",
-                                        summary.case_name))
-      summary.files.push_back(*png);
   summary.files.push_back(summary.output_dir / "summary.json");
   outputs.commit(summary.to_json());
   if (run.checkpoints->saves() > 0)
     log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
                run.checkpoints->seconds_saving());
   run.checkpoints->discard();  // complete: nothing to resume
+  if (run.resume) remove_stale_partials(summary.output_dir);  // those this run did not continue
 }
 
 // How to continue an interrupted run, added to the Interrupted message.
@@ -311,9 +302,16 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     throw probe.error("sweep.series.key", "the series key is not in the case (give it a value there first)",
                       "a key of the case");
   RunSummary& sweep = plan.sweep;
-  sweep.case_name = probe.string("case.name");
-  sweep.output_dir = options.output_dir ? *options.output_dir
-                                        : std::filesystem::path(probe.string_or("output.dir", "out/" + sweep.case_name));
+  {
+    const auto study = study_for(probe, options);
+    sweep.study = study->name();
+    const std::string default_name = study->default_case_name();
+    sweep.case_name = default_name.empty() ? probe.string("case.name") : probe.string_or("case.name", default_name);
+    const std::string default_dir = study->default_output_dir();
+    sweep.output_dir = options.output_dir ? *options.output_dir
+                                          : std::filesystem::path(probe.string_or(
+                                                "output.dir", default_dir.empty() ? "out/" + sweep.case_name : default_dir));
+  }
   sweep.sweep_key = key;
   sweep.series_key = plan.series_key;
   // Every run is checked before any starts.
@@ -326,7 +324,7 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
       std::vector<std::pair<std::string, std::string>> extra{
           {key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)}};
       if (!plan.series_key.empty()) extra.push_back({plan.series_key + "=" + sv, probe.where("sweep.series.values")});
-      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k]));
+      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k], options));
       run_value.push_back(values[k]);
       plan.run_series.push_back(sv);
     }
@@ -360,6 +358,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   }
   FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
   sweep.scales = runs.front().summary.scales;
+  sweep.provenance = provenance_of(sweep, options);
   sweep.parameters = runs.front().summary.parameters;
   sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
   if (!series_key.empty()) sweep.parameters["sweep"]["series"] = {{"key", series_key}, {"values", series}};
@@ -372,25 +371,23 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   log::info("sweep over {}: {} runs on {} worker(s) × {} thread(s) → {}", key, runs.size(), workers, per_run,
             sweep.output_dir.string());
   std::vector<std::exception_ptr> errors(runs.size());
-  std::atomic<std::size_t> next{0}, done{0};
+  std::size_t done = 0;
   std::mutex progress_mutex;
   Progress progress("sweep", static_cast<double>(runs.size()), "runs");
-  auto work = [&] {
-    if (workers > 1) omp_set_num_threads(per_run);
-    for (std::size_t k = next++; k < runs.size() && !interrupt_requested(); k = next++) {
-      try {
-        execute(runs[k], options, false, &command);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-      std::lock_guard guard(progress_mutex);
-      progress.update(static_cast<double>(++done));
+  WorkerOptions pool;
+  pool.workers = workers;
+  pool.omp_threads = workers > 1 ? per_run : 0;
+  pool.caller_omp_too = true;
+  pool.stop = [] { return interrupt_requested(); };
+  run_on_workers(runs.size(), pool, [&](std::size_t k) {
+    try {
+      execute(runs[k], options, false, &command);
+    } catch (...) {
+      errors[k] = std::current_exception();
     }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+    std::lock_guard guard(progress_mutex);
+    progress.update(static_cast<double>(++done));
+  });
   progress.finish();
   try {
     throw_if_interrupted("sweep");  // also when the signal came between runs
@@ -416,7 +413,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
       break;
     }
   const bool numeric_values = numeric.size() == values.size();
-  std::vector<SweepTable> tables;
+  std::vector<std::pair<std::string, std::filesystem::path>> tables;  // label, file
   for (std::size_t first = 0; first < runs.size(); first += values.size()) {
     std::vector<std::vector<double>> columns(names.size());
     for (std::size_t k = first; k < first + values.size(); ++k)
@@ -445,32 +442,21 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     tables.push_back({label.empty() ? "model" : label, table});
   }
 
-  std::vector<FrictionCurve> curves;
+  Study::SweepRuns view;
+  view.probe = &probe;
+  view.key = key;
+  view.series_key = series_key;
+  view.numeric_values = numeric_values;
+  view.result_names = names;
+  view.case_name = sweep.case_name;
+  view.output_dir = sweep.output_dir;
+  for (const auto& t : tables) view.tables.emplace_back(t.first, t.second);
   for (std::size_t k = 0; k < runs.size(); ++k) {
     sweep.runs.push_back(runs[k].summary);
-    const auto csv = runs[k].summary.output_dir / "friction.csv";
-    const std::string label = label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k]));
-    if (std::filesystem::exists(csv)) curves.push_back({label, csv});
+    view.folders.push_back(runs[k].summary.output_dir);
+    view.labels.push_back(label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k])));
   }
-  if (!curves.empty())
-    if (auto png = plot_friction_curves(curves, sweep.output_dir / "friction_curves.png", sweep.case_name))
-      sweep.files.push_back(*png);
-  std::vector<FrictionCurve> profiles;
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const auto csv = runs[k].summary.output_dir / "disc_profile.csv";
-    if (std::filesystem::exists(csv)) profiles.push_back({curves.size() == runs.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
-  }
-  if (!profiles.empty()) {
-    const std::string thickness = "materials.layer.thickness";  // one oxide for all runs: its interface is drawn
-    const bool one_oxide = key != thickness && series_key != thickness && probe.has(thickness);
-    const double h = one_oxide ? probe.number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
-    if (auto png = plot_disc_profiles(profiles, sweep.output_dir / "disc_profiles.png", sweep.case_name, h))
-      sweep.files.push_back(*png);
-  }
-  if (key == "materials.layer.thickness" && numeric_values &&
-      std::find(names.begin(), names.end(), "mu_mean") != names.end())
-    if (auto png = plot_friction_vs_thickness(tables, sweep.output_dir / "friction_vs_thickness.png"))
-      sweep.files.push_back(*png);
+  for (auto& f : runs.front().study->finish_sweep(view)) sweep.files.push_back(std::move(f));
   sweep.files.push_back(sweep.output_dir / "summary.json");
   outputs.commit(sweep.to_json());
   return sweep;
@@ -483,10 +469,12 @@ RunSummary run_case(const RunOptions& options_in) {
   if (options.resume_dir)
     options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   const int threads = thread_budget();
-  const CaseLoader parse = [&] { return Config::load(options.case_file); };
+  const CaseLoader parse = [&] {
+    return options.case_file.empty() ? Config::from_string("", "<command line>") : Config::load(options.case_file);
+  };
   Config probe = load(parse, options);
   if (probe.has("sweep")) return run_sweep(parse, options, probe, threads);
-  PreparedRun run = prepare(std::move(probe), options.output_dir);  // a single run: the file is parsed once
+  PreparedRun run = prepare(std::move(probe), options.output_dir, options);  // a single run: the file is parsed once
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
   if (options.resume_dir)
@@ -510,9 +498,9 @@ std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const Run
   if (probe.has("sweep")) {
     for (const auto& r : plan_sweep(parse, options, probe).runs) folders.push_back(r.summary.output_dir);
   } else {
-    folders.push_back(prepare(std::move(probe), options.output_dir).summary.output_dir);
+    folders.push_back(prepare(std::move(probe), options.output_dir, options).summary.output_dir);
   }
   return folders;
 }
 
-}  // namespace wearscale::coupling
+}  // namespace wearscale::studies

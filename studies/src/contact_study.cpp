@@ -1,5 +1,22 @@
-#include "wearscale/bem/contact_study.hpp"
-
+// The contact study ([contact]): a rigid surface (a file, a generated rough
+// surface and/or a sphere) on an elastic flat, frictionless (Polonsky–Keer)
+// or frictional (Appendix A); fields in contact.h5 (+ .xdmf), micro-contacts
+// in clusters.csv, headline figures to the runner.
+//
+//   [contact]
+//   surface = "rough.h5"        # or [contact.rough] / [contact.sphere] on grid × size
+//   e_star = "37.6 GPa"         # or young + poisson (rigid surface on an elastic flat)
+//   mean_pressure = "1 MPa"     # or normal_load (per cell) or interference
+//   boundary = "periodic"       # or "free": the grid is a window on an isolated body
+//                               # (zero-padded half-space; frictionless only)
+//
+// Frictional contact (Appendix A) adds, with poisson given (and young or e_star):
+//   friction = "coulomb"        # "none" (default) | "coulomb" | "tresca"
+//   friction_coefficient = 0.5  # μ (A.2), Coulomb
+//   shear_strength = "250 MPa"  # σ_m,T (A.3), Tresca
+//   tangential_pressure = "2 MPa"   # mean p_x (or tangential_load, a force on the cell)
+//   tensile_strength = "500 MPa"    # optional σ_m: crack initiation (4.25) per micro-contact
+//   stress_depths = ["1 um", "5 um"]  # optional: σ_I and τ_m fields below the surface
 #include <algorithm>
 #include <cmath>
 
@@ -20,10 +37,13 @@
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/xdmf.hpp"
+#include "wearscale/studies/study.hpp"
 
-namespace wearscale::bem {
+namespace wearscale::studies {
 
 namespace {
+
+using namespace bem;
 
 // Memory per grid point of a study, measured (peak RSS at 1024², with the
 // outputs): normal contact about 120 B, frictional with stresses about 580 B.
@@ -94,8 +114,8 @@ double contact_modulus(const Config& c) {
 }
 
 // Frictionless normal contact (Polonsky–Keer).
-nlohmann::json run_normal_study(const Config& config, const Config& c, const RealField& h,
-                                const std::filesystem::path& out) {
+void run_normal_study(const Config& config, const Config& c, const RealField& h, RunContext& context) {
+  const auto& out = context.output_dir();
   const Grid2D g = h.grid();
   const double e_star = contact_modulus(c);
   const int loads = int(c.has("mean_pressure")) + int(c.has("normal_load")) + int(c.has("interference"));
@@ -130,9 +150,8 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
   h5.write_field("/fields/contact", in_contact, "1");
   h5.set_attribute("/", "case_toml", config.to_toml());
 
-  nlohmann::json results = nlohmann::json::object();
   auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
+    context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
   report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
@@ -161,14 +180,14 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
   sidecar.write(out / "contact.xdmf", h5_path);
   write_csv(out / "clusters.csv", {"area_m2", "centroid_x_m", "centroid_y_m"}, {area, cx, cy},
             {"micro-contacts of the solved contact, largest first"});
-  return {{"results", results},
-          {"files", {h5_path.string(), (out / "contact.xdmf").string(), (out / "clusters.csv").string()}}};
+  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
 }
 
 // Frictional contact (Appendix A): tractions, stick/slip map, displacements,
 // surface (and subsurface) stresses, and the criterion (4.25) if σ_m is given.
-nlohmann::json run_frictional_study(const Config& config, const Config& c, const RealField& h,
-                                    const std::string& law_name, const std::filesystem::path& out) {
+void run_frictional_study(const Config& config, const Config& c, const RealField& h, const std::string& law_name,
+                          RunContext& context) {
+  const auto& out = context.output_dir();
   const Grid2D g = h.grid();
   if (!c.has("poisson"))
     throw c.error("poisson", "frictional contact needs Poisson's ratio: normal and tangential couple through it (4.22)",
@@ -270,9 +289,8 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
   }
   h5.set_attribute("/", "case_toml", config.to_toml());
 
-  nlohmann::json results = nlohmann::json::object();
   auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
+    context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
   report("mean_pressure", r.mean_traction.normal, "Pa", "mean normal traction ⟨p_N⟩");
@@ -336,20 +354,73 @@ nlohmann::json run_frictional_study(const Config& config, const Config& c, const
   if (crack)
     comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));
   write_csv(out / "clusters.csv", csv_names, columns, comments);
-  return {{"results", results},
-          {"files", {h5_path.string(), (out / "contact.xdmf").string(), (out / "clusters.csv").string()}}};
+  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
+}
+
+class ContactStudy final : public Study {
+ public:
+  std::string name() const override { return "contact"; }
+  std::string summary() const override {
+    return "normal or frictional contact of a rigid surface (file, rough, sphere) on an elastic flat (BEM)";
+  }
+  Schema schema() const override;
+  void run(const Config& config, RunContext& context) override {
+    const Config c = config.section("contact");
+    const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
+    const RealField h = build_surface(c, friction);
+    require_memory(bytes_per_point(friction) * static_cast<double>(h.grid().size()),
+                   fmt::format("a {} contact study of {} × {} points", friction == "none" ? "normal" : "frictional",
+                               h.grid().nx, h.grid().ny));
+    if (friction == "none")
+      run_normal_study(config, c, h, context);
+    else
+      run_frictional_study(config, c, h, friction, context);
+  }
+};
+
+Schema ContactStudy::schema() const {
+  return {
+      {"contact.surface", "path", "", "", "", "height file of the rigid surface: " + bem::supported_topography_formats(),
+       "--surface"},
+      {"contact.dataset", "string", "", "", std::string(default_surface_dataset), "dataset of an HDF5 height file", ""},
+      {"contact.missing", "choice", "refuse | fill", "", MissingPointsChoice::fallback, MissingPointsChoice::doc,
+       "--missing"},
+      {"contact.grid", "integer", "8 … 16384", "1", "", "points per side of a generated surface", ""},
+      {"contact.size", "number", "> 0", "m", "", "side of the periodic cell", ""},
+      {"contact.rough.hurst", "number", "(0, 1]", "1", "", "Hurst exponent H of a generated rough surface", ""},
+      {"contact.rough.k_l", "number", "(0, n/2]", "1", "", "roll-off wavenumber (in 1/L)", ""},
+      {"contact.rough.k_r", "number", "[k_l, n/2]", "1", "k_l", "start of the self-affine range", ""},
+      {"contact.rough.k_s", "number", "[k_r, n/2]", "1", "", "cut-off wavenumber", ""},
+      {"contact.rough.seed", "integer", "≥ 0", "1", "0", "random seed", ""},
+      {"contact.rough.hprime_rms", "number", "> 0", "1", "", "RMS slope h' (one of hprime_rms, h_rms, sa)", ""},
+      {"contact.rough.h_rms", "number", "> 0", "m", "", "RMS height", ""},
+      {"contact.rough.sa", "number", "> 0", "m", "", "arithmetic mean height Sa", ""},
+      {"contact.sphere.radius", "number", "> 0", "m", "", "radius of a sphere added at the cell's centre", ""},
+      {"contact.boundary", "choice", "periodic | free", "", "periodic",
+       "periodic cell, or a window on an isolated body (frictionless only)", ""},
+      {"contact.e_star", "number", "> 0", "Pa", "", "contact modulus E* (1.12)", "--e-star"},
+      {"contact.young", "number", "> 0", "Pa", "", "Young's modulus of the elastic flat", ""},
+      {"contact.poisson", "number", "(-1, 0.5]", "1", "", "Poisson's ratio ν of the elastic flat", "--poisson"},
+      {"contact.mean_pressure", "number", "≥ 0", "Pa", "", "imposed mean pressure", "--pressure"},
+      {"contact.normal_load", "number", "≥ 0", "N", "", "imposed normal force on the cell", "--load"},
+      {"contact.interference", "number", "any", "m", "", "imposed interference (frictionless)", "--interference"},
+      {"contact.friction", "choice", "none | coulomb | tresca", "", "none", "friction law (Appendix A)",
+       "--friction"},
+      {"contact.friction_coefficient", "number", "≥ 0", "1", "", "Coulomb friction coefficient μ (A.2)", "--mu"},
+      {"contact.shear_strength", "number", "≥ 0", "Pa", "", "Tresca shear strength σ_m,T (A.3)", "--shear-strength"},
+      {"contact.tangential_pressure", "number", "any", "Pa", "0", "imposed mean tangential traction along x",
+       "--tangential-pressure"},
+      {"contact.tangential_load", "number", "any", "N", "", "imposed tangential force on the cell along x", ""},
+      {"contact.tensile_strength", "number", "> 0", "Pa", "",
+       "tensile strength σ_m: crack initiation (4.25) per micro-contact", "--tensile-strength"},
+      {"contact.stress_depths", "list", "≥ 0", "m", "", "depths of the subsurface stress fields", ""},
+      {"contact.tolerance", "number", "(0, 1)", "1", "1e-12 (frictional 1e-10)", "relative convergence tolerance", ""},
+      {"contact.max_iterations", "integer", "≥ 1", "1", "10000 (frictional 20000)", "iteration limit", ""},
+      {"contact.connectivity", "choice", "four | eight", "", "four", "neighbours joining a micro-contact", ""},
+  };
 }
 
 }  // namespace
+}  // namespace wearscale::studies
 
-nlohmann::json run_contact_study(const Config& config, const std::filesystem::path& out) {
-  const Config c = config.section("contact");
-  const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
-  const RealField h = build_surface(c, friction);
-  require_memory(bytes_per_point(friction) * static_cast<double>(h.grid().size()),
-                 fmt::format("a {} contact study of {} × {} points", friction == "none" ? "normal" : "frictional",
-                             h.grid().nx, h.grid().ny));
-  return friction == "none" ? run_normal_study(config, c, h, out) : run_frictional_study(config, c, h, friction, out);
-}
-
-}  // namespace wearscale::bem
+WEARSCALE_STUDY(ContactStudy)

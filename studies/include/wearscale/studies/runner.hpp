@@ -1,6 +1,8 @@
 #pragma once
-// Runs a case file: builds its scales from [scale.*], checks the case, orders
-// and runs the pipeline, writes run.h5 (+ sidecars) into the output folder.
+// The one runner of every study (studies/study.hpp): runs a case file or the
+// keys a command's flags set, checks the case, runs its study, writes run.h5
+// (version, provenance, headline results) and summary.json (same name and
+// shape for every study) into the output folder.
 // A [sweep] runs the case once per value of one key (in parallel when cores
 // allow) and gathers the headline figures in one table; [sweep.series] (a
 // second key and its values) repeats the sweep once per series value, one
@@ -21,20 +23,25 @@
 
 #include "wearscale/core/config.hpp"
 
-namespace wearscale::coupling {
+namespace wearscale::studies {
 
 struct RunOptions {
-  std::filesystem::path case_file;
+  std::filesystem::path case_file;                ///< empty: no case file (a command's flags give the keys)
+  std::string study;                              ///< the study to run; empty: the case says (study_of)
+  std::string command;                            ///< the command line for messages; empty: `wearscale run ...`
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
   std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
 };
 
 struct RunSummary {
+  std::string study;                ///< the study's name
   std::string case_name;
   std::filesystem::path output_dir;
-  std::vector<std::string> scales;  ///< ids in run order
+  std::vector<std::string> scales;  ///< the parts it ran, in order (a pipeline's scale ids)
+  nlohmann::json provenance;        ///< wearscale version, time, command
   nlohmann::json results;           ///< headline figures {name: {value, unit, description}}
+  nlohmann::json notes = nlohmann::json::object();  ///< the study's other summary fields (RunContext::note)
   nlohmann::json parameters;        ///< the resolved case
   std::vector<std::filesystem::path> files;
   bool complete_before = false;  ///< resumed, but it had completed: its files were not written again
@@ -65,4 +72,4 @@ using CaseLoader = std::function<Config()>;
 /// folder; throws what run_case would for the same input (InputError).
 std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options);
 
-}  // namespace wearscale::coupling
+}  // namespace wearscale::studies

@@ -1,0 +1,34 @@
+#pragma once
+// What every study command shares: the runner's flags (--set, --out,
+// --resume, --json), the alias flags that a study's schema declares, and
+// printing a run's summary.
+#include <map>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "wearscale/studies/runner.hpp"
+#include "wearscale/studies/study.hpp"
+
+namespace wearscale::app {
+
+struct StudyFlags {
+  studies::RunOptions options;
+  std::string out, resume;
+  bool json = false;
+  std::map<std::string, std::string> keys;  ///< schema key → value given by its alias flag
+};
+
+/// Adds --set, --out, --resume and --json to `cmd`; `example` is a key for --set's help.
+void add_runner_flags(CLI::App* cmd, StudyFlags& flags, const std::string& example);
+/// Adds the command-line alias of every key of `study`'s schema that has one.
+void add_schema_flags(CLI::App* cmd, StudyFlags& flags, const std::string& study);
+/// Runs the study through the runner and prints its summary (JSON with --json).
+int run_study(StudyFlags& flags);
+
+/// A command that runs `study`: an optional case file, the schema's alias
+/// flags, and the runner's flags.
+Command add_study_command(CLI::App& app, const std::string& command, const std::string& study,
+                          const std::string& description, const std::string& set_example);
+
+}  // namespace wearscale::app

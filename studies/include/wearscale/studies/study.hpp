@@ -1,0 +1,126 @@
+#pragma once
+// A study: the one runnable unit of wearscale. The scale pipeline of a case
+// ([scale.*]), a contact, a surface, a wear map, a DEM study, a strength table:
+// each declares its keys (the schema) and runs against a RunContext that owns
+// its results, files, run.h5, checkpoints and progress. The runner
+// (studies/runner.hpp) does everything around a run once for all of them:
+// output folder and lock, summary.json, run.h5 provenance, --resume, --set,
+// --json and [sweep].
+//
+// A new study is one file in studies/src/ holding the class and, beside it,
+// its registration line:
+//
+//   WEARSCALE_STUDY(ContactStudy)
+//
+// The build collects these lines (cmake/WearscaleStudies.cmake), so nothing
+// else is edited.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "wearscale/core/config.hpp"
+#include "wearscale/coupling/run_context.hpp"
+
+namespace wearscale::studies {
+
+using coupling::RunContext;
+
+/// One key of a study: what `--help`, "did you mean" and the docs' key tables show.
+struct KeySpec {
+  std::string key;       ///< full case key, "contact.mean_pressure"
+  std::string type;      ///< "number", "integer", "string", "choice", "path", "table", "boolean", "list"
+  std::string range;     ///< allowed values in words: "≥ 0", "(0, 0.5]", "none | coulomb | tresca"
+  std::string unit;      ///< SI unit of a quantity ("Pa"), "1" for a number without one, "" otherwise
+  std::string fallback;  ///< default value as text, "" when the key is required or optional
+  std::string doc;       ///< one line
+  std::string flag;      ///< the command-line alias of the key's command, "--pressure", or ""
+  std::string switch_value = {};  ///< a flag without a value sets the key to this ("--no-strengths": "false")
+};
+
+using Schema = std::vector<KeySpec>;
+
+/// The key of `schema` named `key` (nullptr if there is none).
+const KeySpec* find_key(const Schema& schema, const std::string& key);
+/// The schema's keys closest in spelling to `key` (for "did you mean").
+std::vector<std::string> closest_keys(const Schema& schema, const std::string& key, std::size_t at_most = 3);
+/// The help line of a key: "doc [unit, range, default]: key".
+std::string help_line(const KeySpec& spec);
+/// A Markdown table of the schema (the key tables of docs/).
+std::string markdown_table(const Schema& schema);
+
+class Study {
+ public:
+  virtual ~Study() = default;
+  /// The study's name: "contact", "pipeline", ...
+  virtual std::string name() const = 0;
+  /// One line: what it computes.
+  virtual std::string summary() const = 0;
+  /// Its keys.
+  virtual Schema schema() const = 0;
+  /// The case name and output folder of a case that names neither.
+  virtual std::string default_case_name() const { return name(); }
+  /// The output folder of a case that names none; empty: out/<case name>.
+  virtual std::string default_output_dir() const { return {}; }
+  /// Reads and checks every key the study uses before anything is written
+  /// (InputError on a bad one); a study that reads its keys at the start of
+  /// run() need not override it. Returns the parts it runs, in order (the
+  /// scales of a pipeline), for the summary.
+  virtual std::vector<std::string> prepare(const Config& /*inputs*/) { return {}; }
+  /// Computes, writing its outputs into context.output_dir() and reporting its
+  /// headline figures and files to `context`. Checks every key before any
+  /// work (config.reject_unknown_keys()), when prepare() did not.
+  virtual void run(const Config& inputs, RunContext& context) = 0;
+
+  /// What a sweep over this study adds besides its table (plots of the
+  /// runs' curves), given each run's folder and label; returns the files written.
+  struct SweepRuns {
+    const Config* probe;              ///< the case with its --set options
+    std::string key, series_key;      ///< the swept keys
+    bool numeric_values = false;      ///< the swept values are all numbers
+    std::vector<std::filesystem::path> folders;
+    std::vector<std::string> labels;
+    std::vector<std::pair<std::string, std::filesystem::path>> tables;  ///< label, sweep table
+    std::vector<std::string> result_names;
+    std::string case_name;
+    std::filesystem::path output_dir;
+  };
+  virtual std::vector<std::filesystem::path> finish_sweep(const SweepRuns& /*runs*/) { return {}; }
+};
+
+/// What `wearscale studies` lists.
+struct StudyInfo {
+  std::string name, summary;
+  Schema schema;
+};
+
+class StudyRegistry {
+ public:
+  using Factory = std::unique_ptr<Study> (*)();
+  void add(Factory factory);
+  bool contains(const std::string& name) const;
+  /// InputError naming the known studies (and the closest) for an unknown name.
+  std::unique_ptr<Study> create(const std::string& name) const;
+  std::vector<StudyInfo> list() const;
+
+ private:
+  std::vector<std::pair<std::string, Factory>> entries_;
+};
+
+/// Every study of the build (each registered by its WEARSCALE_STUDY line).
+const StudyRegistry& study_registry();
+
+/// The study a case runs: [case] study = NAME, else "pipeline" for a case
+/// with [scale.*] tables, else the study named by the case's one top-level
+/// table (or table.subtable: [dem.junction] → dem/junction) that is a study's name ([contact] → contact).
+std::string study_of(const Config& cfg);
+
+}  // namespace wearscale::studies
+
+/// The registration line beside a study's class: the build's list of studies
+/// (generated from these lines) calls the function it defines.
+#define WEARSCALE_STUDY(Class)                                                                 \
+  namespace wearscale::studies::registered {                                                   \
+  void add_##Class(StudyRegistry& r) {                                                         \
+    r.add([]() -> std::unique_ptr<Study> { return std::make_unique<Class>(); });               \
+  }                                                                                            \
+  }

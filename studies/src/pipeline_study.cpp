@@ -1,0 +1,125 @@
+// The multiscale model of a case: its [scale.<kind>] tables, each run by a
+// registered backend, ordered by what they consume and provide (coupling/).
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/output_set.hpp"
+#include "wearscale/coupling/pipeline.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/studies/study.hpp"
+
+namespace wearscale::studies {
+
+namespace {
+
+using namespace coupling;
+
+Pipeline build_pipeline(const Config& cfg) {
+  const auto& registry = scale_registry();
+  const auto kinds = cfg.keys("scale");
+  if (kinds.empty())
+    throw InputError(fmt::format("{}: the case has no [scale.<kind>] table; known kinds: {}", cfg.source(),
+                                 fmt::join(registry.kinds(), ", ")));
+  Pipeline pipeline;
+  for (const auto& kind : kinds) {
+    const Config section = cfg.section("scale." + kind);
+    const auto names = registry.names(kind);
+    if (names.empty())
+      throw cfg.error("scale." + kind, "unknown scale kind", fmt::format("{}", fmt::join(registry.kinds(), ", ")));
+    const std::string backend = section.string("backend");
+    if (!registry.contains(kind, backend))
+      throw section.error("backend", "unknown backend", fmt::format("{}", fmt::join(names, ", ")));
+    const ScaleSetup setup{kind, backend, section, cfg};
+    pipeline.add(kind + "/" + backend, registry.create(kind, backend, setup));
+  }
+  pipeline.order();
+  return pipeline;
+}
+
+// Every exchanged quantity's producer, in run.h5: one group per quantity and
+// the whole table as the root's "provenance" attribute.
+void write_exchange_provenance(const Exchange& exchange, H5Writer& h5) {
+  nlohmann::json provenance = nlohmann::json::object();
+  for (const auto& key : exchange.keys()) {
+    const auto p = exchange.provenance(key).to_json();
+    provenance[key.to_string()] = p;
+    std::string subject = key.subject;  // "SiO2/Si" would nest groups: store it as "SiO2-Si"
+    std::replace(subject.begin(), subject.end(), '/', '-');
+    const std::string group = "/exchange/" + to_string(key.what) + "/" + subject;
+    h5.set_attribute(group, "producer", p["scale"].get<std::string>() + "/" + p["backend"].get<std::string>());
+    h5.set_attribute(group, "provenance", p.dump());
+  }
+  h5.set_attribute("/", "provenance", provenance.dump(1));
+}
+
+class PipelineStudy final : public Study {
+ public:
+  std::string name() const override { return "pipeline"; }
+  std::string summary() const override {
+    return "the multiscale model of a case: its [scale.<kind>] backends in the order their quantities need";
+  }
+  Schema schema() const override {
+    return {{"scale.<kind>.backend", "string", "see `wearscale backends`", "", "", "the backend of a scale", ""}};
+  }
+  std::string default_case_name() const override { return ""; }  // a case names itself
+
+  std::vector<std::string> prepare(const Config& inputs) override {
+    case_name_ = inputs.string("case.name");
+    pipeline_ = build_pipeline(inputs);
+    inputs.reject_unknown_keys();
+    return pipeline_.ids();
+  }
+
+  void run(const Config& /*inputs*/, RunContext& context) override {
+    Exchange exchange;
+    pipeline_.run(exchange, context);
+    write_exchange_provenance(exchange, context.h5());
+    const auto friction = context.output_dir() / "friction.csv";
+    if (std::filesystem::exists(OutputSet::readable(friction)))
+      if (auto png = plot_friction_curves({{case_name_, friction}}, context.output_dir() / "friction.png", case_name_))
+        context.add_file(*png);
+  }
+
+  // The pin-on-disc curves of the runs side by side, and Fig. 9.25 for a sweep over the oxide's thickness.
+  std::vector<std::filesystem::path> finish_sweep(const SweepRuns& s) override {
+    std::vector<std::filesystem::path> files;
+    std::vector<FrictionCurve> curves, profiles;
+    for (std::size_t k = 0; k < s.folders.size(); ++k)
+      if (std::filesystem::exists(s.folders[k] / "friction.csv")) curves.push_back({s.labels[k], s.folders[k] / "friction.csv"});
+    if (!curves.empty())
+      if (auto png = plot_friction_curves(curves, s.output_dir / "friction_curves.png", s.case_name)) files.push_back(*png);
+    for (std::size_t k = 0; k < s.folders.size(); ++k) {
+      const auto csv = s.folders[k] / "disc_profile.csv";
+      if (std::filesystem::exists(csv))
+        profiles.push_back({curves.size() == s.folders.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
+    }
+    const std::string thickness = "materials.layer.thickness";
+    if (!profiles.empty()) {
+      // One oxide for all runs: its interface is drawn.
+      const bool one_oxide = s.key != thickness && s.series_key != thickness && s.probe->has(thickness);
+      const double h =
+          one_oxide ? s.probe->number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
+      if (auto png = plot_disc_profiles(profiles, s.output_dir / "disc_profiles.png", s.case_name, h))
+        files.push_back(*png);
+    }
+    if (s.key == thickness && s.numeric_values &&
+        std::find(s.result_names.begin(), s.result_names.end(), "mu_mean") != s.result_names.end()) {
+      std::vector<SweepTable> tables;
+      for (const auto& [label, csv] : s.tables) tables.push_back({label, csv});
+      if (auto png = plot_friction_vs_thickness(tables, s.output_dir / "friction_vs_thickness.png")) files.push_back(*png);
+    }
+    return files;
+  }
+
+ private:
+  Pipeline pipeline_;
+  std::string case_name_;
+};
+
+}  // namespace
+}  // namespace wearscale::studies
+
+WEARSCALE_STUDY(PipelineStudy)

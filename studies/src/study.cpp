@@ -1,0 +1,103 @@
+#include "wearscale/studies/study.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "wearscale/core/edit_distance.hpp"
+#include "wearscale/core/errors.hpp"
+
+namespace wearscale::studies {
+
+const KeySpec* find_key(const Schema& schema, const std::string& key) {
+  for (const auto& k : schema)
+    if (k.key == key) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> closest_keys(const Schema& schema, const std::string& key, std::size_t at_most) {
+  std::vector<std::pair<std::size_t, std::string>> scored;
+  for (const auto& k : schema) scored.emplace_back(edit_distance(k.key, key), k.key);
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> out;
+  for (const auto& [d, k] : scored)
+    if (out.size() < at_most && d <= std::max<std::size_t>(2, key.size() / 4)) out.push_back(k);
+  return out;
+}
+
+std::string help_line(const KeySpec& s) {
+  std::vector<std::string> facts;
+  if (!s.unit.empty() && s.unit != "1") facts.push_back(s.unit);
+  if (!s.range.empty()) facts.push_back(s.range);
+  if (!s.fallback.empty()) facts.push_back("default " + s.fallback);
+  return fmt::format("{}{}: {}", s.doc, facts.empty() ? "" : fmt::format(" [{}]", fmt::join(facts, "; ")), s.key);
+}
+
+std::string markdown_table(const Schema& schema) {
+  std::string out = "| key | type | unit | allowed | default | flag | meaning |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& k : schema)
+    out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", k.key, k.type, k.unit, k.range,
+                       k.fallback.empty() ? "" : "`" + k.fallback + "`", k.flag.empty() ? "" : "`" + k.flag + "`",
+                       k.doc);
+  return out;
+}
+
+void StudyRegistry::add(Factory factory) {
+  const std::string name = factory()->name();
+  if (contains(name)) throw std::logic_error("study registered twice: " + name);
+  entries_.emplace_back(name, factory);
+  std::sort(entries_.begin(), entries_.end());
+}
+
+bool StudyRegistry::contains(const std::string& name) const {
+  return std::any_of(entries_.begin(), entries_.end(), [&](const auto& e) { return e.first == name; });
+}
+
+std::unique_ptr<Study> StudyRegistry::create(const std::string& name) const {
+  for (const auto& [n, f] : entries_)
+    if (n == name) return f();
+  std::vector<std::string> names;
+  std::string best;
+  std::size_t best_d = 3;
+  for (const auto& [n, f] : entries_) {
+    names.push_back(n);
+    if (const auto d = edit_distance(n, name); d < best_d) best_d = d, best = n;
+  }
+  throw InputError(fmt::format("unknown study '{}'; known studies: {}{}", name, fmt::join(names, ", "),
+                               best.empty() ? "" : fmt::format(" (did you mean '{}'?)", best)));
+}
+
+std::vector<StudyInfo> StudyRegistry::list() const {
+  std::vector<StudyInfo> out;
+  for (const auto& [n, f] : entries_) {
+    const auto s = f();
+    out.push_back({s->name(), s->summary(), s->schema()});
+  }
+  return out;
+}
+
+std::string study_of(const Config& cfg) {
+  const auto& registry = study_registry();
+  if (cfg.has("case.study")) {
+    const std::string name = cfg.string("case.study");
+    if (!registry.contains(name)) {
+      try {
+        registry.create(name);
+      } catch (const InputError& e) {
+        throw cfg.error("case.study", e.what());
+      }
+    }
+    return name;
+  }
+  if (cfg.has("scale")) return "pipeline";
+  for (const auto& table : cfg.keys()) {
+    if (table == "case" || table == "output" || table == "run" || table == "sweep" || table == "materials") continue;
+    if (registry.contains(table)) return table;
+    for (const auto& sub : cfg.keys(table))
+      if (registry.contains(table + "/" + sub)) return table + "/" + sub;
+  }
+  return "pipeline";  // its checks name what is missing ([scale.<kind>])
+}
+
+}  // namespace wearscale::studies
