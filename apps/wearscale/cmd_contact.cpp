@@ -8,10 +8,12 @@
 
 #include "commands.hpp"
 #include "wearscale/bem/contact_study.hpp"
+#include "wearscale/bem/slab_contact_study.hpp"
 #include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/config.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/output_set.hpp"
 
@@ -73,9 +75,14 @@ Command add_contact(CLI::App& app) {
     cfg.string_or("case.description", "");
     const std::string dir = cfg.string_or("output.dir", "out/contact");
     const std::filesystem::path out = a->out.empty() ? std::filesystem::path(dir) : std::filesystem::path(a->out);
+    if (mpi::size() > 1 && !mpi::is_root()) {  // mpirun -np P: this rank's slab; rank 0 locks and writes
+      log::set_level(log::Level::Quiet);
+      (void)bem::run_slab_contact_study(cfg, out);
+      return 0;
+    }
     const OutputLock lock = OutputLock::folder(out, invocation());
     OutputSet outputs(out, "summary.json");  // published together, summary.json last
-    auto summary = bem::run_contact_study(cfg, out);
+    auto summary = mpi::size() > 1 ? bem::run_slab_contact_study(cfg, out) : bem::run_contact_study(cfg, out);
     require_finite_results(summary["results"], "contact study");
     summary["parameters"] = cfg.to_json();
     summary["output_dir"] = out.string();

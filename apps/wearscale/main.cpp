@@ -82,11 +82,13 @@ int run(int argc, char** argv) {
   }
   install_interrupt_handlers();
   app::set_invocation(argc, argv);
-  if (mpi::size() > 1) {
-    // No command distributes its work over ranks yet: P copies of one run would
-    // write the same files at once. Refused on every rank before any work.
+  const bool distributed = !app.get_subcommands().empty() && app.get_subcommands().front()->get_name() == "contact";
+  if (mpi::size() > 1 && !distributed) {
+    // Only `contact` distributes its work over ranks (slabs, rank 0 writes): P
+    // copies of another run would write the same files at once. Refused on
+    // every rank before any work.
     if (mpi::is_root())
-      log::error("wearscale {}: runs on one rank only for now ({} ranks started); run it without mpirun",
+      log::error("wearscale {}: runs on one rank only for now ({} ranks started; only `contact` is distributed); run it without mpirun",
                  app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name(), mpi::size());
     every_rank_refused = true;
     return exit_bad_input;

@@ -1,5 +1,7 @@
 #include "wearscale/bem/contact_study.hpp"
 
+#include "contact_case.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,26 +52,8 @@ RealField build_surface(const Config& c, const std::string& friction) {
   }
   const Grid2D g = h.grid();
   if (c.has("rough")) {
-    const Config r = c.section("rough");
-    RoughSurfaceSpec spec;
-    spec.grid = g;
-    // Ranges checked here so messages name the case key; the generator checks them again.
-    const double nyquist = static_cast<double>(std::min(g.nx, g.ny) / 2);
-    spec.hurst = r.number("hurst", Range::open_closed(0.0, 1.0));
-    spec.k_l = r.number("k_l", Range::open_closed(0.0, nyquist));
-    spec.k_r = r.number_or("k_r", spec.k_l, Range::closed(spec.k_l, nyquist));
-    spec.k_s = r.number("k_s", Range::closed(spec.k_r, nyquist));
-    spec.seed = static_cast<std::uint64_t>(r.integer_or("seed", 0, Range::non_negative()));
-    const int targets = int(r.has("hprime_rms")) + int(r.has("h_rms")) + int(r.has("sa"));
-    if (targets != 1) throw r.error("hprime_rms", "give exactly one of hprime_rms, h_rms, sa", "one roughness target");
-    RealField rough;
-    if (r.has("hprime_rms"))
-      rough = generate_surface(spec, RoughnessMeasure::HPrimeRms, r.number("hprime_rms", Range::positive()));
-    else if (r.has("h_rms"))
-      rough = generate_surface(spec, RoughnessMeasure::HRms, r.number("h_rms", Range::positive(), units::length));
-    else
-      rough = generate_surface(spec, RoughnessMeasure::Sa, r.number("sa", Range::positive(), units::length));
-    h = add(h, rough);
+    const RoughCase rough = read_rough_case(c.section("rough"), g);
+    h = add(h, generate_surface(rough.spec, rough.measure, rough.target));
   }
   if (c.has("sphere")) {
     const double radius = c.number("sphere.radius", Range::positive(), units::length);
@@ -97,55 +81,104 @@ double contact_modulus(const Config& c) {
 nlohmann::json run_normal_study(const Config& config, const Config& c, const RealField& h,
                                 const std::filesystem::path& out) {
   const Grid2D g = h.grid();
-  const double e_star = contact_modulus(c);
+  const NormalCase n = read_normal_case(c, g);
+  config.reject_unknown_keys();  // every check before any work
+
+  log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), n.e_star, to_string(n.boundary));
+  NormalContact contact(h, n.e_star, n.boundary);
+  const ContactResult r = n.solve(contact);
+  return write_normal_study(config, n, h, contact.pressure(), contact.gap(), contact.displacement(), r, out);
+}
+
+}  // namespace
+
+RoughCase read_rough_case(const Config& r, const Grid2D& g) {
+  RoughCase rough;
+  RoughSurfaceSpec& spec = rough.spec;
+  spec.grid = g;
+  // Ranges checked here so messages name the case key; the generator checks them again.
+  const double nyquist = static_cast<double>(std::min(g.nx, g.ny) / 2);
+  spec.hurst = r.number("hurst", Range::open_closed(0.0, 1.0));
+  spec.k_l = r.number("k_l", Range::open_closed(0.0, nyquist));
+  spec.k_r = r.number_or("k_r", spec.k_l, Range::closed(spec.k_l, nyquist));
+  spec.k_s = r.number("k_s", Range::closed(spec.k_r, nyquist));
+  spec.seed = static_cast<std::uint64_t>(r.integer_or("seed", 0, Range::non_negative()));
+  const int targets = int(r.has("hprime_rms")) + int(r.has("h_rms")) + int(r.has("sa"));
+  if (targets != 1) throw r.error("hprime_rms", "give exactly one of hprime_rms, h_rms, sa", "one roughness target");
+  if (r.has("hprime_rms")) {
+    rough.measure = RoughnessMeasure::HPrimeRms;
+    rough.target = r.number("hprime_rms", Range::positive());
+  } else if (r.has("h_rms")) {
+    rough.measure = RoughnessMeasure::HRms;
+    rough.target = r.number("h_rms", Range::positive(), units::length);
+  } else {
+    rough.measure = RoughnessMeasure::Sa;
+    rough.target = r.number("sa", Range::positive(), units::length);
+  }
+  return rough;
+}
+
+NormalCase read_normal_case(const Config& c, const Grid2D& g) {
+  NormalCase n;
+  n.e_star = contact_modulus(c);
   const int loads = int(c.has("mean_pressure")) + int(c.has("normal_load")) + int(c.has("interference"));
   if (loads != 1)
     throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load, interference", "one load");
-  ContactOptions options;
-  options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
-  options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
-  const auto connectivity =
+  n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
+  n.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
+  n.connectivity =
       c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
-  const Boundary boundary = contact_boundary(c);
-  double p0 = 0.0, delta = 0.0;
-  if (c.has("mean_pressure")) p0 = c.number("mean_pressure", Range::non_negative(), units::pressure);
-  if (c.has("normal_load")) p0 = c.number("normal_load", Range::non_negative(), units::force) / g.area();
-  if (c.has("interference")) delta = c.number("interference", Range::any(), units::length);
-  config.reject_unknown_keys();  // every check before any work
+  n.boundary = contact_boundary(c);
+  if (c.has("mean_pressure")) n.p0 = c.number("mean_pressure", Range::non_negative(), units::pressure);
+  if (c.has("normal_load")) n.p0 = c.number("normal_load", Range::non_negative(), units::force) / g.area();
+  n.imposes_interference = c.has("interference");
+  if (n.imposes_interference) n.delta = c.number("interference", Range::any(), units::length);
+  return n;
+}
 
-  log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), e_star, to_string(boundary));
-  NormalContact contact(h, e_star, boundary);
-  const ContactResult r =
-      c.has("interference") ? contact.solve_interference(delta, options) : contact.solve_mean_pressure(p0, options);
-  const ContactMap map = find_clusters(contact.pressure(), connectivity);
+ContactResult NormalCase::solve(NormalContact& contact) const {
+  return imposes_interference ? contact.solve_interference(delta, options) : contact.solve_mean_pressure(p0, options);
+}
 
-  RealField in_contact(g);
-  for (std::size_t k = 0; k < g.size(); ++k) in_contact[k] = contact.pressure()[k] > 0.0 ? 1.0 : 0.0;
-  const auto h5_path = out / "contact.h5";
-  H5Writer h5(h5_path);
-  h5.write_field("/surface/height", h, "m");
-  h5.write_field("/fields/pressure", contact.pressure(), "Pa");
-  h5.write_field("/fields/gap", contact.gap(), "m");
-  h5.write_field("/fields/displacement", contact.displacement(), "m");
-  h5.write_field("/fields/contact", in_contact, "1");
-  h5.set_attribute("/", "case_toml", config.to_toml());
-
+nlohmann::json normal_results(const NormalCase& n, const ContactResult& r, double area, double hprime_rms,
+                              const ContactMap* map) {
   nlohmann::json results = nlohmann::json::object();
   auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
     results[name] = {{"value", v}, {"unit", unit}, {"description", what}};
-    h5.write_scalar("/results/" + name, v, unit);
   };
   report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
   report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-  report("contact_area", contact_area(contact.pressure()), "m^2", "real contact area A");
+  report("contact_area", area, "m^2", "real contact area A");
   report("interference", r.interference, "m",
-         boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
-                                    : "summit depth below the mean deformed surface");
+         n.boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
+                                      : "summit depth below the mean deformed surface");
   report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
-  report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
+  if (map != nullptr) report("clusters", static_cast<double>(map->clusters.size()), "1", "number of micro-contacts");
   report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
   report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
-  report("hprime_rms", h_prime_rms(h), "1", "RMS slope of the surface (1.6)");
+  report("hprime_rms", hprime_rms, "1", "RMS slope of the surface (1.6)");
+  return results;
+}
+
+nlohmann::json write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
+                                  const RealField& gap, const RealField& u, const ContactResult& r,
+                                  const std::filesystem::path& out) {
+  const Grid2D g = h.grid();
+  const ContactMap map = find_clusters(p, n.connectivity);
+  RealField in_contact(g);
+  for (std::size_t k = 0; k < g.size(); ++k) in_contact[k] = p[k] > 0.0 ? 1.0 : 0.0;
+  const auto h5_path = out / "contact.h5";
+  H5Writer h5(h5_path);
+  h5.write_field("/surface/height", h, "m");
+  h5.write_field("/fields/pressure", p, "Pa");
+  h5.write_field("/fields/gap", gap, "m");
+  h5.write_field("/fields/displacement", u, "m");
+  h5.write_field("/fields/contact", in_contact, "1");
+  h5.set_attribute("/", "case_toml", config.to_toml());
+
+  const nlohmann::json results = normal_results(n, r, contact_area(p), h_prime_rms(h), &map);
+  for (const auto& [name, v] : results.items())
+    h5.write_scalar("/results/" + name, v["value"].get<double>(), v["unit"].get<std::string>());
 
   std::vector<double> area, cx, cy;
   for (const auto& cl : map.clusters) {
@@ -164,6 +197,8 @@ nlohmann::json run_normal_study(const Config& config, const Config& c, const Rea
   return {{"results", results},
           {"files", {h5_path.string(), (out / "contact.xdmf").string(), (out / "clusters.csv").string()}}};
 }
+
+namespace {
 
 // Frictional contact (Appendix A): tractions, stick/slip map, displacements,
 // surface (and subsurface) stresses, and the criterion (4.25) if σ_m is given.
