@@ -14,7 +14,11 @@
 #include <filesystem>
 #include <map>
 #include <new>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include <fmt/ranges.h>
 
 #include "commands.hpp"
 #include "wearscale/core/errors.hpp"
@@ -22,6 +26,7 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
+#include "wearscale/core/version.hpp"
 
 namespace {
 bool every_rank_refused = false;  // a refusal all ranks reach alike needs no abort
@@ -37,6 +42,23 @@ int main(int argc, char** argv) {
 }
 
 namespace {
+// The first word that is neither an option nor an option's value, when it
+// names no command (CLI11 would only say that a command is required).
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
+  for (int k = 1; k < argc; ++k) {
+    const std::string word = argv[k];
+    if (word == "-j" || word == "--threads") {
+      ++k;  // its value
+      continue;
+    }
+    if (word.starts_with("-")) continue;
+    for (const auto* sub : app.get_subcommands({}))
+      if (sub->check_name(word)) return std::nullopt;
+    return word;
+  }
+  return std::nullopt;
+}
+
 int run(int argc, char** argv) {
   using namespace wearscale;
   CLI::App app{"wearscale: friction and adhesive wear across scales (MD → DEM/junctions → BEM pin-on-disc)",
@@ -49,6 +71,7 @@ int run(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr; no progress bar");
   app.add_flag("-v,--verbose", verbose, "Debug messages on stderr");
   app.add_option("-j,--threads", threads, "OpenMP and FFTW threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.set_version_flag("--version", "wearscale " + version(), "Print the version of wearscale and exit");
 
   std::map<CLI::App*, app::Command> commands;
   auto add = [&](app::Command (*adder)(CLI::App&)) {
@@ -64,8 +87,16 @@ int run(int argc, char** argv) {
   add(app::add_dem);
   add(app::add_wearmap);
 
+  if (const auto unknown = unknown_command(app, argc, argv)) {
+    std::vector<std::string> names;
+    for (const auto* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    log::error("unknown command '{}'; the commands are: {} (wearscale --help)", *unknown, fmt::join(names, ", "));
+    return exit_bad_input;
+  }
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

@@ -1,7 +1,9 @@
 #include "wearscale/core/progress.hpp"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,7 +60,24 @@ double Progress::eta_seconds() const {
 
 std::string Progress::line() const {
   const double pct = total_ > 0 ? 100.0 * done_ / total_ : 0.0;
+  const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
+  if (!(done_ > base_) || elapsed < 0.5) return fmt::format("{}  {:3.0f}%  -- {}/s  ETA --", label_, pct, unit_);
   return fmt::format("{}  {:3.0f}%  {:.3g} {}/s  ETA {}", label_, pct, rate(), unit_, format_duration(eta_seconds()));
+}
+
+std::string Progress::fit_to_width(const std::string& text, std::size_t columns) {
+  std::size_t points = 0;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    if ((static_cast<unsigned char>(text[k]) & 0xC0) == 0x80) continue;  // a continuation byte
+    if (points++ == columns) return text.substr(0, k);
+  }
+  return text;
+}
+
+std::size_t Progress::terminal_columns() {
+  winsize w{};
+  if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &w) == 0 && w.ws_col > 0) return w.ws_col;
+  return 80;
 }
 
 void Progress::update(double done) {
@@ -68,14 +87,18 @@ void Progress::update(double done) {
   if (drawn_ && now - last_draw_ < std::chrono::milliseconds(200) && done_ < total_) return;
   last_draw_ = now;
   drawn_ = true;
-  std::fprintf(stderr, "\r\033[K%s", line().c_str());
+  // One column short of the width: a full-width line wraps on some terminals.
+  const std::string text = fit_to_width(line(), std::max<std::size_t>(terminal_columns(), 2) - 1);
+  std::fprintf(stderr, "\r\033[K%s", text.c_str());
   std::fflush(stderr);
+  log::set_status_line(true);
 }
 
 void Progress::finish() {
   if (!enabled_ || !drawn_) return;
   std::fprintf(stderr, "\r\033[K");
   std::fflush(stderr);
+  log::set_status_line(false);
   drawn_ = false;
 }
 

@@ -71,6 +71,21 @@ TEST(Cli, VersionNamesTheLibraries) {
   EXPECT_TRUE(j["libraries"].contains("HDF5"));
 }
 
+TEST(Cli, DashDashVersionPrintsTheVersionAndSucceeds) {
+  const auto r = run_cli("--version", work);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::MatchesRegex("wearscale [0-9]+\\.[0-9]+\\.[0-9]+\n"));
+}
+
+TEST(Cli, AnUnknownCommandIsNamedWithTheKnownOnes) {
+  for (const std::string line : {"frobnicate", "-j 1 frobnicate --x", "-q frobnicate"}) {
+    const auto r = run_cli(line, work);
+    EXPECT_EQ(r.status, 2) << line;
+    EXPECT_THAT(r.err, HasSubstr("unknown command 'frobnicate'")) << line;
+    EXPECT_THAT(r.err, HasSubstr("run, backends, version")) << line;
+  }
+}
+
 TEST(Cli, CommandLineMistakesAreBadInput) {
   EXPECT_EQ(run_cli("", work).status, 2);
   EXPECT_EQ(run_cli("frobnicate", work).status, 2);

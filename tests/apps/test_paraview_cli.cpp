@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -163,16 +164,35 @@ TEST(ParaViewCli, WearMapsOpenWithTheirFirstAxisAlongX) {
   expect_paraview_shows(rxmf, "count_mean", 3, 2, {0.0, 0.0, 1.0, 1.0}, 2, 1, stored(rh5, "/maps/count_mean", 2, 1));
 }
 
-TEST(ParaViewCli, PinOnDiscSnapshotsAreATimeSeriesOverTheSlidingDistance) {
+// A 32² pin-on-disc run with field snapshots (and the keys `sets`) into
+// `out`: the time steps of its fields.xdmf, each checked against run.h5.
+std::vector<std::pair<double, std::vector<std::string>>> snapshot_run(const std::string& sets, const std::string& out) {
   const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
-  const auto r = run_cli("run " + pin_on_disc +
-                             " --set scale.macro.distance=0.004 --set scale.macro.grid=32"
-                             " --set scale.macro.fields_every=8 --out pod",
-                         work);
-  ASSERT_EQ(r.status, 0) << r.err;
+  const auto r = run_cli("run " + pin_on_disc + " --set scale.macro.grid=32" + sets + " --out " + out, work);
+  EXPECT_EQ(r.status, 0) << r.err;
+  if (r.status != 0) return {};
+  return expect_xdmf_time_series(work / out / "fields.xdmf", work / out / "run.h5", {32, 32});
+}
+
+TEST(ParaViewCli, PinOnDiscSnapshotsCloserThanATenthOfAMillimetreKeepTheirOwnFields) {
+  // 16 µm steps, a snapshot at each: groups once named by the distance to
+  // 0.1 mm shared one group among six steps, whose fields the last overwrote.
+  const auto steps = snapshot_run(
+      " --set scale.macro.distance=0.0004 --set scale.macro.time_step=0.002 --set scale.macro.fields_every=1", "close");
+  const wearscale::H5Reader reader(work / "close" / "run.h5");
+  EXPECT_EQ(steps.size(), 26u) << "one snapshot per sample: 25 steps of 16 um and the final state";
+  std::set<std::string> groups;
+  for (const auto& [time, datasets] : steps) {
+    const std::string group = datasets[0].substr(0, datasets[0].rfind('/'));
+    EXPECT_TRUE(groups.insert(group).second) << group << " holds two snapshots";
+    EXPECT_EQ(reader.number_attribute(group, "distance"), time) << group;
+  }
+}
+
+TEST(ParaViewCli, PinOnDiscSnapshotsAreATimeSeriesOverTheSlidingDistance) {
+  const auto steps = snapshot_run(" --set scale.macro.distance=0.004 --set scale.macro.fields_every=8", "pod");
   const fs::path h5 = work / "pod" / "run.h5";
   const wearscale::H5Reader reader(h5);
-  const auto steps = expect_xdmf_time_series(work / "pod" / "fields.xdmf", h5, {32, 32});
   ASSERT_GE(steps.size(), 2u);
   double previous = -1.0;
   for (const auto& [time, datasets] : steps) {

@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -30,8 +32,12 @@ TEST(PinOnDiscCli, TheFrictionTableCarriesItsMovingAverageAndTheDiscItsGrooves) 
   EXPECT_EQ(j["results"]["grooves"]["value"].get<double>(), 1.0);
   EXPECT_THAT(j["results"]["mu_final"]["description"].get<std::string>(), HasSubstr("last 5 %"));
   const std::string csv = slurp(work / "pod" / "friction.csv");
-  EXPECT_THAT(csv, HasSubstr("distance_m,friction,friction_moving_average,"));
-  EXPECT_THAT(csv, HasSubstr("moving mean over 0.003 m"));  // a twentieth of 0.06 m without a tilt
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "distance_m,friction,friction_moving_average,pin_wear_m3,disc_wear_m3,contact_fraction,layer_share,grooves")
+      << "one header line, then rows (pandas.read_csv reads it as is)";
+  const auto notes = nlohmann::json::parse(slurp(work / "pod" / "friction.csv.json"));
+  EXPECT_EQ(notes["rows"].get<std::size_t>(), static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')) - 1);
+  EXPECT_THAT(notes["notes"].dump(), HasSubstr("moving mean over 0.003 m"));  // a twentieth of 0.06 m without a tilt
   EXPECT_THAT(slurp(work / "pod" / "disc_profile.csv"), HasSubstr("x_m,worn_depth_m,through_layer"));
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -158,7 +159,7 @@ TEST(HalfSpace, TwoShearedCirclesFollow444) {
   HalfSpace body(grid, 1.0, nu);
   const double g = body.shear_modulus();
   for (double theta : {0.0, pi / 2}) {
-    double previous = INFINITY;
+    double previous = std::numeric_limits<double>::infinity();
     for (double l_over_d : {1.0, 1.5, 2.0, 4.0}) {
       const double l = l_over_d * d;
       VectorField p(grid), u(grid);

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,7 +15,6 @@
 #include <fmt/format.h>
 
 #include "wearscale/bem/topography_io.hpp"
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "xdmf_check.hpp"
@@ -57,17 +55,14 @@ std::string rejection(const fs::path& file, const TopographySize& size = {1.0, 1
 }
 }  // namespace
 
-TEST(TopographyIo, TextGridWrittenByWriteCsvReadsBack) {
-  // write_csv: "# ..." comments, a header row of names, rows i, columns j (10 digits).
+TEST(TopographyIo, TextGridWithSizeCommentsAndAHeaderRowReadsBack) {
+  // "# ..." size comments, a header row of names, rows i, columns j (10 digits).
   const Grid2D g(6, 4, 2e-3, 1e-3);
   const RealField h = sample(g);
-  std::vector<std::vector<double>> columns(g.ny, std::vector<double>(g.nx));
+  std::string text = "# lx = 2e-3\n# ly = 1 mm\n# heights in m\ny0,y1,y2,y3\n";
   for (std::size_t i = 0; i < g.nx; ++i)
-    for (std::size_t j = 0; j < g.ny; ++j) columns[j][i] = h(i, j);
-  const auto path = scratch("grid.csv");
-  write_csv(path, {"y0", "y1", "y2", "y3"}, {columns[0], columns[1], columns[2], columns[3]},
-            {"lx = 2e-3", "ly = 1 mm", "heights in m"});
-  const RealField back = read_topography(path);
+    for (std::size_t j = 0; j < g.ny; ++j) text += fmt::format("{:.10g}{}", h(i, j), j + 1 < g.ny ? "," : "\n");
+  const RealField back = read_topography(write_text("grid.csv", text));
   ASSERT_EQ(back.grid(), g);
   for (std::size_t k = 0; k < h.size(); ++k) ASSERT_NEAR(back[k], h[k], 1e-15);  // 10 significant digits of ~1e-6
 }

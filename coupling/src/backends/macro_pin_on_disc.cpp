@@ -162,7 +162,9 @@ class MacroPinOnDisc final : public Scale {
       samples.push_back(x);
       progress.update(x.distance * 1e3);
       if (fields_every_ > 0 && n++ % fields_every_ == 0) {
-        snapshots.push_back(snapshot(model, fmt::format("/macro/fields/{:08.4f}", x.distance)));
+        // Numbered, not named by distance: two snapshots closer than any printed
+        // precision would otherwise share a group. The distance is an attribute.
+        snapshots.push_back(snapshot(model, fmt::format("/macro/fields/{:06d}", snapshots.size())));
         write_fields(ctx, model.grid(), snapshots.back(), &series);
       }
     };

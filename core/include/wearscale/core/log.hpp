@@ -12,6 +12,9 @@ enum class Level { Quiet = 0, Normal = 1, Verbose = 2 };
 void set_level(Level level);
 Level level();
 void write(Level at_least, std::string_view prefix, std::string_view message);
+/// A progress line is drawn on stderr (without a newline): the next message
+/// clears it first, so that it starts on a clean line.
+void set_status_line(bool drawn);
 
 template <class... A>
 void info(fmt::format_string<A...> f, A&&... a) { write(Level::Normal, "", fmt::format(f, std::forward<A>(a)...)); }

@@ -27,10 +27,18 @@ class Progress {
   void finish();
 
   bool enabled() const { return enabled_; }
-  double rate() const;          ///< units per second so far
+  double rate() const;          ///< units per second so far (0 before any progress)
   double eta_seconds() const;   ///< estimated seconds left (NaN before any progress)
-  /// The line that would be drawn now, e.g. "pin-on-disc  42% 12.5 steps/s ETA 1m05s".
+  /// The line that would be drawn now, e.g. "pin-on-disc  42% 12.5 steps/s ETA 1m05s";
+  /// rate and ETA read "--" until a unit of work has been done and half a
+  /// second has passed (the first rate would otherwise include the setup).
   std::string line() const;
+
+  /// `text` cut to at most `columns` characters (UTF-8 code points), so
+  /// that a line never wraps on a narrow terminal.
+  static std::string fit_to_width(const std::string& text, std::size_t columns);
+  /// The width of the terminal on stderr (80 when it cannot be read).
+  static std::size_t terminal_columns();
 
   /// Whether a new reporter would draw: stderr is a TTY, CI is unset and the log level is not quiet.
   static bool terminal_is_interactive();

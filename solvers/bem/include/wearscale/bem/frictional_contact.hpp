@@ -44,6 +44,7 @@
 // Convergence is measured by the cost (A.14), see FrictionalResult::error.
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -129,7 +130,7 @@ class FrictionalContact {
   struct Iterate {  // carried from one iteration to the next
     double rn_old = 0.0, rt_old = 0.0;  // Σ d² of the normal and tangential gradients
     bool conjugate_n = false, conjugate_t = false;  // false restarts that block's steepest descent
-    double bound_change = 1.0, best_change = INFINITY;  // relative change of the friction bound
+    double bound_change = 1.0, best_change = std::numeric_limits<double>::infinity();  // relative change of the friction bound
     int restarts = 0, stalled = 0;  // tangential restarts; bound updates without progress
     bool settled = false;           // the bound is kept (see the header)
     double first_error = 0.0;
