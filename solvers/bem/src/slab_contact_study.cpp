@@ -1,5 +1,7 @@
 #include "wearscale/bem/slab_contact_study.hpp"
 
+#include <memory>
+
 #include <fmt/format.h>
 
 #include "contact_case.hpp"
@@ -12,10 +14,13 @@
 namespace wearscale::bem {
 
 namespace {
-// Peak memory per grid point of the slab study, summed over the ranks
-// (measured at 4096², P = 2: see docs/bem.md), and what rank 0 adds to gather
-// the four fields and find the micro-contacts.
-constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 64.0;
+// Memory per grid point of the slab study, summed over the ranks (measured
+// during the solve at 4096², P = 2: 0.65–0.68 GiB per rank for its 8.4
+// million points, 83 B per point; docs/bem.md) with a margin, and what rank 0
+// adds to gather the four fields, find the micro-contacts and write them
+// (measured there: about 88 B per grid point with its slab still allocated,
+// which is now freed first).
+constexpr double kBytesPerPoint = 100.0, kGatherBytesPerPoint = 88.0;
 
 // The whole field on rank 0 (an empty one elsewhere) from every rank's rows.
 RealField gathered(const RealField& slab, const Grid2D& g) {
@@ -65,12 +70,14 @@ nlohmann::json run_slab_contact_study(const Config& config, const std::filesyste
   if (rough) h = add(h, generate_surface_slab(spectrum.spec, spectrum.measure, spectrum.target, fft));
   if (cap) h = add(h, sphere_rows(g, first, rows, radius, 0.5 * g.lx, 0.5 * g.ly));
   const double hprime = gather ? 0.0 : roughness_slab(h, g, RoughnessMeasure::HPrimeRms, fft);
-  NormalContact contact(std::move(body), h, normal.e_star);
-  const ContactResult r = normal.solve(contact);
+  auto contact = std::make_unique<NormalContact>(std::move(body), h, normal.e_star);
+  const ContactResult r = normal.solve(*contact);
 
   if (gather) {
-    const RealField whole_h = gathered(h, g), p = gathered(contact.pressure(), g);
-    const RealField gap = gathered(contact.gap(), g), u = gathered(contact.displacement(), g);
+    const RealField whole_h = gathered(h, g), p = gathered(contact->pressure(), g);
+    const RealField gap = gathered(contact->gap(), g), u = gathered(contact->displacement(), g);
+    contact.reset();  // the slabs are gathered: rank 0 writes from the whole fields alone
+    h = RealField();
     if (!mpi::is_root()) return nullptr;
     return write_normal_study(config, normal, whole_h, p, gap, u, r, out);
   }
