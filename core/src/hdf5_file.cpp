@@ -11,6 +11,8 @@
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/utc_time.hpp"
+#include "wearscale/core/version.hpp"
 #include "hdf5_lock.hpp"
 
 namespace wearscale {
@@ -197,6 +199,10 @@ H5Writer::H5Writer(std::filesystem::path final_path, Commit mode) : final_(std::
     std::filesystem::remove(partial_, ec);
     throw std::runtime_error("HDF5: cannot create " + partial_.string());
   }
+  // Provenance on every file (the mutex is recursive).
+  set_attribute("/", "wearscale_version", version());
+  set_attribute("/", "created", utc_now());
+  if (const std::string rev = git_revision(); !rev.empty()) set_attribute("/", "git_revision", rev);
 }
 
 H5Writer::~H5Writer() {

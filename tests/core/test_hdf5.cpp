@@ -18,6 +18,7 @@
 #include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/version.hpp"
 
 using namespace wearscale;
 namespace fs = std::filesystem;
@@ -64,6 +65,24 @@ TEST(HDF5, SeriesTableFieldAndAttributesReadBack) {
   for (std::size_t k = 0; k < p.size(); ++k) ASSERT_EQ(q[k], p[k]);
   EXPECT_FALSE(r.exists("/fields/gap"));
   EXPECT_FALSE(r.exists("/nothing/here"));
+  fs::remove_all(path.parent_path());
+}
+
+// Whatever writes it (a run, a contact study, a wear map, a generated
+// surface), a file says which wearscale made it, from which revision and when.
+TEST(HDF5, EveryFileCarriesTheVersionTheRevisionAndItsCreationTime) {
+  const auto path = scratch("provenance.h5");
+  {
+    H5Writer w(path);
+    w.write_scalar("/x", 1.0);
+    w.commit();
+  }
+  H5Reader r(path);
+  EXPECT_EQ(r.string_attribute("/", "wearscale_version"), version());
+  EXPECT_THAT(r.string_attribute("/", "created"),
+              ::testing::MatchesRegex("20[0-9][0-9]-[01][0-9]-[0-3][0-9]T[0-2][0-9]:[0-5][0-9]:[0-6][0-9]Z"));
+  EXPECT_EQ(r.string_attribute_if("/", "git_revision").value_or(""), git_revision())
+      << "the revision when built from git, no attribute otherwise";
   fs::remove_all(path.parent_path());
 }
 

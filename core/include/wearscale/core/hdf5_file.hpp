@@ -37,6 +37,8 @@ class H5Writer {
  public:
   /// Starts writing `final_path` (a placeholder temporary file is created
   /// beside it at once, so an unwritable folder fails here, before any work).
+  /// Every file carries the root attributes `wearscale_version`, `created`
+  /// (UTC) and, when built from git, `git_revision`.
   explicit H5Writer(std::filesystem::path final_path, Commit mode = Commit::WithItsSet);
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
