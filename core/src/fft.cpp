@@ -15,17 +15,13 @@ namespace wearscale {
 namespace detail {
 void* aligned_alloc_fftw(std::size_t bytes) { return fftw_malloc(bytes); }
 void aligned_free_fftw(void* p) noexcept { fftw_free(p); }
-}  // namespace detail
-
-namespace {
 // FFTW's planner is not thread-safe; every plan creation/destruction and
-// wisdom access goes through this lock. Execution needs no lock.
-std::mutex& planner_mutex() {
+// wisdom access (serial or MPI plans) goes through this lock. Execution needs no lock.
+std::mutex& fftw_planner_mutex() {
   static std::mutex m;
   return m;
 }
-
-unsigned flags_of(PlanRigor r) {
+unsigned fftw_flags(PlanRigor r) {
   switch (r) {
     case PlanRigor::Estimate: return FFTW_ESTIMATE;
     case PlanRigor::Measure: return FFTW_MEASURE;
@@ -33,6 +29,11 @@ unsigned flags_of(PlanRigor r) {
   }
   return FFTW_ESTIMATE;
 }
+}  // namespace detail
+
+namespace {
+std::mutex& planner_mutex() { return detail::fftw_planner_mutex(); }
+unsigned flags_of(PlanRigor r) { return detail::fftw_flags(r); }
 
 fftw_complex* as_fftw(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
 }  // namespace

@@ -1,5 +1,6 @@
 #include "wearscale/core/mpi.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
@@ -118,6 +119,28 @@ double max(double local) {
   }
 #endif
   return local;
+}
+
+void gather(std::span<const double> local, std::span<double> all) {
+#ifdef WEARSCALE_MPI
+  if (g_active && g_size > 1) {
+    const int n = static_cast<int>(local.size());
+    std::vector<int> counts(static_cast<std::size_t>(g_size)), offsets(static_cast<std::size_t>(g_size));
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    long long total = 0;
+    for (int r = 0; r < g_size; ++r) {
+      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
+      total += counts[static_cast<std::size_t>(r)];
+    }
+    if (g_rank == 0 && total != static_cast<long long>(all.size()))
+      throw std::invalid_argument("mpi::gather: the ranks' values do not fill the destination");
+    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+                MPI_COMM_WORLD);
+    return;
+  }
+#endif
+  if (all.size() != local.size()) throw std::invalid_argument("mpi::gather: the values do not fill the destination");
+  std::copy(local.begin(), local.end(), all.begin());
 }
 
 }  // namespace wearscale::mpi

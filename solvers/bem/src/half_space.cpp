@@ -68,6 +68,18 @@ double cell_yz(const Cell& c, double g, double nu) {
 }
 }  // namespace
 
+double HalfSpace::normal_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star) {
+  const double s = 2.0 / (e_star * static_cast<double>(g.size()));  // (2.39), 1/N folded in
+  const double qx = g.wavenumber_x(i), qy = g.wavenumber_y(j);
+  const double q = std::sqrt(qx * qx + qy * qy);
+  return q > 0.0 ? s / q : 0.0;
+}
+
+double HalfSpace::stiffness_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star) {
+  const double scale = 0.5 * e_star / static_cast<double>(g.size());
+  return scale * std::hypot(g.wavenumber_x(i), g.wavenumber_y(j));
+}
+
 const char* to_string(Boundary b) { return b == Boundary::Periodic ? "periodic" : "free"; }
 
 HalfSpace::HalfSpace(const Grid2D& grid, double young, double poisson, Boundary boundary, Response response)
@@ -106,11 +118,8 @@ HalfSpace::HalfSpace(const Grid2D& grid, double young, double poisson, double sh
     self_compliance_ = hermitian_sum<double>(fft_grid_, [&](std::size_t m, double w, double& s) { s += w * zz_[m]; });
     stiffness_.assign(modes, 0.0);
     const double e_star = e_star_normal > 0.0 ? e_star_normal : contact_modulus();
-    const double scale = 0.5 * e_star / static_cast<double>(fft_grid_.size());
     const Grid2D& f = fft_grid_;
-    for_each_mode(f, [&](std::size_t i, std::size_t j, std::size_t m) {
-      stiffness_[m] = scale * std::hypot(f.wavenumber_x(i), f.wavenumber_y(j));
-    });
+    for_each_mode(f, [&](std::size_t i, std::size_t j, std::size_t m) { stiffness_[m] = stiffness_mode(f, i, j, e_star); });
     stiffness_diagonal_ =
         hermitian_sum<double>(fft_grid_, [&](std::size_t m, double w, double& s) { s += w * stiffness_[m]; });
   }
@@ -121,12 +130,8 @@ void HalfSpace::build_periodic_kernel(double e_star_normal) {
   const Grid2D& g = grid_;
   const double inv_n = 1.0 / static_cast<double>(g.size());
   if (response_ == Response::Normal) {  // (2.39) with E*, 1/N folded in
-    const double s = 2.0 / ((e_star_normal > 0.0 ? e_star_normal : contact_modulus()) * static_cast<double>(g.size()));
-    for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t m) {
-      const double qx = g.wavenumber_x(i), qy = g.wavenumber_y(j);
-      const double q = std::sqrt(qx * qx + qy * qy);
-      zz_[m] = q > 0.0 ? s / q : 0.0;
-    });
+    const double e_star = e_star_normal > 0.0 ? e_star_normal : contact_modulus();
+    for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t m) { zz_[m] = normal_mode(g, i, j, e_star); });
     return;
   }
   const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;

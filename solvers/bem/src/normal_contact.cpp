@@ -17,30 +17,67 @@ namespace wearscale::bem {
 namespace {
 constexpr const char* kSolver = "bem/normal-contact (Polonsky–Keer)";
 constexpr std::size_t kHistory = 12;
-}  // namespace
 
-NormalContact::NormalContact(const RealField& surface, double e_star, Boundary boundary)
-    : h_(surface), p_(surface.grid()), u_(surface.grid()), t_(surface.grid()), gap_(surface.grid()),
-      body_(HalfSpace::normal(surface.grid(), e_star > 0.0 && std::isfinite(e_star) ? e_star : 1.0, boundary)),
-      work_(body_.workspace()), e_star_(e_star) {
-  const Grid2D& g = surface.grid();
+double valid_modulus(double e_star) {
   if (!(e_star > 0.0) || !std::isfinite(e_star))
     throw InputError(fmt::format("normal contact: E* = {} is not allowed; allowed: E* > 0", e_star));
+  return e_star;
+}
+
+std::unique_ptr<NormalOperator> serial_body(const Grid2D& g, double e_star, Boundary boundary) {
+  valid_modulus(e_star);
   if (g.nx < 2 || g.ny < 2) throw InputError("normal contact: the grid needs at least 2×2 points");
+  return std::make_unique<HalfSpaceNormal>(g, e_star, boundary);
+}
+}  // namespace
+
+template <class... T>
+void NormalContact::sum(T&... values) const {
+  double v[] = {values...};
+  body_->sum(v);
+  std::size_t k = 0;
+  ((values = v[k++]), ...);
+}
+
+NormalContact::NormalContact(const RealField& surface, double e_star, Boundary boundary)
+    : NormalContact(serial_body(surface.grid(), e_star, boundary), surface, e_star) {
+  serial_ = &static_cast<const HalfSpaceNormal&>(*body_).half_space();
+}
+
+NormalContact::NormalContact(std::unique_ptr<NormalOperator> body, const RealField& surface, double e_star)
+    : body_(std::move(body)), h_(surface), p_(surface.grid()), u_(surface.grid()), t_(surface.grid()),
+      gap_(surface.grid()), e_star_(valid_modulus(e_star)) {
+  if (!(surface.grid() == body_->local_grid()))
+    throw std::invalid_argument("NormalContact: the surface is not on the rows the body holds");
   set_surface(surface);
+}
+
+const HalfSpace& NormalContact::half_space() const {
+  if (serial_ == nullptr) throw std::logic_error("NormalContact::half_space: not a serial body");
+  return *serial_;
 }
 
 void NormalContact::set_surface(const RealField& surface) {
   if (!(surface.grid() == h_.grid())) throw std::invalid_argument("NormalContact::set_surface: grid changed");
   h_ = surface;
-  double max = -std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity(), bad = 0.0;
   for (double v : h_) {
-    if (!std::isfinite(v)) throw InputError("normal contact: the surface has a NaN or infinite height");
+    bad += std::isfinite(v) ? 0.0 : 1.0;
     max = std::max(max, v);
   }
-  h_rms_ = h_rms(h_);  // the scale of the convergence measure
+  sum(bad);  // every process refuses alike
+  if (bad > 0.0) throw InputError("normal contact: the surface has a NaN or infinite height");
+  // h_rms, the scale of the convergence measure: (1.5), the sums in storage order (as roughness.hpp's).
+  double total = 0.0;
+  for (const double v : h_) total += v;
+  sum(total);
+  const double mean = total / points();
+  double squares = 0.0;
+  for (const double v : h_) squares += (v - mean) * (v - mean);
+  sum(squares);
+  h_rms_ = std::sqrt(squares / points());
   if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
-  h_max_ = max;
+  h_max_ = body_->max(max);
 }
 
 void NormalContact::reset() { p_.fill(0.0); }
@@ -63,21 +100,22 @@ NormalContact::ContactGap NormalContact::measure_gap(int iteration) const {
   const std::size_t n = h_.size();
   const double *p = p_.data(), *u = u_.data(), *t = t_.data(), *h = h_.data();
   const double shift = gap_shift_;
-  double n_s = 0.0, sum = 0.0, sum2 = 0.0, t_old_sum = 0.0;
-#pragma omp parallel for simd reduction(+ : n_s, sum, sum2, t_old_sum) schedule(static)
+  double n_s = 0.0, sum1 = 0.0, sum2 = 0.0, t_old_sum = 0.0;
+#pragma omp parallel for simd reduction(+ : n_s, sum1, sum2, t_old_sum) schedule(static)
   for (std::size_t k = 0; k < n; ++k) {
     const double in = p[k] > 0.0 ? 1.0 : 0.0;
     const double d = (u[k] - h[k] - shift) * in;
     n_s += in;
-    sum += d;
+    sum1 += d;
     sum2 += d * d;
     t_old_sum += t[k] * in;
   }
+  sum(n_s, sum1, sum2, t_old_sum);
   if (n_s == 0.0) throw NumericalError(kSolver, iteration, "contact area", "the contact vanished (no point with p > 0)");
   ContactGap gap;
   gap.points = n_s;
-  gap.mean = shift + sum / n_s;
-  gap.norm2 = sum2 - sum * sum / n_s;
+  gap.mean = shift + sum1 / n_s;
+  gap.norm2 = sum2 - sum1 * sum1 / n_s;
   gap.direction_mean = t_old_sum / n_s;
   if (!(gap.norm2 > 64.0 * std::numeric_limits<double>::epsilon() * sum2)) {
     // The shift was far from the mean: the sums cancelled. Recompute exactly.
@@ -88,6 +126,7 @@ NormalContact::ContactGap NormalContact::measure_gap(int iteration) const {
       const double d = p[k] > 0.0 ? u[k] - h[k] - g_mean : 0.0;
       g_norm += d * d;
     }
+    sum(g_norm);
     gap.norm2 = g_norm;
   }
   return gap;
@@ -113,6 +152,7 @@ NormalContact::Descent NormalContact::search_direction(const ContactGap& gap, do
     gt += g * tk;
     penetrating += (!in && g < 0.0) ? 1.0 : 0.0;
   }
+  sum(err_num, p_sum, gt, penetrating);
   return {err_num / (p_sum * h_rms_), gt, penetrating > 0.0};
 }
 
@@ -132,6 +172,7 @@ NormalContact::Descent NormalContact::residual(const ContactGap& gap) {
     p_sum += p[k];
     penetrating += (!in && g < 0.0) ? 1.0 : 0.0;
   }
+  sum(err_num, p_sum, penetrating);
   return {err_num / (p_sum * h_rms_), 0.0, penetrating > 0.0};
 }
 
@@ -150,6 +191,7 @@ void NormalContact::preconditioned_direction(const ContactGap& gap, Iterate& sta
     rz += r[k] * z[k];  // r = 0 off S
     r_sum += r[k];
   }
+  sum(z_sum, rz, r_sum);
   const double z_mean = z_sum / gap.points;
   rz -= z_mean * r_sum;  // Σ_S r (z − z̄)
   const double beta = state.conjugate && state.residual_old > 0.0 ? rz / state.residual_old : 0.0;
@@ -162,17 +204,18 @@ void NormalContact::preconditioned_direction(const ContactGap& gap, Iterate& sta
     t[k] = tk;
     slope += r[k] * tk;
   }
+  sum(slope);
   d.slope = slope;
 }
 
 // Step length τ = Σ g t / Σ t (K t) (+ t A t with an added compliance), the denominator by Parseval from the
 // spectrum of t: one forward FFT instead of a full convolution.
 double NormalContact::step_length(const Descent& d, int iteration) {
-  const double tkt = body_.normal_form(t_, work_) + (added_ != nullptr ? added_->quadratic_form(t_) : 0.0);
+  const double tkt = body_->form(t_) + (added_ != nullptr ? added_->quadratic_form(t_) : 0.0);
   // No descent direction (a contact of one point, or a flat gap on S) while
   // points outside still penetrate: admit them with a cell's own stiffness.
   const double tau =
-      (tkt == 0.0 && d.slope == 0.0) ? 1.0 / (readmit_stiffness_ * body_.self_compliance()) : d.slope / tkt;
+      (tkt == 0.0 && d.slope == 0.0) ? 1.0 / (readmit_stiffness_ * body_->self_compliance()) : d.slope / tkt;
   if (!std::isfinite(tau) || !(tkt > 0.0 || d.slope == 0.0))
     throw NumericalError(kSolver, iteration, "step length", fmt::format("τ = {} (t·Kt = {})", tau, tkt));
   return tau;
@@ -195,9 +238,10 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
     p[k] = pk;
     new_sum += pk;
   }
+  sum(overlap, new_sum);
   state.conjugate = overlap == 0.0;
   if (!(new_sum > 0.0)) throw NumericalError(kSolver, iteration, "pressure", "all pressures vanished");
-  state.alpha = p0 * static_cast<double>(n) / new_sum;  // impose ⟨p⟩ = p0 (A.6c)
+  state.alpha = p0 * points() / new_sum;  // impose ⟨p⟩ = p0 (A.6c)
 }
 
 ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions& opt) {
@@ -207,7 +251,7 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
 }
 
 void NormalContact::check_window() const {
-  if (body_.boundary() != Boundary::Free) return;
+  if (body_->boundary() != Boundary::Free) return;  // (the slab body is periodic)
   const Grid2D& g = grid();
   bool edge = false;
   for (std::size_t i = 0; i < g.nx && !edge; ++i) edge = p_(i, 0) > 0.0 || p_(i, g.ny - 1) > 0.0;
@@ -225,7 +269,6 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
     throw InputError(fmt::format("normal contact: mean pressure {} is not allowed; allowed: ≥ 0", p0));
   if (!(opt.tolerance > 0.0)) throw InputError("normal contact: the tolerance must be > 0");
   history_.clear();
-  const std::size_t n = h_.size();
   if (p0 == 0.0) {
     p_.fill(0.0);
     u_.fill(0.0);
@@ -235,7 +278,8 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   Iterate state;
   double mean = 0.0;
   for (double v : p_) mean += v;
-  mean /= static_cast<double>(n);
+  sum(mean);
+  mean /= points();
   if (mean > 0.0 && std::isfinite(mean))
     state.alpha = p0 / mean;
   else
@@ -243,11 +287,11 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   t_.fill(0.0);
 
   const bool preconditioned = opt.method == ContactMethod::PreconditionedCG;
-  if (preconditioned && z_.size() != n) z_ = RealField(grid());
-  readmit_stiffness_ = preconditioned ? body_.normal_stiffness_diagonal() : 1.0;
+  if (preconditioned && !(z_.grid() == h_.grid())) z_ = RealField(h_.grid());
+  readmit_stiffness_ = preconditioned ? body_->stiffness_diagonal() : 1.0;
   double first_error = 0.0;
   for (int it = 0; it < opt.max_iterations; ++it) {
-    body_.normal_displacement(p_, u_, work_, state.alpha);  // u = K (α p)
+    body_->displacement(p_, u_, state.alpha);  // u = K (α p)
     if (added_ != nullptr) added_->add(p_, state.alpha, u_);  // + A (α p)
     const ContactGap gap = measure_gap(it);
     gap_shift_ = gap.mean;  // the last mean gap: carried across solves (warm start)
@@ -268,7 +312,7 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
       return finish(it, descent.error, gap.mean);
     }
     if (preconditioned) {
-      body_.normal_stiffness(gap_, z_, work_);  // z = S r
+      body_->stiffness(gap_, z_);  // z = S r
       preconditioned_direction(gap, state, descent);
     } else {
       state.residual_old = gap.norm2;
@@ -291,11 +335,12 @@ ContactResult NormalContact::finish(int iterations, double error, double g_mean)
     contact += p_[k] > 0.0 ? 1.0 : 0.0;
     work += p_[k] * u_[k];
   }
+  sum(p_sum, contact, work);
   ContactResult r;
   r.iterations = iterations;
   r.error = error;
-  r.mean_pressure = p_sum / static_cast<double>(n);
-  r.contact_fraction = contact / static_cast<double>(n);
+  r.mean_pressure = p_sum / points();
+  r.contact_fraction = contact / points();
   r.interference = h_max_ + g_mean;
   r.elastic_energy = 0.5 * work * grid().cell_area();
   return r;

@@ -87,10 +87,14 @@ const char* name(RoughnessMeasure measure) {
 }
 
 void rescale(RealField& h, RoughnessMeasure measure, double target) {
+  rescale(h, measure, target, [&] { return roughness(h, measure); });
+}
+
+void rescale(RealField& h, RoughnessMeasure measure, double target, const std::function<double()>& current_value) {
   if (!std::isfinite(target) || target <= 0.0)
     throw InputError(fmt::format("rescale: target {} = {:g} is not allowed; allowed: > 0 (finite)", name(measure),
                                  target));
-  const double current = roughness(h, measure);
+  const double current = current_value();
   if (!std::isfinite(current) || current <= 0.0)
     throw InputError(fmt::format("rescale: the surface has {} = {:g} (flat or not finite), so it cannot be scaled to {:g}",
                                  name(measure), current, target));

@@ -4,6 +4,8 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -62,37 +64,65 @@ double target_psd(const RoughSurfaceSpec& s, double k) {
   return std::pow(k / s.k_r, -2.0 * (s.hurst + 1.0));              // C ∝ q^β, β = −2(H+1)  (1.10)
 }
 
-RealField generate_surface(const RoughSurfaceSpec& s) {
+void rough_spectrum(const RoughSurfaceSpec& s, std::size_t first, std::size_t rows, std::complex<double>* out) {
   validate(s);
   const Grid2D& g = s.grid;
+  if (first + rows > g.nx) throw std::invalid_argument("rough_spectrum: rows beyond the grid");
   const double n = static_cast<double>(g.size());
   const double a = g.area() / (n * n);  // A = LxLy/(nx²ny²)   (1.9)
   const std::size_t cols = g.spectral_ny();
-  ComplexField spectrum = ComplexField::spectrum_of(g);
-  std::mt19937_64 rng(s.seed);
+  auto mode = [&](std::size_t i, std::size_t j, double u) {
+    const double amplitude = std::sqrt(target_psd(s, radial_wavenumber(g, i, j)) / a);  // |ĥ| = √(C/A)  (1.9)
+    return std::polar(amplitude, 2.0 * std::numbers::pi * u);
+  };
   // One phase per r2c mode, in storage order, whether used or not: the seed
-  // alone fixes the surface.
-  for (std::size_t i = 0; i < g.nx; ++i)
-    for (std::size_t j = 0; j < cols; ++j) {
-      const double phase = 2.0 * std::numbers::pi * uniform01(rng);
-      const double amplitude = std::sqrt(target_psd(s, radial_wavenumber(g, i, j)) / a);  // |ĥ| = √(C/A)  (1.9)
-      spectrum(i, j) = std::polar(amplitude, phase);
-    }
+  // alone fixes the surface. A slab of rows starts `first` rows into the stream.
+  std::mt19937_64 rng(s.seed);
+  rng.discard(static_cast<unsigned long long>(first * cols));
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < cols; ++j) out[i * cols + j] = mode(first + i, j, uniform01(rng));
   // Columns that are their own mirror image (j = 0, and j = ny/2 for even ny)
   // hold both ĥ(kx, ky) and ĥ(−kx, ky) = conj ĥ(kx, −ky): make them conjugate,
-  // and the self-conjugate modes real (a random sign keeps |ĥ|).
-  for (std::size_t j = 0; j < cols; ++j) {
-    if (mode_multiplicity(g, j) != 1.0) continue;
-    for (std::size_t i = 0; i < g.nx; ++i) {
-      const std::size_t mirror = (g.nx - i) % g.nx;
-      if (mirror == i) {
-        const auto z = spectrum(i, j);
-        spectrum(i, j) = std::abs(z) * (z.real() >= 0.0 ? 1.0 : -1.0);
-      } else if (mirror < i) {
-        spectrum(i, j) = std::conj(spectrum(mirror, j));
+  // and the self-conjugate modes real (a random sign keeps |ĥ|). Mirror rows
+  // outside the slab are drawn again from their place in the stream.
+  std::vector<std::size_t> mirrored;
+  for (std::size_t j = 0; j < cols; ++j)
+    if (mode_multiplicity(g, j) == 1.0) mirrored.push_back(j);
+  // The mirror rows before the slab, [lo, first): ascending, so one generator walks to them.
+  const std::size_t last = first + rows;  // rows i ≥ nx − first have mirrors nx − i < first... (i > 0)
+  const std::size_t lo = last > 0 && last < g.nx ? g.nx - last + 1 : 1;
+  std::vector<std::complex<double>> before;  // mode (m, mirrored[c]) at (m − lo)·|mirrored| + c
+  if (rows > 0 && lo < first) {
+    std::mt19937_64 walk(s.seed);
+    std::size_t at = 0;  // stream position of the next draw
+    before.reserve((first - lo) * mirrored.size());
+    for (std::size_t m = lo; m < first; ++m)
+      for (const std::size_t j : mirrored) {
+        walk.discard(static_cast<unsigned long long>(m * cols + j - at));
+        before.push_back(mode(m, j, uniform01(walk)));
+        at = m * cols + j + 1;
       }
+  }
+  for (std::size_t i = first; i < last; ++i) {
+    const std::size_t mirror = (g.nx - i) % g.nx;
+    if (mirror > i) continue;
+    for (std::size_t c = 0; c < mirrored.size(); ++c) {
+      auto& z = out[(i - first) * cols + mirrored[c]];
+      if (mirror == i)
+        z = std::abs(z) * (z.real() >= 0.0 ? 1.0 : -1.0);
+      else if (mirror >= first)
+        z = std::conj(out[(mirror - first) * cols + mirrored[c]]);
+      else
+        z = std::conj(before[(mirror - lo) * mirrored.size() + c]);
     }
   }
+}
+
+RealField generate_surface(const RoughSurfaceSpec& s) {
+  const Grid2D& g = s.grid;
+  validate(s);
+  ComplexField spectrum = ComplexField::spectrum_of(g);
+  rough_spectrum(s, 0, g.nx, spectrum.data());
   RealField h(g);
   FFTPlanCache::global().plan(g)->backward(spectrum, h);  // (1.8)
   return h;
@@ -105,17 +135,22 @@ RealField generate_surface(const RoughSurfaceSpec& spec, RoughnessMeasure measur
 }
 
 RealField sphere(const Grid2D& grid, double radius, double cx, double cy) {
+  return sphere_rows(grid, 0, grid.nx, radius, cx, cy);
+}
+
+RealField sphere_rows(const Grid2D& grid, std::size_t first, std::size_t rows, double radius, double cx, double cy) {
   if (!(std::isfinite(radius) && radius > 0.0))
     throw InputError::at_key("sphere", "radius", num(radius), "the radius must be a positive length", "> 0 m");
   if (!std::isfinite(cx) || !std::isfinite(cy))
     throw InputError::at_key("sphere", "centre", fmt::format("({:g}, {:g})", cx, cy), "not finite", "finite lengths");
-  RealField h(grid);
+  if (first + rows > grid.nx) throw std::invalid_argument("sphere_rows: rows beyond the grid");
+  RealField h(grid.slab(rows));
   // Nearest periodic image: the offset folded into [−L/2, L/2).
   auto fold = [](double d, double l) { return d - l * std::floor(d / l + 0.5); };
   const double r2_max = radius * radius;
 #pragma omp parallel for
-  for (std::size_t i = 0; i < grid.nx; ++i) {
-    const double dx = fold(grid.x(i) - cx, grid.lx);
+  for (std::size_t i = 0; i < rows; ++i) {
+    const double dx = fold(grid.x(first + i) - cx, grid.lx);
     for (std::size_t j = 0; j < grid.ny; ++j) {
       const double dy = fold(grid.y(j) - cy, grid.ly);
       const double r2 = dx * dx + dy * dy;

@@ -16,6 +16,13 @@ namespace wearscale {
 /// How hard FFTW searches for a fast plan (FFTW_ESTIMATE / FFTW_MEASURE / FFTW_PATIENT).
 enum class PlanRigor { Estimate, Measure, Patient };
 
+namespace detail {
+/// The lock every FFTW planner call takes (serial and MPI plans alike).
+std::mutex& fftw_planner_mutex();
+/// FFTW's planner flags for a rigor.
+unsigned fftw_flags(PlanRigor r);
+}  // namespace detail
+
 /// A forward (r2c) and backward (c2r) transform pair for one nx × ny shape.
 /// Thread-safe to execute concurrently on different fields.
 class FFTPlan {

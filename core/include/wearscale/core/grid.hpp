@@ -20,6 +20,11 @@ struct Grid2D {
   static Grid2D square(std::size_t n, double l) { return {n, n, l, l}; }
 
   std::size_t size() const { return nx * ny; }
+  /// The grid of `rows` consecutive rows of this one (same spacing): a slab of
+  /// a grid distributed over ranks. slab(nx) is the grid itself.
+  Grid2D slab(std::size_t rows) const {
+    return rows == nx ? *this : Grid2D(rows, ny, dx() * static_cast<double>(rows), ly);
+  }
   double dx() const { return lx / static_cast<double>(nx); }
   double dy() const { return ly / static_cast<double>(ny); }
   double area() const { return lx * ly; }

@@ -42,4 +42,9 @@ void sum(std::span<double> values);
 long long sum(long long local);
 double max(double local);
 
+/// Gathers every rank's `local` values, in rank order, into `all` on rank 0
+/// (whose size must be the total; ignored on the other ranks): a field
+/// distributed in slabs of rows becomes the whole field on rank 0. Serial: a copy.
+void gather(std::span<const double> local, std::span<double> all);
+
 }  // namespace wearscale::mpi

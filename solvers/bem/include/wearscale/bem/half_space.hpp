@@ -132,6 +132,13 @@ class HalfSpace {
   static double cell_response(Block block, double di, double dj, double dx, double dy, double shear_modulus,
                               double poisson);
 
+  /// The periodic normal block of a rigid body on an elastic one at r2c mode
+  /// (i, j) of `g`, 1/N folded in: 2/(E* q N) (0 at q = 0); and its inverse,
+  /// the preconditioner E* q/(2N). Every body that holds these modes (whole or
+  /// in slabs) takes them from here.
+  static double normal_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star);
+  static double stiffness_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star);
+
   /// E_el = ½ ∫ p·u dA   (4.1)
   static double elastic_energy(const VectorField& traction, const VectorField& u);
   static double elastic_energy(const RealField& p, const RealField& u);

@@ -18,10 +18,12 @@
 // with g shifted so that its mean over the contact is zero and h_rms the RMS
 // of h about its mean (1 for a flat surface), must fall below `tolerance`
 // while no point outside the contact penetrates (g < 0 where p = 0).
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "wearscale/bem/half_space.hpp"
+#include "wearscale/bem/normal_operator.hpp"
 
 namespace wearscale::bem {
 
@@ -71,8 +73,15 @@ class NormalContact {
   /// pressure reaches the outermost ring of cells is refused (InputError: the
   /// window is too small for the contact).
   NormalContact(const RealField& surface, double e_star, Boundary boundary = Boundary::Periodic);
-  /// The elastic body, its normal block only (HalfSpace::normal).
-  const HalfSpace& half_space() const { return body_; }
+  /// The same solver on any body: `surface` holds the heights of the rows the
+  /// body holds here (body->local_grid()), and so do pressure(), gap() and
+  /// displacement(); sums go through body->sum. With a SlabHalfSpace every
+  /// rank of the job constructs it with its slab and calls the same solves.
+  NormalContact(std::unique_ptr<NormalOperator> body, const RealField& surface, double e_star);
+  /// The elastic body of the serial solver, its normal block only (HalfSpace::normal);
+  /// std::logic_error for another body.
+  const HalfSpace& half_space() const;
+  const NormalOperator& body() const { return *body_; }
 
   /// Replaces the rigid surface, keeping the last pressure as a warm start.
   void set_surface(const RealField& surface);
@@ -102,7 +111,8 @@ class NormalContact {
   /// Gap g = u − h + d, zero in the contact and ≥ 0 (to the tolerance) outside; valid after a solve.
   const RealField& gap() const { return gap_; }
   const RealField& surface() const { return h_; }
-  const Grid2D& grid() const { return h_.grid(); }
+  /// The whole grid (serial: the fields' grid; distributed: the fields hold rows of it).
+  const Grid2D& grid() const { return body_->grid(); }
   double e_star() const { return e_star_; }
   /// The last iterations' errors ε (for reports of slow convergence).
   const std::vector<double>& history() const { return history_; }
@@ -140,9 +150,14 @@ class NormalContact {
   // InputError if a free window's contact reaches its border.
   void check_window() const;
 
+  // Sums over every point held by any process, in place (the body's reduction).
+  template <class... T>
+  void sum(T&... values) const;
+  double points() const { return static_cast<double>(grid().size()); }
+
+  std::unique_ptr<NormalOperator> body_;
+  const HalfSpace* serial_ = nullptr;  // the serial body's half-space (half_space())
   RealField h_, p_, u_, t_, gap_, z_;  // z_: the preconditioned residual (empty unless used)
-  HalfSpace body_;
-  HalfSpace::Workspace work_;
   // The pressure a penetrating point is re-admitted with, per unit gap and step:
   // 1 (Polonsky–Keer) or S at offset 0 (preconditioned) [Pa/m].
   double readmit_stiffness_ = 1.0;

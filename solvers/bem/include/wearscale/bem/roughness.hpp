@@ -5,6 +5,8 @@
 //
 // Sa and h_RMS are taken about the mean height ⟨h⟩ (1.3), so they do not
 // depend on a constant offset of the surface.
+#include <functional>
+
 #include "wearscale/core/field.hpp"
 
 namespace wearscale::bem {
@@ -48,5 +50,8 @@ const char* name(RoughnessMeasure measure);
 /// `target` to round-off (all three measures are homogeneous of degree 1).
 /// InputError if the target is not finite and > 0, or if `h` is flat.
 void rescale(RealField& h, RoughnessMeasure measure, double target);
+/// The same with the current value of the measure from `current` (called after
+/// the target is checked): a surface distributed over ranks measures itself whole.
+void rescale(RealField& h, RoughnessMeasure measure, double target, const std::function<double()>& current);
 
 }  // namespace wearscale::bem

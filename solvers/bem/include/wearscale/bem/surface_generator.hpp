@@ -5,6 +5,8 @@
 //
 // Heights are in the length unit of the grid (metres). A surface is a
 // RealField on a Grid2D; the summit of a surface is its highest point.
+#include <complex>
+#include <cstddef>
 #include <cstdint>
 
 #include "wearscale/bem/roughness.hpp"
@@ -45,6 +47,16 @@ double target_psd(const RoughSurfaceSpec& spec, double k);
 /// modes (on the axes at k = 0 or the Nyquist frequency) take a random sign
 /// instead of a phase. The mean height is zero.
 RealField generate_surface(const RoughSurfaceSpec& spec);
+
+/// Rows [first, first + rows) of the r2c spectrum that generate_surface
+/// transforms (`out`: rows × (ny/2 + 1) modes), for a surface made in slabs
+/// (slab_surface.hpp). The phases are drawn from their places in the seed's
+/// stream: mt19937_64 skips ahead by discard(), linear in the skipped draws, so
+/// a slab costs O(first · ny) draws besides its own.
+void rough_spectrum(const RoughSurfaceSpec& spec, std::size_t first, std::size_t rows, std::complex<double>* out);
+
+/// The cap of sphere() on rows [first, first + rows) of `grid` (a slab of it).
+RealField sphere_rows(const Grid2D& grid, std::size_t first, std::size_t rows, double radius, double cx, double cy);
 
 /// generate_surface(spec), then rescaled so that `measure` equals `target`.
 RealField generate_surface(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target);

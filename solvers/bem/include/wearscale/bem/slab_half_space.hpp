@@ -1,0 +1,51 @@
+#pragma once
+// The periodic half-space's normal block distributed in slabs over the ranks
+// of an MPI job (FFTW-MPI): each rank holds rows [first_row, first_row + rows)
+// of the grid, of the fields and of the kernel's half spectrum, so the memory
+// per rank is about 1/P of the serial body's. The same kernel as HalfSpace
+// (HalfSpace::normal_mode, stiffness_mode); sums over the ranks add the
+// ranks' parts in rank order (mpi::sum), so a solve does not depend on timing.
+// Every call is collective: all ranks make the same calls in the same order.
+#include <vector>
+
+#include "wearscale/bem/normal_operator.hpp"
+#include "wearscale/core/slab_fft.hpp"
+
+namespace wearscale::bem {
+
+class SlabHalfSpace final : public NormalOperator {
+ public:
+  /// A rigid surface on an elastic body of contact modulus E* (InputError unless
+  /// E* > 0 and the grid has ≥ 2 × 2 points), periodic. Collective. FFTW's
+  /// MEASURE planning times the transforms across the ranks: worth it for long
+  /// solves on large grids, not for small ones (Estimate).
+  SlabHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor = PlanRigor::Measure);
+
+  const Grid2D& grid() const override { return grid_; }
+  std::size_t first_row() const override { return fft_.first_row(); }
+  std::size_t rows() const { return fft_.rows(); }
+  const Grid2D& local_grid() const override { return local_; }
+  Boundary boundary() const override { return Boundary::Periodic; }
+
+  void displacement(const RealField& p, RealField& u, double scale) override;
+  void stiffness(const RealField& g, RealField& z) override;
+  double form(const RealField& t) override;
+  double self_compliance() const override { return self_compliance_; }
+  double stiffness_diagonal() const override { return stiffness_diagonal_; }
+  void sum(std::span<double> partial) const override;
+  double max(double local) const override;
+
+  /// The transforms (for the slab's roughness and generated surfaces).
+  SlabFFT& fft() { return fft_; }
+
+ private:
+  void apply(const RealField& in, RealField& out, const std::vector<double>& kernel, double scale);
+  double whole_spectrum_sum(const std::vector<double>& kernel) const;
+
+  Grid2D grid_, local_;
+  SlabFFT fft_;
+  std::vector<double> zz_, stiffness_;  // this rank's rows of the half spectrum, 1/N folded in
+  double self_compliance_ = 0.0, stiffness_diagonal_ = 0.0;
+};
+
+}  // namespace wearscale::bem

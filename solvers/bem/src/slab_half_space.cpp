@@ -1,0 +1,77 @@
+#include "wearscale/bem/slab_half_space.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "wearscale/bem/spectral_modes.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/mpi.hpp"
+
+namespace wearscale::bem {
+
+namespace {
+const Grid2D& checked(const Grid2D& g, double e_star) {
+  if (!(e_star > 0.0) || !std::isfinite(e_star))
+    throw InputError(fmt::format("distributed half-space: E* = {} is not allowed; allowed: E* > 0", e_star));
+  if (g.nx < 2 || g.ny < 2 || !(g.lx > 0.0) || !(g.ly > 0.0))
+    throw InputError(fmt::format("distributed half-space: grid {} is not allowed; allowed: ≥ 2×2 points, sizes > 0",
+                                 g.to_string()));
+  return g;
+}
+}  // namespace
+
+SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor)
+    : grid_(checked(grid, e_star)), fft_(grid.nx, grid.ny, rigor) {
+  local_ = grid_.slab(fft_.rows());
+  const std::size_t cols = grid_.spectral_ny(), first = fft_.first_row();
+  zz_.assign(fft_.rows() * cols, 0.0);
+  stiffness_.assign(fft_.rows() * cols, 0.0);
+  for_each_mode(grid_.slab(fft_.rows()), [&](std::size_t i, std::size_t j, std::size_t m) {
+    zz_[m] = HalfSpace::normal_mode(grid_, first + i, j, e_star);
+    stiffness_[m] = HalfSpace::stiffness_mode(grid_, first + i, j, e_star);
+  });
+  self_compliance_ = whole_spectrum_sum(zz_);
+  stiffness_diagonal_ = whole_spectrum_sum(stiffness_);
+}
+
+// Σ over the whole spectrum of a kernel known on this rank's rows of the half spectrum.
+double SlabHalfSpace::whole_spectrum_sum(const std::vector<double>& kernel) const {
+  double s = hermitian_sum<double>(local_, [&](std::size_t m, double w, double& t) { t += w * kernel[m]; });
+  return mpi::sum(s);
+}
+
+void SlabHalfSpace::apply(const RealField& in, RealField& out, const std::vector<double>& kernel, double scale) {
+  if (!(in.grid() == local_) || !(out.grid() == local_))
+    throw std::invalid_argument("SlabHalfSpace: a field that is not this rank's slab");
+  fft_.load(in.data());
+  fft_.forward();
+  auto* s = fft_.spectrum();
+  const double* k = kernel.data();
+  const std::size_t n = kernel.size();
+#pragma omp parallel for simd schedule(static)
+  for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
+  fft_.backward();
+  fft_.store(out.data());
+}
+
+void SlabHalfSpace::displacement(const RealField& p, RealField& u, double scale) { apply(p, u, zz_, scale); }
+void SlabHalfSpace::stiffness(const RealField& g, RealField& z) { apply(g, z, stiffness_, 1.0); }
+
+double SlabHalfSpace::form(const RealField& t) {
+  if (!(t.grid() == local_)) throw std::invalid_argument("SlabHalfSpace: a field that is not this rank's slab");
+  fft_.load(t.data());
+  fft_.forward();
+  const auto* s = fft_.spectrum();
+  const double* k = zz_.data();
+  // Σ_x t (F t) = (1/N) Σ_q F(q) |t̂(q)|², the 1/N being in the kernel.
+  const double local =
+      hermitian_sum<double>(local_, [&](std::size_t m, double w, double& sum) { sum += w * k[m] * std::norm(s[m]); });
+  return mpi::sum(local);
+}
+
+void SlabHalfSpace::sum(std::span<double> partial) const { mpi::sum(partial); }
+double SlabHalfSpace::max(double local) const { return mpi::max(local); }
+
+}  // namespace wearscale::bem
