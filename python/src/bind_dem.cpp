@@ -1,6 +1,6 @@
-// wearscale.dem: the DEM patch test (§6.2.1), the sheared junction (§6.3) and
-// the material targets of the cohesive model (§6.1). The rough-shear and
-// trapped-particle studies are not bound yet (the CLI's `wearscale dem` runs them).
+// wearscale.dem: the DEM patch test (§6.2.1), the sheared junction (§6.3), the
+// sheared rough surfaces (§7.2), the trapped particles (§7.3) and the
+// material targets of the cohesive model (§6.1).
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -10,8 +10,10 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/cohesive_material.hpp"
 #include "wearscale/dem/patch_test.hpp"
+#include "wearscale/dem/rough_shear.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
 
 namespace wearscale::python {
 
@@ -132,6 +134,131 @@ py::dict sheared_junction(const std::string& material, double diameter, double d
   return d;
 }
 
+// The sliding cell of §7.2-7.3 (sliding_cell.hpp) from keyword arguments in SI units.
+struct CellArgs {
+  std::string material, law;
+  double d0, largest;
+  std::vector<double> box;
+  double velocity, pressure, sliding_distance, settle_distance, time_step, friction, scaling_exponent;
+  long record_every;
+  unsigned seed;
+  SlidingCellSpec spec(const char* study) const {
+    SlidingCellSpec c;
+    c.material = material_of(material, std::nullopt, scaling_exponent);
+    c.law = law;
+    c.friction = friction;
+    c.d0 = d0;
+    c.largest = largest;
+    if (box.size() != 3) throw InputError(std::string(study) + ": box = [L, W, H] in m, three lengths");
+    c.box = Vec3{box[0], box[1], box[2]};
+    c.velocity = velocity;
+    c.pressure = pressure;
+    c.sliding_distance = sliding_distance;
+    c.settle_distance = settle_distance;
+    c.time_step = time_step;
+    c.record_every = record_every;
+    c.seed = seed;
+    check(c, study);
+    return c;
+  }
+};
+
+// A sliding cell's history as named arrays (SI units in the names).
+py::dict sliding_history(const std::vector<SlidingSample>& history) {
+  auto series = [&](double SlidingSample::*member) {
+    std::vector<double> v;
+    v.reserve(history.size());
+    for (const auto& sample : history) v.push_back(sample.*member);
+    return owned(std::move(v));
+  };
+  py::dict h;
+  h["time_s"] = series(&SlidingSample::time);
+  h["sliding_m"] = series(&SlidingSample::sliding);
+  h["tangential_force_N"] = series(&SlidingSample::tangential_force);
+  h["normal_force_N"] = series(&SlidingSample::normal_force);
+  h["kinetic_energy_J"] = series(&SlidingSample::kinetic_energy);
+  h["worn"] = series(&SlidingSample::worn);
+  h["roughness_bottom_m"] = series(&SlidingSample::roughness_bottom);
+  h["roughness_top_m"] = series(&SlidingSample::roughness_top);
+  return h;
+}
+
+py::dict rough_shear(const CellArgs& cell, double roughness, double hurst, double shortest_wavelength) {
+  RoughShearSpec spec;
+  spec.cell = cell.spec("dem.rough_shear");
+  spec.roughness = roughness;
+  spec.hurst = hurst;
+  spec.shortest_wavelength = shortest_wavelength;
+  FinalState final_state;
+  RoughShearResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_rough_shear(spec, [&](const SlidingCell& c, const SlidingSample&, long, long) {
+      final_state.take(c.simulation());
+    });
+  }
+  py::dict d;
+  d["particles"] = r.particles;
+  d["d_star_m"] = r.d_star;
+  d["time_step_s"] = r.time_step;
+  d["steps"] = r.steps;
+  d["area_m2"] = r.area;
+  d["imposed_roughness_m"] = r.imposed_roughness;
+  d["mean_pressure_Pa"] = r.mean_pressure;
+  d["mean_tangential_force_N"] = r.mean_tangential_force;
+  d["peak_tangential_force_N"] = r.peak_tangential_force;
+  d["friction"] = r.friction;
+  d["worn"] = r.worn;
+  d["worn_fraction"] = r.worn_fraction;
+  d["wear_particle"] = r.wear_particle;
+  d["wear_particle_residual"] = r.wear_particle_residual;
+  d["regime"] = r.regime;
+  d["history"] = sliding_history(r.history);
+  py::dict state;
+  final_state.put(state);
+  d["final"] = state;
+  return d;
+}
+
+py::dict trapped_particles(const CellArgs& cell, int count, double diameter, double clearance, double fit_from) {
+  TrappedParticlesSpec spec;
+  spec.cell = cell.spec("dem.trapped_particles");
+  spec.count = count;
+  spec.diameter = diameter;
+  spec.clearance = clearance;
+  spec.fit_from = fit_from;
+  FinalState final_state;
+  TrappedParticlesResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_trapped_particles(spec, [&](const SlidingCell& c, const SlidingSample&, long, long) {
+      final_state.take(c.simulation());
+    });
+  }
+  py::dict d;
+  d["particles"] = r.particles;
+  d["loose_particles"] = r.loose_particles;
+  d["d_star_m"] = r.d_star;
+  d["time_step_s"] = r.time_step;
+  d["steps"] = r.steps;
+  d["area_m2"] = r.area;
+  d["mean_pressure_Pa"] = r.mean_pressure;
+  d["mean_tangential_force_N"] = r.mean_tangential_force;
+  d["peak_tangential_force_N"] = r.peak_tangential_force;
+  d["friction"] = r.friction;
+  d["worn_first_body"] = r.worn_first_body;
+  d["band_thickness_m"] = r.band_thickness;
+  d["loose_residual"] = r.loose_residual;
+  d["mean_residual"] = r.mean_residual;
+  d["rolling"] = r.rolling;
+  d["regime"] = r.regime();
+  d["history"] = sliding_history(r.history);
+  py::dict state;
+  final_state.put(state);
+  d["final"] = state;
+  return d;
+}
+
 }  // namespace
 
 void bind_dem(py::module_& m) {
@@ -204,6 +331,60 @@ Returns the verdict (detached into a rolling particle when D >= d* = 32 gamma G/
 else plastic), the force history arrays (time_s, sliding_m, tangential_force_N, normal_force_N,
 kinetic_energy_J) and the final particles (position, velocity (n, 3), radius, wall). Minutes for
 the thesis' D = 20 nm.)");
+  auto cell_args = [](const std::string& material, double d0, double largest, std::vector<double> box,
+                      double velocity, double pressure, double sliding_distance, double settle_distance,
+                      double time_step, long record_every, unsigned seed, double scaling_exponent,
+                      const std::string& law, double friction) {
+    return CellArgs{material, law,           d0,        largest,         std::move(box), velocity, pressure,
+                    sliding_distance, settle_distance, time_step, friction, scaling_exponent, record_every, seed};
+  };
+  m.def("rough_shear",
+        [cell_args](double roughness, double hurst, double shortest_wavelength, const std::string& material, double d0,
+                    double largest, std::vector<double> box, double velocity, double pressure, double sliding_distance,
+                    double settle_distance, double time_step, long record_every, unsigned seed,
+                    double scaling_exponent, const std::string& law, double friction) {
+          return rough_shear(cell_args(material, d0, largest, std::move(box), velocity, pressure, sliding_distance,
+                                       settle_distance, time_step, record_every, seed, scaling_exponent, law, friction),
+                             roughness, hurst, shortest_wavelength);
+        },
+        py::arg("roughness") = 0.02, py::arg("hurst") = 0.8, py::arg("shortest_wavelength") = 4.0,
+        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = 0.0,
+        py::arg("box") = std::vector<double>{150e-9, 10.5e-9, 60e-9}, py::arg("velocity") = 50.0,
+        py::arg("pressure") = 0.5e9, py::arg("sliding_distance") = 150e-9, py::arg("settle_distance") = 3e-9,
+        py::arg("time_step") = 0.1, py::arg("record_every") = 200, py::arg("seed") = 1,
+        py::arg("scaling_exponent") = 0.5, py::arg("law") = "cohesive", py::arg("friction") = 0.5,
+        R"(The sheared rough surfaces of §7.2 (Figs. 7.4-7.7): two amorphous surfaces of self-affine
+roughness Sa = roughness * L (Hurst exponent hurst, shortest wavelength in d0) carved from one
+relaxed box, the bottom wall fixed, the top wall pressed at `pressure` [Pa] and slid at `velocity`
+[m/s] over sliding_distance [m] after settle_distance [m] at rest. box = [L, W, H] [m] (L sliding and
+W periodic); d0 and largest (0: 1.25 d0) [m]; time_step in the critical step; law "cohesive" (the
+thesis) or "hooke" with Coulomb `friction`. Returns the friction (mean F_T / F_N over the second
+half), worn particles, the regime ("rolling wear particles", "shear band", "no wear particle"), the
+history arrays (time_s, sliding_m, tangential_force_N, normal_force_N, kinetic_energy_J, worn,
+roughness_bottom_m, roughness_top_m) and the final particles. Releases the GIL; minutes at the
+defaults (the thesis' 50 d0 cell).)");
+  m.def("trapped_particles",
+        [cell_args](int count, double diameter, double clearance, double fit_from, const std::string& material,
+                    double d0, double largest, std::vector<double> box, double velocity, double pressure,
+                    double sliding_distance, double settle_distance, double time_step, long record_every,
+                    unsigned seed, double scaling_exponent, const std::string& law, double friction) {
+          return trapped_particles(cell_args(material, d0, largest, std::move(box), velocity, pressure,
+                                             sliding_distance, settle_distance, time_step, record_every, seed,
+                                             scaling_exponent, law, friction),
+                                   count, diameter, clearance, fit_from);
+        },
+        py::arg("count") = 3, py::arg("diameter") = 30e-9, py::arg("clearance") = 0.25, py::arg("fit_from") = 0.8,
+        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = 0.0,
+        py::arg("box") = std::vector<double>{300e-9, 10.5e-9, 54e-9}, py::arg("velocity") = 50.0,
+        py::arg("pressure") = 0.6e9, py::arg("sliding_distance") = 300e-9, py::arg("settle_distance") = 3e-9,
+        py::arg("time_step") = 0.1, py::arg("record_every") = 200, py::arg("seed") = 1,
+        py::arg("scaling_exponent") = 0.5, py::arg("law") = "cohesive", py::arg("friction") = 0.5,
+        R"(Loose particles trapped between flat surfaces, §7.3 (Figs. 7.8-7.9): `count` discs of
+diameter D [m] in a gap of height D (clearance in d0 from the surfaces), the top wall pressed at
+`pressure` [Pa] and slid at `velocity` [m/s]. The regime from the loose particles' rigid-body misfit
+over the slide from fit_from on: "rolling" (misfit < 1/3) or "shear band". Cell keys as
+rough_shear. Returns the friction, the worn first body and its band thickness [m], the misfits,
+the history arrays and the final particles. Releases the GIL; minutes at the defaults.)");
 }
 
 }  // namespace wearscale::python

@@ -38,3 +38,32 @@ def test_a_junction_below_the_critical_size_deforms_and_reports_its_history_and_
     assert r["peak_tangential_force_N"] == approx(h["tangential_force_N"].max(), rel=1e-12)
     f = r["final"]
     assert f["position"].shape == (r["particles"], 3) and f["radius"].shape == (r["particles"],)
+
+
+D0 = 3e-9
+
+
+def test_sheared_rough_surfaces_hold_the_pressure_wear_and_report_their_roughness():
+    # The reduced §7.2 cell of tests/dem/test_rough_shear.cpp, slid half as far: 20 d0 long, Sa = 0.04 L.
+    r = ws.dem.rough_shear(roughness=0.04, d0=D0, box=[20 * D0, 3.5 * D0, 14 * D0], pressure=0.5e9,
+                           velocity=100.0, sliding_distance=4 * D0, settle_distance=D0)
+    assert r["imposed_roughness_m"] == approx(0.04 * 20 * D0, rel=0.05)  # the carved profiles' Sa
+    h = r["history"]
+    assert h["roughness_bottom_m"][0] == approx(r["imposed_roughness_m"], rel=0.15)
+    assert h["worn"][0] == 0 and r["worn"] > 0  # particles wear at the interface
+    assert r["mean_pressure_Pa"] == approx(0.5e9, rel=0.1)  # the pressed wall holds p_N
+    assert h["sliding_m"][-1] == approx(4 * D0, abs=0.05 * D0)
+    assert r["friction"] == approx(r["mean_tangential_force_N"] / (r["mean_pressure_Pa"] * r["area_m2"]), rel=0.02)
+    assert r["regime"] in ("rolling wear particles", "shear band", "no wear particle")
+    assert r["final"]["position"].shape == (r["particles"], 3)
+    with pytest.raises(ValueError, match="box"):
+        ws.dem.rough_shear(box=[1e-7, 1e-8])
+
+
+def test_two_trapped_particles_roll_at_a_tenth_of_a_gigapascal():
+    # The reduced §7.3 cell of tests/dem/test_trapped_particles.cpp at its low load.
+    r = ws.dem.trapped_particles(count=2, diameter=5 * D0, d0=D0, box=[30 * D0, 3.5 * D0, 12 * D0], pressure=0.1e9,
+                                 velocity=200.0, sliding_distance=8 * D0, settle_distance=D0, fit_from=0.0)
+    assert len(r["loose_particles"]) == 2 and min(r["loose_particles"]) >= 20  # discs of many DEM particles
+    assert r["rolling"] and r["regime"] == "rolling", r["mean_residual"]
+    assert r["history"]["tangential_force_N"].shape == r["history"]["sliding_m"].shape
