@@ -71,6 +71,10 @@ struct FinalState {
     radius = p.radius;
     wall = p.wall;
   }
+  /// An observer of a sliding cell that keeps its last state.
+  auto observer() {
+    return [this](const SlidingCell& c, const SlidingSample&, long, long) { take(c.simulation()); };
+  }
   void put(py::dict& d) const {
     d["position"] = vectors(position);
     d["velocity"] = vectors(velocity);
@@ -183,6 +187,27 @@ py::dict sliding_history(const std::vector<SlidingSample>& history) {
   return h;
 }
 
+// What every sliding-cell study reports (the members RoughShearResult and
+// TrappedParticlesResult share), its history and its final particles.
+template <class Result>
+py::dict sliding_result(const Result& r, const FinalState& final_state) {
+  py::dict d;
+  d["particles"] = r.particles;
+  d["d_star_m"] = r.d_star;
+  d["time_step_s"] = r.time_step;
+  d["steps"] = r.steps;
+  d["area_m2"] = r.area;
+  d["mean_pressure_Pa"] = r.mean_pressure;
+  d["mean_tangential_force_N"] = r.mean_tangential_force;
+  d["peak_tangential_force_N"] = r.peak_tangential_force;
+  d["friction"] = r.friction;
+  d["history"] = sliding_history(r.history);
+  py::dict state;
+  final_state.put(state);
+  d["final"] = state;
+  return d;
+}
+
 py::dict rough_shear(const CellArgs& cell, double roughness, double hurst, double shortest_wavelength) {
   RoughShearSpec spec;
   spec.cell = cell.spec("dem.rough_shear");
@@ -193,30 +218,15 @@ py::dict rough_shear(const CellArgs& cell, double roughness, double hurst, doubl
   RoughShearResult r;
   {
     py::gil_scoped_release release;
-    r = run_rough_shear(spec, [&](const SlidingCell& c, const SlidingSample&, long, long) {
-      final_state.take(c.simulation());
-    });
+    r = run_rough_shear(spec, final_state.observer());
   }
-  py::dict d;
-  d["particles"] = r.particles;
-  d["d_star_m"] = r.d_star;
-  d["time_step_s"] = r.time_step;
-  d["steps"] = r.steps;
-  d["area_m2"] = r.area;
+  py::dict d = sliding_result(r, final_state);
   d["imposed_roughness_m"] = r.imposed_roughness;
-  d["mean_pressure_Pa"] = r.mean_pressure;
-  d["mean_tangential_force_N"] = r.mean_tangential_force;
-  d["peak_tangential_force_N"] = r.peak_tangential_force;
-  d["friction"] = r.friction;
   d["worn"] = r.worn;
   d["worn_fraction"] = r.worn_fraction;
   d["wear_particle"] = r.wear_particle;
   d["wear_particle_residual"] = r.wear_particle_residual;
   d["regime"] = r.regime;
-  d["history"] = sliding_history(r.history);
-  py::dict state;
-  final_state.put(state);
-  d["final"] = state;
   return d;
 }
 
@@ -231,31 +241,16 @@ py::dict trapped_particles(const CellArgs& cell, int count, double diameter, dou
   TrappedParticlesResult r;
   {
     py::gil_scoped_release release;
-    r = run_trapped_particles(spec, [&](const SlidingCell& c, const SlidingSample&, long, long) {
-      final_state.take(c.simulation());
-    });
+    r = run_trapped_particles(spec, final_state.observer());
   }
-  py::dict d;
-  d["particles"] = r.particles;
+  py::dict d = sliding_result(r, final_state);
   d["loose_particles"] = r.loose_particles;
-  d["d_star_m"] = r.d_star;
-  d["time_step_s"] = r.time_step;
-  d["steps"] = r.steps;
-  d["area_m2"] = r.area;
-  d["mean_pressure_Pa"] = r.mean_pressure;
-  d["mean_tangential_force_N"] = r.mean_tangential_force;
-  d["peak_tangential_force_N"] = r.peak_tangential_force;
-  d["friction"] = r.friction;
   d["worn_first_body"] = r.worn_first_body;
   d["band_thickness_m"] = r.band_thickness;
   d["loose_residual"] = r.loose_residual;
   d["mean_residual"] = r.mean_residual;
   d["rolling"] = r.rolling;
   d["regime"] = r.regime();
-  d["history"] = sliding_history(r.history);
-  py::dict state;
-  final_state.put(state);
-  d["final"] = state;
   return d;
 }
 
