@@ -8,9 +8,11 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
 #include "wearscale/materials/material.hpp"
+#include "pair_setup.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
+using wearscale::dem::test_support::sphere_mass;
 
 namespace {
 
@@ -21,8 +23,6 @@ CohesiveMaterial table_6_4(double poisson = 0.15, double s = 0.5) {
   m.scaling_exponent = s;
   return m;
 }
-
-double mass_of(double r, double rho) { return rho * 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 // ∫_0^δf F_N dδ by GSL adaptive quadrature with the kink at δ_e as a break point.
 double fracture_work(const CohesivePair& p) {
@@ -150,7 +150,7 @@ TEST(CohesiveForce, EnergyIsTheIntegralOfTheForce) {
 
 TEST(CohesiveForce, DampingGivesTheRestitutionCoefficientInTheSmallDampingLimit) {
   const auto m = table_6_4();
-  const double r = 20.0, mass = mass_of(r, m.density);
+  const double r = 20.0, mass = sphere_mass(r, m.density);
   const auto p = cohesive_pair(m, r, r, mass, mass);
   const double m_eff = 0.5 * mass;
   EXPECT_NEAR(p.c_n, 2.0 * (1.0 - 0.95) / std::numbers::pi * std::sqrt(p.k_n * m_eff), 1e-12);  // (6.59)

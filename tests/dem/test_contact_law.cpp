@@ -12,9 +12,12 @@
 #include "wearscale/dem/anchor_block.hpp"
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "pair_setup.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
+using wearscale::dem::test_support::open_box;
+using wearscale::dem::test_support::sphere_mass;
 using ::testing::HasSubstr;
 
 namespace {
@@ -24,16 +27,6 @@ CohesiveMaterial table_6_4() {
   m.poisson = 0.15;
   return m;
 }
-
-Box open_box() {
-  Box b;
-  b.lo = {-200, -200, -200};
-  b.hi = {200, 200, 200};
-  b.periodic = {false, false, false};
-  return b;
-}
-
-double sphere_mass(double r, double rho) { return rho * 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 }  // namespace
 

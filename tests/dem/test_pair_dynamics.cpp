@@ -11,9 +11,11 @@
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "shaken_hcp_block.hpp"
+#include "pair_setup.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
+using wearscale::dem::test_support::open_box;
 
 namespace {
 
@@ -24,14 +26,6 @@ CohesiveMaterial table_6_4(double restitution = 0.95) {
 }
 
 constexpr double r = 20.0;  // r_i + r_j = 40 < d_c = 150
-
-Box open_box() {
-  Box b;
-  b.lo = {-200, -200, -200};
-  b.hi = {200, 200, 200};
-  b.periodic = {false, false, false};
-  return b;
-}
 
 // Two spheres on the x axis with surface gap `gap`, velocities ±v along x.
 Simulation pair(double gap, double v, CohesiveLaw law, Box box = open_box(), Vec3 centre = {}) {
