@@ -27,7 +27,6 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
-#include "wearscale/core/utc_time.hpp"
 #include "wearscale/core/worker_pool.hpp"
 #include "wearscale/studies/study.hpp"
 
@@ -199,8 +198,6 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   H5Writer h5(summary.output_dir / "run.h5");
   h5.set_attribute("/", "case_file", options.case_file.string());
   h5.set_attribute("/", "case_toml", run.cfg.to_toml());
-  h5.set_attribute("/", "wearscale_version", WEARSCALE_VERSION);
-  h5.set_attribute("/", "created", utc_now());
   h5.set_attribute("/", "command", command_line(options, thread_budget()));
 
   h5.set_attribute("/", "study", summary.study);
