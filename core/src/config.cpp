@@ -14,6 +14,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/text_file.hpp"
+#include "wearscale/core/utf8.hpp"
 
 namespace wearscale {
 
@@ -134,6 +135,10 @@ Config Config::from_string(std::string_view text, std::string source) {
 }
 
 void Config::override_value(std::string_view assignment, std::string_view origin) {
+  if (!is_utf8(assignment))  // strings of the case reach JSON outputs, which hold UTF-8 only
+    throw InputError(fmt::format("{}: {} is not valid UTF-8 (shown with U+FFFD where a byte is not); allowed: "
+                                 "UTF-8 text",
+                                 origin, quoted_for_message(assignment)));
   const auto eq = assignment.find('=');
   auto trim = [](std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);

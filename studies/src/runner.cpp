@@ -27,6 +27,7 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/core/utf8.hpp"
 #include "wearscale/core/worker_pool.hpp"
 #include "wearscale/studies/study.hpp"
 
@@ -100,6 +101,13 @@ struct PreparedRun {
 std::unique_ptr<Study> study_for(const Config& cfg, const RunOptions& options) {
   cfg.mark_used("case.study");
   return study_registry().create(options.study.empty() ? study_of(cfg) : options.study);
+}
+
+// Paths from the command line end up in summary.json, which holds UTF-8 only.
+void require_utf8_paths(const RunOptions& options) {
+  require_utf8_path(options.case_file, "case file");
+  if (options.output_dir) require_utf8_path(*options.output_dir, "--out");
+  if (options.resume_dir) require_utf8_path(*options.resume_dir, "--resume");
 }
 
 // The provenance of a run in summary.json: what made it, the same for the same
@@ -462,6 +470,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
 }  // namespace
 
 RunSummary run_case(const RunOptions& options_in) {
+  require_utf8_paths(options_in);
   RunOptions options = options_in;
   if (options.resume_dir)
     options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
@@ -490,6 +499,7 @@ RunSummary run_case(const RunOptions& options_in) {
 }
 
 std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options) {
+  require_utf8_paths(options);
   Config probe = load(parse, options);
   std::vector<std::filesystem::path> folders;
   if (probe.has("sweep")) {

@@ -152,6 +152,11 @@ INSTANTIATE_TEST_SUITE_P(
                 {"/dev/zero: not a regular file"}},
         // Case files that are not files.
         Hostile{"run_dev_zero", "run /dev/zero --out OUT", {}, 2, {"/dev/zero: not a regular file"}},
+        // Found by fuzz_sweep: bytes that are not UTF-8 cannot go into summary.json (exit 3 before).
+        Hostile{"set_not_utf8", "run '" + pin_on_disc + "'" + small + " --out OUT --set \"$(printf 'case.name=a\\373b')\"",
+                {}, 2, {"--set: \"case.name=a\uFFFDb\" is not valid UTF-8"}},
+        Hostile{"out_not_utf8", "run '" + pin_on_disc + "'" + small + " --out \"$(printf 'OUT\\373')\"", {}, 2,
+                {"--out", "the path is not valid UTF-8"}},
         Hostile{"multi_line_set", "run '" + pin_on_disc + "' --out OUT --set \"$(printf 'scale.macro.grid=32\\nscale.macro.size=1')\"",
                 {}, 2, {"key 'scale.macro.grid': the value spans several lines"}},
         // Physics bounds of the macroscale.

@@ -14,6 +14,7 @@
 #include "wearscale/core/config.hpp"
 
 using namespace wearscale;
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 namespace {
@@ -149,7 +150,7 @@ TEST(Config, OverridesReplaceCreateAndAreTyped) {
   c.override_value("materials.layer.thickness=inf");
   EXPECT_EQ(c.integer("scale.macro.grid"), 64);
   EXPECT_DOUBLE_EQ(c.number("scale.macro.velocity", Range::positive(), units::velocity), 0.01);
-  EXPECT_EQ(c.string("scale.nano.backend"), "analytic");
+  EXPECT_EQ(c.string("scale.macro.backend"), "hertz");
   EXPECT_TRUE(std::isinf(c.number("materials.layer.thickness", Range::non_negative().or_infinite())));
   EXPECT_THAT(input_error_of([&] { c.integer("scale.macro.grid", Range::at_least(128)); }), HasSubstr("--set"));
 }
@@ -159,6 +160,18 @@ TEST(Config, MalformedOverridesAreBadInput) {
   EXPECT_THAT(input_error_of([&] { c.override_value("scale.macro.grid"); }), HasSubstr("expected KEY=VALUE"));
   EXPECT_THAT(input_error_of([&] { c.override_value("scale.macro.grid.sub=1"); }), HasSubstr("not a table"));
   EXPECT_THAT(input_error_of([&] { c.override_value("scale..grid=1"); }), HasSubstr("empty component"));
+}
+
+// Found by fuzz_sweep: a --set value with a byte that is not UTF-8 became a
+// bare string that no JSON output (the case fingerprint) can hold.
+TEST(Config, OverridesThatAreNotUtf8AreBadInputAndChangeNothing) {
+  auto c = Config::from_string(kCase, "demo.toml");
+  EXPECT_THAT(input_error_of([&] { c.override_value("scale.macro.backend=her\xFBtz"); }),
+              AllOf(HasSubstr("not valid UTF-8"), HasSubstr("scale.macro.backend")));
+  EXPECT_THAT(input_error_of([&] { c.override_value("scale.\xC3=1"); }), HasSubstr("not valid UTF-8"));
+  EXPECT_EQ(c.string("scale.macro.backend"), "hertz");
+  c.override_value("scale.macro.label=\xC3\xA9t\xC3\xA9");  // "été" is UTF-8
+  EXPECT_EQ(c.to_json()["scale"]["macro"]["label"], "\xC3\xA9t\xC3\xA9");
 }
 
 TEST(Config, ResolvedCaseRoundTripsToJsonAndToml) {
