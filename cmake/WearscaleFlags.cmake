@@ -37,9 +37,16 @@ target_compile_options(wearscale_flags INTERFACE
 
 # Sanitizers: AddressSanitizer + UndefinedBehaviorSanitizer, every UB report
 # fatal (so a finding fails its test instead of scrolling by).
+# Test programs (target property WEARSCALE_TEST_CODE, set by tests/CMakeLists.txt)
+# are compiled at -O0 with AddressSanitizer alone: UndefinedBehaviorSanitizer
+# instruments the libraries, where the arithmetic under test lives, and on the
+# gtest/gmock-heavy test sources it tripled the compile time of the sanitizer pass.
+# Every program still links both runtimes.
 if(WEARSCALE_SANITIZE OR WEARSCALE_FUZZ)
-  target_compile_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=undefined
-                         -fno-omit-frame-pointer)
+  set(wearscale_test_code "$<BOOL:$<TARGET_PROPERTY:WEARSCALE_TEST_CODE>>")
+  target_compile_options(wearscale_flags INTERFACE -fsanitize=address -fno-omit-frame-pointer
+    $<$<NOT:${wearscale_test_code}>:-fsanitize=undefined -fno-sanitize-recover=undefined>
+    $<${wearscale_test_code}:-O0>)
   target_link_options(wearscale_flags INTERFACE -fsanitize=address,undefined -fno-sanitize-recover=undefined)
 endif()
 # Fuzzing (tests/fuzz): libFuzzer needs clang; every library is instrumented
