@@ -73,6 +73,7 @@ class RunResult(dict):
 
     @property
     def output_dir(self):
+        """The run's output folder (summary.json, run.h5, ...) as a Path."""
         return Path(self["output_dir"])
 
     @property
@@ -81,6 +82,7 @@ class RunResult(dict):
         return {k: v["value"] if isinstance(v, dict) and "value" in v else v for k, v in self.get("results", {}).items()}
 
     def h5_files(self):
+        """Every HDF5 file the run wrote (run.h5, contact.h5, those of a sweep's runs), sorted."""
         return sorted(self.output_dir.rglob("*.h5"))
 
     def load(self, dataset, file=None):
