@@ -14,9 +14,11 @@ namespace wearscale::python {
 
 void bind_run(py::module_& m) {
   m.def("run_case", [](const std::string& case_file, const std::vector<std::string>& overrides,
-                       std::optional<std::string> out, std::optional<std::string> resume, bool quiet) {
+                       std::optional<std::string> out, std::optional<std::string> resume, bool quiet,
+                       std::optional<std::string> case_text) {
           studies::RunOptions options;
           options.case_file = case_file;
+          options.case_text = std::move(case_text);
           options.overrides = overrides;
           if (out) options.output_dir = *out;
           if (resume) options.resume_dir = *resume;
@@ -28,9 +30,10 @@ void bind_run(py::module_& m) {
           }
           return json;
         }, py::arg("case_file"), py::arg("overrides") = std::vector<std::string>{}, py::arg("out") = py::none(),
-        py::arg("resume") = py::none(), py::arg("quiet") = true,
+        py::arg("resume") = py::none(), py::arg("quiet") = true, py::arg("case_text") = py::none(),
         "Runs a case file (any study: the scale pipeline, [contact], [dem.*]) as `wearscale run CASE --set K=V... "
-        "[--out DIR] [--resume DIR] --json`; returns the JSON text.");
+        "[--out DIR] [--resume DIR] --json`; returns the JSON text. case_text: the case as TOML text instead "
+        "(case_file then names it in messages; relative file names in it are relative to the working directory).");
   m.def("check_case", [](const std::string& case_file, const std::vector<std::string>& overrides) {
           studies::RunOptions options;
           options.case_file = case_file;

@@ -3,6 +3,7 @@
 import pytest
 
 import wearscale as ws
+from wearscale.run import to_toml
 from _approx import approx
 
 
@@ -28,6 +29,24 @@ def test_a_dict_case_with_keyword_overrides_runs_like_its_file(source_dir, tmp_p
 def test_a_bad_key_is_a_value_error_with_its_range_and_nothing_is_written(tmp_path):
     case = {"case": {"name": "bad"}, "scale": {"macro": {"backend": "hertz", "pin_radius": "3 mm", "normal_load": "1 N",
                                 "elastic_modulus": "73 GPa", "poisson_ratio": 0.7}}}
-    with pytest.raises(ws.InputError, match="poisson_ratio.*0.7"):
+    with pytest.raises(ws.InputError, match=r"key 'scale.macro.poisson_ratio' = 0.7: out of range; allowed: \[-1, 0.5\)"):
         ws.run(case, out=tmp_path / "bad")
     assert not (tmp_path / "bad").exists()
+
+
+def test_a_dict_case_reads_its_files_relative_to_the_working_directory_and_names_itself(tmp_path, monkeypatch):
+    # The case goes to the runner as text: "s.h5" is the working directory's (it was looked for in
+    # the folder of a temporary file before), and a message names "<case dict>", not a deleted file.
+    monkeypatch.chdir(tmp_path)
+    s = ws.surface.generate(32, 1e-4, k_l=2, k_s=8, seed=1, slope_rms=0.1)
+    ws.surface.write("s.h5", s)
+    case = {"case": {"name": "relative"}, "contact": {"surface": "s.h5", "e_star": "100 GPa", "mean_pressure": "1 MPa"}}
+    r = ws.run(case, out="o")
+    c = ws.contact.NormalContact(s, e_star=1e11)
+    c.solve(mean_pressure=1e6)
+    assert r.results["contact_fraction"] == approx(float((c.pressure > 0).mean()), rel=1e-12)
+    case["contact"]["mean_pressure"] = "-1 MPa"
+    with pytest.raises(ws.InputError, match=r"<case dict>:\d+: key 'contact.mean_pressure'"):
+        ws.run(case, out="bad")
+    with pytest.raises(ws.InputError, match=r"<case string>:"):
+        ws.run(to_toml(case), out="bad")
