@@ -68,7 +68,9 @@ Disc disc_of(const std::tuple<long, long, long>& d, const Grid2D& g) {
   Disc disc{std::get<0>(d), std::get<1>(d), std::get<2>(d)};
   if (disc.cells < 1 || disc.i < 0 || disc.j < 0 || disc.i + disc.cells > static_cast<long>(g.nx) ||
       disc.j >= static_cast<long>(g.ny))
-    throw InputError("wear: disc (i, j, cells) must lie on the grid with cells >= 1");
+    throw InputError("wear: disc (i, j, cells) = (" + std::to_string(disc.i) + ", " + std::to_string(disc.j) + ", " +
+                     std::to_string(disc.cells) + "); allowed: cells >= 1, 0 <= i, i + cells <= nx = " +
+                     std::to_string(g.nx) + ", 0 <= j < ny = " + std::to_string(g.ny));
   return disc;
 }
 

@@ -61,6 +61,8 @@ def test_the_energy_released_by_one_of_two_contacts_is_4_44_minus_4_33():
     two = ws.wear.energy_release(ws.wear.disc_mask(n, n, a) | ws.wear.disc_mask(n, n, b), lx, G, nu, q, a)
     one = ws.wear.energy_release(ws.wear.disc_mask(n, n, a), lx, G, nu, q, a)
     assert two["release_J"] == approx(two["work_J"] - two["self_energy_J"], rel=1e-14)
+    with pytest.raises(ValueError, match=r"disc \(i, j, cells\) = \(120, 64, 16\); allowed: .*i \+ cells <= nx = 128"):
+        ws.wear.energy_release(ws.wear.disc_mask(n, n, a), lx, G, nu, q, (120, 64, 16))
     assert one["release_J"] == approx(one["elastic_energy_J"], rel=1e-9)  # one contact: all of it
     # the 16-cell staircase disc holds 3.6 % less energy than the circle of (4.33)
     assert one["release_J"] == approx((2 - nu) * d**3 * q**2 / (12 * G), rel=0.04)
