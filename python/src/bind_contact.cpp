@@ -239,7 +239,7 @@ ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
       .def_property_readonly("size", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); },
                              "(lx, ly) [m].")
       .def_property_readonly("history", [](PyNormalContact& self) { return self.solver.history(); },
-                             "The errors of the last solve's iterations.")
+                             "The errors of the last solve's final iterations (at most the last 12; the last is its error).")
       .def_property("warm_start",
            [](py::object self) {
              auto& s = self.cast<PyNormalContact&>().solver;

@@ -229,3 +229,25 @@ def test_python_code_runs_while_a_solve_runs_in_another_thread():
         ticks += 1
     worker.join()
     assert ticks > 1000
+
+
+def test_the_solver_keeps_its_surface_and_history_and_a_shifted_surface_carries_the_same_pressure(rough):
+    c = ws.contact.NormalContact(rough, e_star=E_STAR)
+    r = c.solve(mean_pressure=2e6)
+    assert np.array_equal(c.surface, rough.heights) and c.e_star == E_STAR and c.shape == (64, 64)
+    assert 0 < len(c.history) <= min(12, r["iterations"]) and c.history[-1] == approx(r["error"], rel=1e-12)
+    p = c.pressure.copy()
+    c.set_surface(rough.heights + 1e-6)  # a rigid shift: under an imposed mean pressure nothing changes
+    c.solve(mean_pressure=2e6)
+    assert np.abs(c.pressure - p).max() < 1e-9 * p.max()
+
+
+def test_stresses_of_a_frictional_contact_are_those_of_its_tractions():
+    c = sphere_frictional(n=32, poisson=0.3)
+    c.solve(mean_pressure=2e5, traction_x=0.2 * 2e5)
+    lx, ly = c.size
+    a = ws.contact.stresses_of(c, [1e-5])[1e-5]
+    b = ws.contact.stresses(c.pressure, lx, ly, 0.3, [1e-5], c.traction_x, c.traction_y)[1e-5]
+    assert np.array_equal(a["sigma_I_Pa"], b["sigma_I_Pa"]) and a["tau_max_Pa"].shape == (32, 32)
+    n = ws.contact.stresses(c.pressure, lx, ly, 0.3, [1e-5])[1e-5]
+    assert not np.array_equal(a["tau_max_Pa"], n["tau_max_Pa"])  # the tangential traction counts

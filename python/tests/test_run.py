@@ -15,6 +15,17 @@ def test_the_hertz_pin_case_gives_the_thesis_contact_diameter(source_dir, tmp_pa
     assert diameter == approx(78.2e-6, rel=2e-3)  # §8.1
 
 
+def test_check_writes_nothing_and_a_run_lists_its_hdf5_outputs(source_dir, tmp_path):
+    case = source_dir / "cases" / "hertz_pin.toml"
+    assert ws.run.__module__ == "wearscale.run"
+    from wearscale.run import check
+    assert [str(d) for d in check(case)] and not (tmp_path / "o").exists()
+    with pytest.raises(ValueError, match="normal_load"):
+        check(case, scale__macro__normal_load="-1 N")
+    r = ws.run(case, out=tmp_path / "o")
+    assert tmp_path / "o" / "run.h5" in r.h5_files()
+
+
 def test_a_dict_case_with_keyword_overrides_runs_like_its_file(source_dir, tmp_path):
     case = {"case": {"name": "hertz-dict"},
             "scale": {"macro": {"backend": "hertz", "pin_radius": "3 mm", "normal_load": "1 N",
