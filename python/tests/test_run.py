@@ -61,3 +61,38 @@ def test_a_dict_case_reads_its_files_relative_to_the_working_directory_and_names
         ws.run(case, out="bad")
     with pytest.raises(ws.InputError, match=r"<case string>:"):
         ws.run(to_toml(case), out="bad")
+
+
+def test_ctrl_c_stops_a_run_cleanly_with_keyboard_interrupt_and_it_resumes(source_dir, tmp_path):
+    # The reduced pin-on-disc run of the CLI's SIGINT test (a second or two): SIGINT once run.h5
+    # is being written. The run saves its checkpoint, removes its unfinished files and raises
+    # KeyboardInterrupt naming the signal; Python's own handler is back afterwards; it resumes.
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+    script = f"""
+import signal, sys, wearscale as ws
+args = dict(scale__macro__grid=64, scale__macro__distance=0.3, run__fft_planning="estimate")
+try:
+    ws.run({str(source_dir / "cases" / "pin_on_disc_si_oxide.toml")!r}, out="stopped", **args)
+except KeyboardInterrupt as e:
+    print("KeyboardInterrupt:", e, file=sys.stderr)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # Python's handler is back
+    r = ws.run({str(source_dir / "cases" / "pin_on_disc_si_oxide.toml")!r}, resume="stopped", **args)
+    print("resumed", r.results["mu_final"], file=sys.stderr)
+    sys.exit(3)
+"""
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    p = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path, env=env, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and p.poll() is None:
+        if any(f.name.startswith(".run.h5.partial-") for f in (tmp_path / "stopped").glob(".*")):
+            break
+        time.sleep(0.005)
+    assert p.poll() is None, "the run ended before it could be interrupted: " + p.stderr.read()
+    p.send_signal(signal.SIGINT)
+    err = p.communicate(timeout=120)[1]
+    assert p.returncode == 3, err
+    assert "KeyboardInterrupt:" in err and "interrupted by SIGINT" in err and "resumed" in err
