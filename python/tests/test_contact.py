@@ -166,7 +166,7 @@ name = "py-vs-cli"
 grid = 64
 size = "100 um"
 e_star = "100 GPa"
-mean_pressure = "2 MPa"
+mean_pressure = "200 MPa"
 tolerance = 1e-12
 [contact.rough]
 hurst = 0.8
@@ -185,7 +185,8 @@ hprime_rms = 0.1
     p_cli = ws.io.read(str(out / "contact.h5"), "/fields/pressure")
     lx = ws.io.attribute(str(out / "contact.h5"), "/surface/height", "lx")
     c = ws.contact.NormalContact(h, lx, e_star=1e11)
-    r = c.solve(mean_pressure=2e6, tolerance=1e-12)
+    r = c.solve(mean_pressure=2e8, tolerance=1e-12)
+    assert np.count_nonzero(p_cli > 0) > 200  # A/A0 = 5.9 %: a field worth comparing (at 2 MPa, 3 points)
     assert np.abs(c.pressure - p_cli).max() <= 1e-12 * p_cli.max()
     assert r["contact_fraction"] == approx(summary["results"]["contact_fraction"]["value"], rel=1e-12)
     # run() takes the same case through the same study
