@@ -30,9 +30,27 @@ endforeach()
 list(JOIN wearscale_pc_libs " " WEARSCALE_PC_LIBS)
 # The prefix relative to the .pc file's folder, so the installed tree may move.
 file(RELATIVE_PATH WEARSCALE_PC_UP /p/${CMAKE_INSTALL_LIBDIR}/pkgconfig /p)
-list(TRANSFORM HDF5_C_INCLUDE_DIRS PREPEND "-I" OUTPUT_VARIABLE pc_cflags)
+# What the exported targets carry as INTERFACE properties, for a plain compiler
+# command line: HDF5 and, in an MPI build, MPI and FFTW-MPI (core's static
+# library calls MPI). No installed header reads the WEARSCALE_VERSION macro
+# (wearscale::version() gives it), so the .pc needs no quoted string define. toml++, FFTW, GSL and libzip come
+# through Requires (their own .pc files; Debian's toml++ is a shared library
+# with its own defines). tests/install compiles and runs a program with them.
+set(pc_cflags)
+set(pc_libs ${HDF5_C_LIBRARIES})
+if(WEARSCALE_MPI)
+  list(APPEND pc_cflags -DWEARSCALE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 ${MPI_C_COMPILE_DEFINITIONS}
+       ${MPI_C_COMPILE_OPTIONS})
+  set(pc_include_dirs ${FFTW3_MPI_INCLUDE_DIR} ${MPI_C_INCLUDE_DIRS})
+  list(APPEND pc_libs ${FFTW3_MPI_LIBRARY} ${MPI_C_LIBRARIES} ${MPI_C_LINK_FLAGS})
+endif()
+list(APPEND pc_include_dirs ${HDF5_C_INCLUDE_DIRS})
+list(REMOVE_DUPLICATES pc_include_dirs)
+list(REMOVE_ITEM pc_include_dirs /usr/include)  # a system folder given with -I would change the search order
+list(TRANSFORM pc_include_dirs PREPEND "-I")
+list(APPEND pc_cflags ${pc_include_dirs})
 list(JOIN pc_cflags " " WEARSCALE_PC_CFLAGS)
-list(JOIN HDF5_C_LIBRARIES " " WEARSCALE_PC_HDF5)
+list(JOIN pc_libs " " WEARSCALE_PC_DEPENDENCY_LIBS)
 
 install(EXPORT wearscaleTargets NAMESPACE wearscale:: FILE wearscaleTargets.cmake
         DESTINATION ${WEARSCALE_INSTALL_CMAKEDIR})

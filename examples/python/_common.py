@@ -24,6 +24,7 @@ def arguments(description, **extra):
 
 
 failures = []
+figures = []
 
 
 def check(what, value, expected, tol):
@@ -38,10 +39,17 @@ def save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    figures.append(Path(path))
     print(f"wrote {path}")
 
 
 def finish():
+    """Exits 1 if a check failed or a figure is missing or not a PNG (so ctest sees both)."""
+    for f in figures:
+        if not f.is_file() or f.read_bytes()[:8] != b"\x89PNG\r\n\x1a\n":
+            failures.append(f"figure {f}")
+    if not figures:
+        failures.append("no figure written")
     if failures:
         print(f"{len(failures)} check(s) failed: {', '.join(failures)}")
         sys.exit(1)

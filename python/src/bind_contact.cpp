@@ -234,11 +234,12 @@ ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
              return out;
            }, "Points in contact (p > 0), a bool array (a copy).")
       .def_property_readonly("e_star", [](PyNormalContact& self) { return self.solver.e_star(); }, "E* [Pa].")
-      .def_property_readonly("shape", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); })
+      .def_property_readonly("shape", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); },
+                             "(nx, ny): the grid, the shape of every field.")
       .def_property_readonly("size", [](PyNormalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); },
                              "(lx, ly) [m].")
       .def_property_readonly("history", [](PyNormalContact& self) { return self.solver.history(); },
-                             "The errors of the last solve's iterations.")
+                             "The errors of the last solve's final iterations (at most the last 12; the last is its error).")
       .def_property("warm_start",
            [](py::object self) {
              auto& s = self.cast<PyNormalContact&>().solver;
@@ -306,10 +307,14 @@ names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement
                              "Slip g_T,y [m], read-only view.")
       .def_property_readonly("stick_slip", [](PyFrictionalContact& self) { return codes(self.solver.stick_slip_map()); },
                              "uint8 (nx, ny): 0 open, 1 stick, 2 slip (a copy).")
-      .def_property_readonly("shape", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); })
-      .def_property_readonly("size", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); })
-      .def_property_readonly("poisson", [](PyFrictionalContact& self) { return self.solver.poisson(); })
-      .def_property_readonly("young", [](PyFrictionalContact& self) { return self.solver.young(); });
+      .def_property_readonly("shape", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().nx, self.solver.grid().ny); },
+                             "(nx, ny): the grid, the shape of every field.")
+      .def_property_readonly("size", [](PyFrictionalContact& self) { return py::make_tuple(self.solver.grid().lx, self.solver.grid().ly); },
+                             "(lx, ly) [m].")
+      .def_property_readonly("poisson", [](PyFrictionalContact& self) { return self.solver.poisson(); },
+                             "Poisson's ratio nu of the flat, in (-1, 0.5].")
+      .def_property_readonly("young", [](PyFrictionalContact& self) { return self.solver.young(); },
+                             "Young's modulus E of the flat [Pa].");
 
   m.def("stresses", &stresses, py::arg("pressure"), py::arg("lx"), py::arg("ly") = -1.0, py::arg("poisson"),
         py::arg("depths"), py::arg("traction_x") = py::none(), py::arg("traction_y") = py::none(),

@@ -89,7 +89,8 @@ Beyond the table an ArithmeticError names the pressure and the range, unless cla
       .def_property_readonly("pressure_range", [](const StrengthLaw& l) { return py::make_tuple(l.min_pressure(), l.max_pressure()); },
                              "(p_min, p_max) of the table [Pa].")
       .def_property_readonly("jumps", &StrengthLaw::jumps, "Pressures where the law jumps [Pa].")
-      .def_property_readonly("table", [](const StrengthLaw& l) { return to_dict(l.table()); });
+      .def_property_readonly("table", [](const StrengthLaw& l) { return to_dict(l.table()); },
+                             "The table interpolated: material, pressure_Pa, sigma_max_Pa, sigma_dyn_Pa arrays, provenance, origin.");
 
   m.def("critical_pressure", &critical_pressure, py::arg("law"),
         "p_crit solving sigma_max(p) = p (7.5), (9.10) [Pa]: the largest pressure a junction carries.");

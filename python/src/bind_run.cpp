@@ -2,25 +2,64 @@
 // (studies/runner.hpp), the same path as `wearscale run CASE --json`.
 #include <pybind11/stl.h>
 
+#include <csignal>
 #include <optional>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "wearscale/core/config.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/studies/runner.hpp"
 
 namespace wearscale::python {
 
+namespace {
+
+// Ctrl-C during a run: Python's own SIGINT handler only sets a flag that the C++ loops never
+// see, so a run would go on to its end. While a run started from the main thread goes, the
+// CLI's handlers are in place instead (the run saves its checkpoint, removes its unfinished
+// files and raises KeyboardInterrupt with the resume hint, as the CLI exits 130); Python's
+// are put back afterwards. A run in another thread keeps Python's (signals go to the main one).
+class RunSignals {
+ public:
+  RunSignals() {
+    const auto threading = py::module_::import("threading");
+    if (!threading.attr("current_thread")().is(threading.attr("main_thread")())) return;
+    sigaction(SIGINT, nullptr, &int_);
+    sigaction(SIGTERM, nullptr, &term_);
+    clear_interrupt();
+    install_interrupt_handlers();
+    installed_ = true;
+  }
+  ~RunSignals() {
+    if (!installed_) return;
+    sigaction(SIGINT, &int_, nullptr);
+    sigaction(SIGTERM, &term_, nullptr);
+    clear_interrupt();
+  }
+  RunSignals(const RunSignals&) = delete;
+  RunSignals& operator=(const RunSignals&) = delete;
+
+ private:
+  struct sigaction int_ {}, term_ {};
+  bool installed_ = false;
+};
+
+}  // namespace
+
 void bind_run(py::module_& m) {
   m.def("run_case", [](const std::string& case_file, const std::vector<std::string>& overrides,
-                       std::optional<std::string> out, std::optional<std::string> resume, bool quiet) {
+                       std::optional<std::string> out, std::optional<std::string> resume, bool quiet,
+                       std::optional<std::string> case_text) {
           studies::RunOptions options;
           options.case_file = case_file;
+          options.case_text = std::move(case_text);
           options.overrides = overrides;
           if (out) options.output_dir = *out;
           if (resume) options.resume_dir = *resume;
           std::string json;
+          const RunSignals signals;
           {
             py::gil_scoped_release release;
             log::set_level(quiet ? log::Level::Quiet : log::Level::Normal);
@@ -28,9 +67,10 @@ void bind_run(py::module_& m) {
           }
           return json;
         }, py::arg("case_file"), py::arg("overrides") = std::vector<std::string>{}, py::arg("out") = py::none(),
-        py::arg("resume") = py::none(), py::arg("quiet") = true,
+        py::arg("resume") = py::none(), py::arg("quiet") = true, py::arg("case_text") = py::none(),
         "Runs a case file (any study: the scale pipeline, [contact], [dem.*]) as `wearscale run CASE --set K=V... "
-        "[--out DIR] [--resume DIR] --json`; returns the JSON text.");
+        "[--out DIR] [--resume DIR] --json`; returns the JSON text. case_text: the case as TOML text instead "
+        "(case_file then names it in messages; relative file names in it are relative to the working directory).");
   m.def("check_case", [](const std::string& case_file, const std::vector<std::string>& overrides) {
           studies::RunOptions options;
           options.case_file = case_file;

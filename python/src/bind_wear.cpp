@@ -17,6 +17,15 @@ namespace {
 
 using namespace wearscale::wear;
 
+// The particle case of (4.48) from its number; any other number is refused
+// (a cast would give C_case = 0 and so a boundary at d*/l = 0, silently).
+ParticleCase particle_case_from(int c, const char* what) {
+  if (c < 0 || c > 2)
+    throw InputError(std::string(what) + ": case = " + std::to_string(c) +
+                     "; allowed: 0 (one separated) | 1 (two separated) | 2 (combined)");
+  return static_cast<ParticleCase>(c);
+}
+
 MapAxis axis(MapAxis a, double lo, double hi, std::size_t n) {
   a.min = lo;
   a.max = hi;
@@ -59,7 +68,9 @@ Disc disc_of(const std::tuple<long, long, long>& d, const Grid2D& g) {
   Disc disc{std::get<0>(d), std::get<1>(d), std::get<2>(d)};
   if (disc.cells < 1 || disc.i < 0 || disc.j < 0 || disc.i + disc.cells > static_cast<long>(g.nx) ||
       disc.j >= static_cast<long>(g.ny))
-    throw InputError("wear: disc (i, j, cells) must lie on the grid with cells >= 1");
+    throw InputError("wear: disc (i, j, cells) = (" + std::to_string(disc.i) + ", " + std::to_string(disc.j) + ", " +
+                     std::to_string(disc.cells) + "); allowed: cells >= 1, 0 <= i, i + cells <= nx = " +
+                     std::to_string(g.nx) + ", 0 <= j < ny = " + std::to_string(g.ny));
   return disc;
 }
 
@@ -136,13 +147,14 @@ particle, 2 two separated, 3 combined. Returns the same dict as analytic_map_2d.
   m.def("interaction_constant", &interaction_constant, py::arg("poisson"), py::arg("angle") = 0.0,
         "C_inter = (1 - nu sin^2 theta)/(2 - nu) (4.49); -1 < nu <= 0.5, theta [rad] the angle of the contacts' line to the traction.");
   m.def("boundary_dstar_over_l", [](int particle_case, py::array_t<double> d_over_l, double c_inter) {
-          return py::vectorize([particle_case, c_inter](double x) {
-            return boundary_dstar_over_l(static_cast<ParticleCase>(particle_case), x, c_inter);
+          const ParticleCase pc = particle_case_from(particle_case, "wear.boundary_dstar_over_l");
+          return py::vectorize([pc, c_inter](double x) {
+            return boundary_dstar_over_l(pc, x, c_inter);
           })(d_over_l);
         }, py::arg("case"), py::arg("d_over_l"), py::arg("c_inter"),
         "d*/l on the line R = 1 (4.48) of case 0 (one separated), 1 (two separated) or 2 (combined) at d/l.");
   m.def("energy_ratio_3d", [](int particle_case, double d_over_l, double dstar_over_l, double c_inter) {
-          return energy_ratio_3d(static_cast<ParticleCase>(particle_case), d_over_l, dstar_over_l, c_inter);
+          return energy_ratio_3d(particle_case_from(particle_case, "wear.energy_ratio_3d"), d_over_l, dstar_over_l, c_inter);
         }, py::arg("case"), py::arg("d_over_l"), py::arg("dstar_over_l"), py::arg("c_inter"),
         "R = (C_n + (3 pi/8) C_inter d/l)(d/d*) C_case (4.48).");
   m.def("disc_mask", &disc_mask, py::arg("nx"), py::arg("ny"), py::arg("disc"),

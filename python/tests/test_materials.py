@@ -67,3 +67,19 @@ def test_the_data_directory_holds_the_tables_and_can_be_pointed_elsewhere(tmp_pa
     finally:
         ws.materials.set_data_directory("")
     assert ws.materials.data_directory() == d
+
+
+def test_a_table_file_a_constant_law_and_the_tangential_resistance_7_9():
+    assert "thesis" in ws.materials.shipped_sets()
+    t = ws.materials.strength_table("Si")
+    back = ws.materials.read_strength_table(t["origin"])
+    assert np.array_equal(back["sigma_max_Pa"], t["sigma_max_Pa"]) and back["material"] == "Si"
+    law = ws.materials.StrengthLaw("Si")
+    assert all(law.pressure_range[0] <= p <= law.pressure_range[1] for p in law.jumps)
+    # p_T = (A/A0) σ(p_N A0/A) (7.9): at A/A0 = 0.1 the junctions carry 10 GPa < 20 GPa, where
+    # σ_dyn = 1.5 GPa and σ_max = 10.6 GPa (Fig. 9.18)
+    assert ws.materials.tangential_resistance(law, 1e9, 0.1) == approx(1.5e8, rel=1e-9)
+    assert ws.materials.tangential_resistance(law, 1e9, 0.1, peak=True) == approx(1.06e9, rel=1e-9)
+    flat = ws.materials.StrengthLaw.constant("X", 2e9, 50e9)
+    assert flat.sigma_max(3e9) == 2e9 and flat.sigma_dyn(np.array([1e9, 4e10])).tolist() == [2e9, 2e9]
+    assert ws.materials.critical_pressure(flat) == approx(2e9, rel=1e-9)  # σ_max(p) = p (7.5)

@@ -72,6 +72,16 @@ def test_bad_parameters_name_the_key_and_the_allowed_range():
         ws.surface.generate(64, 1.0, sa=1.0, rms=1.0)
 
 
+def test_the_supported_formats_are_named_and_an_h5_output_is_seen_by_io(tmp_path):
+    formats = ws.surface.supported_formats()
+    assert len(formats) >= 5 and all(isinstance(f, str) and f for f in formats)
+    s = ws.surface.generate(16, 1e-4, k_s=8, seed=1)
+    ws.surface.write(tmp_path / "s.h5", s)
+    assert ws.io.exists(str(tmp_path / "s.h5"), "/surface/height")
+    assert not ws.io.exists(str(tmp_path / "s.h5"), "/surface/nothing")
+    assert np.array_equal(ws.io.read(str(tmp_path / "s.h5"), "/surface/height"), s.heights)
+
+
 def test_a_missing_file_is_a_value_error_naming_it(tmp_path):
     with pytest.raises(ValueError, match="nothing.h5"):
         ws.surface.read(tmp_path / "nothing.h5")

@@ -26,6 +26,11 @@ def test_the_3d_map_has_the_regions_of_fig_4_6_and_r_is_1_on_their_boundaries():
         line = ws.wear.boundary_dstar_over_l(case, d, 2 / 3)
         for x, y in zip(d, line):
             assert ws.wear.energy_ratio_3d(case, x, y, 2 / 3) == approx(1.0, rel=1e-12)
+    # a case other than 0, 1, 2 is refused, not read as C_case = 0 (a boundary at d*/l = 0)
+    with pytest.raises(ws.InputError, match=r"case = 3.*0 \(one separated\) \| 1 \(two separated\) \| 2 \(combined\)"):
+        ws.wear.boundary_dstar_over_l(3, d, 2 / 3)
+    with pytest.raises(ValueError, match="case = -1"):
+        ws.wear.energy_ratio_3d(-1, 0.5, 0.5, 2 / 3)
     # less interaction (1/3) shrinks every wear region
     weak = ws.wear.analytic_map_3d(c_inter=1 / 3, nx=51, ny=41)
     assert np.count_nonzero(weak["region"] > 0) < np.count_nonzero(m["region"] > 0)
@@ -56,6 +61,8 @@ def test_the_energy_released_by_one_of_two_contacts_is_4_44_minus_4_33():
     two = ws.wear.energy_release(ws.wear.disc_mask(n, n, a) | ws.wear.disc_mask(n, n, b), lx, G, nu, q, a)
     one = ws.wear.energy_release(ws.wear.disc_mask(n, n, a), lx, G, nu, q, a)
     assert two["release_J"] == approx(two["work_J"] - two["self_energy_J"], rel=1e-14)
+    with pytest.raises(ValueError, match=r"disc \(i, j, cells\) = \(120, 64, 16\); allowed: .*i \+ cells <= nx = 128"):
+        ws.wear.energy_release(ws.wear.disc_mask(n, n, a), lx, G, nu, q, (120, 64, 16))
     assert one["release_J"] == approx(one["elastic_energy_J"], rel=1e-9)  # one contact: all of it
     # the 16-cell staircase disc holds 3.6 % less energy than the circle of (4.33)
     assert one["release_J"] == approx((2 - nu) * d**3 * q**2 / (12 * G), rel=0.04)

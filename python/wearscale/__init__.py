@@ -6,7 +6,7 @@ Submodules (each function's docstring gives units, ranges and the thesis' equati
 - :mod:`wearscale.contact`   BEM normal and frictional contact, stresses at depth, Hertz
 - :mod:`wearscale.materials` material records, strength tables, the junction model (§7.1.2, §9.3.2)
 - :mod:`wearscale.wear`      analytic 2D/3D wear maps, the rough-surface wear map
-- :mod:`wearscale.dem`       the cohesive DEM patch test and material targets
+- :mod:`wearscale.dem`       the cohesive DEM: targets, patch test, sheared junction, rough shear, trapped particles
 - :mod:`wearscale.io`        HDF5 datasets of wearscale's outputs as NumPy arrays
 - :func:`wearscale.run`      any case through the CLI's runner, ``--set`` overrides as keywords
 

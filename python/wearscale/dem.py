@@ -1,6 +1,7 @@
-"""The coarse-grained cohesive DEM (thesis ch. 6-7): material targets and the patch test (§6.2.1).
-The other DEM studies (sheared junction, rough shear, trapped particles) run as cases
-through :func:`wearscale.run`."""
+"""The coarse-grained cohesive DEM (thesis ch. 6-7): material targets (§6.1), the patch test
+(§6.2.1), the sheared junction (§6.3), sheared rough surfaces (§7.2) and trapped particles (§7.3),
+each with its results, history arrays (time series) and final particles where the study has them.
+The same studies run as cases through :func:`wearscale.run` (``[dem.*]``)."""
 from . import _wearscale
 
 _compiled = _wearscale.dem

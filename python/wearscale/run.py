@@ -6,7 +6,6 @@ The one adapter to the C++ runner is python/src/bind_run.cpp.
 import json
 import math
 import os
-import tempfile
 from pathlib import Path
 
 
@@ -73,6 +72,7 @@ class RunResult(dict):
 
     @property
     def output_dir(self):
+        """The run's output folder (summary.json, run.h5, ...) as a Path."""
         return Path(self["output_dir"])
 
     @property
@@ -81,6 +81,7 @@ class RunResult(dict):
         return {k: v["value"] if isinstance(v, dict) and "value" in v else v for k, v in self.get("results", {}).items()}
 
     def h5_files(self):
+        """Every HDF5 file the run wrote (run.h5, contact.h5, those of a sweep's runs), sorted."""
         return sorted(self.output_dir.rglob("*.h5"))
 
     def load(self, dataset, file=None):
@@ -97,7 +98,8 @@ class RunResult(dict):
 def run(case, out=None, resume=None, quiet=True, set=None, **overrides):
     """Runs a case as ``wearscale run CASE --set KEY=VALUE... --json`` does and returns a :class:`RunResult`.
 
-    case: a TOML file path, a TOML string or a dict. Overrides as keywords with ``__`` for the dots
+    case: a TOML file path, a TOML string or a dict (relative file names in a dict or string are
+    relative to the working directory, in a file to the file's folder). Overrides as keywords with ``__`` for the dots
     (``contact__grid=64`` is ``--set contact.grid=64``) or as ``set={"contact.grid": 64}``; strings
     keep their units ("1 um"). out: the output folder (--out), else the case's [output].dir;
     resume: the folder of a run to continue (--resume). Releases the GIL while it runs.
@@ -105,26 +107,16 @@ def run(case, out=None, resume=None, quiet=True, set=None, **overrides):
     """
     sets = [_override(k.replace("__", "."), v) for k, v in overrides.items()]
     sets += [_override(k, v) for k, v in (set or {}).items()]
-    tmp = None
-    try:
-        if isinstance(case, dict):
-            text = to_toml(case)
-        elif isinstance(case, str) and ("\n" in case or "=" in case) and not os.path.exists(case):
-            text = case
-        else:
-            text = None
-        if text is not None:
-            fd, tmp = tempfile.mkstemp(prefix="wearscale-case-", suffix=".toml")
-            with os.fdopen(fd, "w") as f:
-                f.write(text)
-            path = tmp
-        else:
-            path = str(case)
-        summary = _wearscale.runner.run_case(path, sets, None if out is None else str(out),
-                                             None if resume is None else str(resume), quiet)
-    finally:
-        if tmp:
-            os.unlink(tmp)
+    # A dict or TOML text goes to the runner as text, not through a temporary file: its relative
+    # file names are relative to the working directory, and messages name "<case dict>:LINE".
+    if isinstance(case, dict):
+        path, text = "<case dict>", to_toml(case)
+    elif isinstance(case, str) and ("\n" in case or "=" in case) and not os.path.exists(case):
+        path, text = "<case string>", case
+    else:
+        path, text = str(case), None
+    summary = _wearscale.runner.run_case(path, sets, None if out is None else str(out),
+                                         None if resume is None else str(resume), quiet, text)
     return RunResult(json.loads(summary))
 
 

@@ -31,6 +31,7 @@ class Surface:
 
     @property
     def shape(self):
+        """(nx, ny) of the heights."""
         return self.heights.shape
 
     def analyze(self, **kwargs):
@@ -83,3 +84,5 @@ def sphere(n, size, radius, cx=None, cy=None):
 
 for _f, _c in ((analyze, _s.analyze), (read, _s.read)):
     _f.__doc__ = _c.__doc__.split("\n", 2)[-1] if _c.__doc__ else None
+
+__all__ = ["Surface", "analyze", "generate", "h_prime_rms", "h_rms", "read", "sa", "sphere", "supported_formats", "write"]

@@ -476,6 +476,7 @@ RunSummary run_case(const RunOptions& options_in) {
     options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   const int threads = thread_budget();
   const CaseLoader parse = [&] {
+    if (options.case_text) return Config::from_string(*options.case_text, options.case_file.string());
     return options.case_file.empty() ? Config::from_string("", "<command line>") : Config::load(options.case_file);
   };
   Config probe = load(parse, options);

@@ -1,6 +1,7 @@
 # ctest install.*: `cmake --install` of the build tree into a scratch prefix,
 # then (STEP=cxx) an external CMake project that find_package(wearscale)s it,
-# links wearscale::bem and checks a Hertz contact, or (STEP=python) the
+# links wearscale::bem and checks a Hertz contact, a program compiled with
+# `c++ $(pkg-config --cflags --libs wearscale)` alone and run, or (STEP=python) the
 # installed Python package imported from outside the source and build trees.
 #   cmake -DBUILD=<build tree> -DPREFIX=<scratch> -DSTEP=cxx|python [-DPYTHON=...] [-DPYDIR=...] -P install_test.cmake
 function(run)
@@ -33,8 +34,18 @@ if(STEP STREQUAL "cxx")
   # folder only if it sits in the prefix; it is run from the consumer's build
   # tree, so it is pointed at the installed data explicitly, as a user would.
   run(${CMAKE_COMMAND} -E env WEARSCALE_DATA=${PREFIX}/share/wearscale/data ${consumer}/hertz_consumer)
-  # pkg-config names the libraries and headers of the same prefix.
-  run(${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${PREFIX}/lib/pkgconfig pkg-config --cflags --libs wearscale)
+  # pkg-config names the libraries and headers of the same prefix, and they are enough to
+  # compile, link and run a program with the compiler alone (no CMake): pkgconfig_consumer.cpp.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${PREFIX}/lib/pkgconfig
+                          pkg-config --cflags --libs wearscale
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE pc_flags ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "pkg-config --cflags --libs wearscale failed (${rc}): ${err}")
+  endif()
+  message("pkg-config --cflags --libs wearscale: ${pc_flags}")
+  separate_arguments(pc_flags UNIX_COMMAND "${pc_flags}")  # as a shell splits $(pkg-config ...)
+  run(${CXX} -std=c++20 ${SOURCE}/tests/install/pkgconfig_consumer.cpp ${pc_flags} -o ${consumer}/pkgconfig_consumer)
+  run(${CMAKE_COMMAND} -E env WEARSCALE_DATA=${PREFIX}/share/wearscale/data ${consumer}/pkgconfig_consumer)
   # The installed CLI runs and reads the shipped tables of its own prefix (run.h5 records the table's path).
   run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale version)
   file(REMOVE_RECURSE ${consumer}/data-lookup)

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "wearscale/core/version.hpp"
 #include "wearscale/coupling/quantity.hpp"
 
 namespace wearscale::coupling {
@@ -19,7 +20,7 @@ struct Provenance {
   std::string scale;           ///< scale kind: "molecular", "nano", "macro"
   std::string backend;         ///< backend name
   nlohmann::json parameters;   ///< the backend's resolved case section
-  std::string version = WEARSCALE_VERSION;
+  std::string version = wearscale::version();  // a function, not the macro: the installed header needs no define
   nlohmann::json to_json() const;
 };
 

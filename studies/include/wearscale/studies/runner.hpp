@@ -27,6 +27,9 @@ namespace wearscale::studies {
 
 struct RunOptions {
   std::filesystem::path case_file;                ///< empty: no case file (a command's flags give the keys)
+  /// The case as TOML text instead of a file (Python's dict or string case): case_file then only
+  /// names it in messages, and its relative file names are relative to the working directory.
+  std::optional<std::string> case_text;
   std::string study;                              ///< the study to run; empty: the case says (study_of)
   std::string command;                            ///< the command line for messages; empty: `wearscale run ...`
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set
