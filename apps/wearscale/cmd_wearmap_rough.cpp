@@ -320,9 +320,11 @@ int run_rough(const WearmapCase& wcase) {
     w.commit();
   }
   sidecar.write(xmf, h5);
-  write_csv(csv, names, columns, {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
+  // Every column is a ratio, a count or a length / L, a volume / L^3: dimensionless.
+  const auto plain = [](const std::vector<std::string>& n) { return std::vector<std::string>(n.size(), "1"); };
+  write_csv(csv, names, columns, plain(names), {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
                                   "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
-  write_csv(pcsv, pnames, pcols, {"every detached particle of every seed and pixel; lengths / L"});
+  write_csv(pcsv, pnames, pcols, plain(pnames), {"every detached particle of every seed and pixel; lengths / L"});
   {
     std::vector<std::string> cn = {"p_N_tilde"};
     std::vector<std::vector<double>> cv(1 + 6 * nd, std::vector<double>(nl));
@@ -339,10 +341,10 @@ int run_rough(const WearmapCase& wcase) {
       }
     }
     std::vector<std::span<const double>> spans(cv.begin(), cv.end());
-    write_csv(ccsv, cn, spans,
+    write_csv(ccsv, cn, spans, plain(cn),
               {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3, and the number "
                "of particles smoothed as in §5.2 (wearmap_rough_peaks.csv: the maximum of each curve)"});
-    write_csv(kcsv, peak_names, peak_cols, {peak_note});
+    write_csv(kcsv, peak_names, peak_cols, plain(peak_names), {peak_note});
   }
   nlohmann::json files = {h5.string(), xmf.string(), csv.string(), pcsv.string(), ccsv.string(), kcsv.string()};
   // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
