@@ -12,10 +12,6 @@ Command add_completion(CLI::App& app) {
   auto* cmd = app.add_subcommand("completion", "Print a bash or zsh completion script for wearscale");
   auto shell = std::make_shared<std::string>();
   cmd->add_option("shell", *shell, "Shell: bash or zsh")->required()->check(CLI::IsMember({"bash", "zsh"}));
-  cmd->footer(
-      "\nExamples:\n"
-      "  source <(wearscale completion bash)\n"
-      "  wearscale completion zsh > ~/.zfunc/_wearscale   # with fpath+=(~/.zfunc) before compinit");
   const CLI::App* root = &app;
   return [root, shell]() {
     std::cout << (*shell == "bash" ? bash_completion(*root) : zsh_completion(*root));

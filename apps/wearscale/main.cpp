@@ -23,6 +23,7 @@
 
 #include "commands.hpp"
 #include "completion.hpp"
+#include "examples.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
@@ -91,6 +92,7 @@ int run(int argc, char** argv) {
   add(app::add_dem);
   add(app::add_wearmap);
   add(app::add_completion);
+  app::add_examples(app);
 
   if (const auto unknown = unknown_command(app, argc, argv)) {
     std::vector<std::string> names;
