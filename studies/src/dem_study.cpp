@@ -360,6 +360,8 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   return {{"verdict", r.verdict()},
+          {"caption", fmt::format("{}, D = {:.3g} nm, d_0 = {:.3g} nm, p_N = {:.3g} GPa", spec.material.name,
+                                  spec.diameter * 1e9, spec.d0 * 1e9, spec.pressure / 1e9)},
           {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
 }
 
@@ -432,7 +434,11 @@ nlohmann::json run_rough_shear_study(const Config& root, RunContext& context) {
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"verdict", r.regime}, {"files", files}};
+  return {{"verdict", r.regime},
+          {"caption", fmt::format("{}, L = {:.3g} nm, Sa/L = {:g}, d_0 = {:.3g} nm, p_N = {:.3g} GPa",
+                                  spec.cell.material.name, spec.cell.box.x * 1e9, spec.roughness, d0 * 1e9,
+                                  spec.cell.pressure / 1e9)},
+          {"files", files}};
 }
 
 nlohmann::json run_trapped_particles_study(const Config& root, RunContext& context) {
@@ -496,7 +502,11 @@ nlohmann::json run_trapped_particles_study(const Config& root, RunContext& conte
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"verdict", r.regime()}, {"files", files}};
+  return {{"verdict", r.regime()},
+          {"caption", fmt::format("{}, n = {} particles of D = {:.3g} nm, d_0 = {:.3g} nm, p_N = {:.3g} GPa",
+                                  spec.cell.material.name, spec.count, spec.diameter * 1e9, d0 * 1e9,
+                                  spec.cell.pressure / 1e9)},
+          {"files", files}};
 }
 
 // A measured E ≤ 0 or ν outside (−1, 0.5) is no elastic solid: the patch
@@ -530,7 +540,10 @@ class DemStudy : public Study {
     const std::string verdict = outputs["verdict"].get<std::string>();
     context.note("verdict", verdict);
     const auto& out = context.output_dir();
-    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), verdict))
+    // The title states the parameters, then the verdict.
+    const std::string title =
+        outputs.contains("caption") ? outputs["caption"].get<std::string>() + ": " + verdict : verdict;
+    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), title))
       context.add_file(*png);
   }
   static Schema material_keys(const std::string& flag_doc) {
