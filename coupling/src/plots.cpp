@@ -122,7 +122,8 @@ std::string legend_label(const std::string& run_label) {
         } else {
           char* end = nullptr;
           const double h = std::strtod(value.c_str(), &end);
-          if (end == value.c_str() + value.size() && !value.empty()) part = fmt::format("h = {:g} µm", h * 1e6);
+          if (end == value.c_str() + value.size() && !value.empty())
+            part = h == 0.0 ? std::string("h = 0 (no oxide)") : fmt::format("h = {:g} µm", h * 1e6);
         }
       }
     }
