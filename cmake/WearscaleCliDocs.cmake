@@ -12,12 +12,15 @@ set(cli_docs ${PROJECT_BINARY_DIR}/cli-docs)
 set(bash_completion ${cli_docs}/bash-completion/wearscale)
 set(zsh_completion ${cli_docs}/zsh/_wearscale)
 set(man_page ${cli_docs}/man1/wearscale.1)
+# Every command's help, which tests/apps/test_help_examples_cli.cpp reads its examples from.
+set(WEARSCALE_HELP_ALL ${cli_docs}/help-all.txt)
 set(h2m ${PROJECT_SOURCE_DIR}/apps/wearscale/wearscale.h2m)
 
-add_custom_command(OUTPUT ${bash_completion} ${zsh_completion}
+add_custom_command(OUTPUT ${bash_completion} ${zsh_completion} ${WEARSCALE_HELP_ALL}
   COMMAND ${CMAKE_COMMAND} -E make_directory ${cli_docs}/bash-completion ${cli_docs}/zsh
   COMMAND $<TARGET_FILE:wearscale> completion bash > ${bash_completion}
   COMMAND $<TARGET_FILE:wearscale> completion zsh > ${zsh_completion}
+  COMMAND $<TARGET_FILE:wearscale> --help-all > ${WEARSCALE_HELP_ALL}
   DEPENDS wearscale VERBATIM COMMENT "Generating the bash and zsh completion of wearscale")
 set(outputs ${bash_completion} ${zsh_completion})
 

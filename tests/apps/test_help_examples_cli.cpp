@@ -8,8 +8,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,15 +27,9 @@ struct Example {
   std::vector<std::string> examples;  // all of the command's examples
 };
 
-std::string help_all() {
-  std::string out;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(("'" + std::string(WEARSCALE_CLI) + "' --help-all").c_str(), "r"),
-                                             pclose);
-  if (!pipe) return out;
-  char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe.get())) out.append(buffer, n);
-  return out;
-}
+// `wearscale --help-all`, written by the build (every test process lists the
+// examples: reading a file is cheaper than starting the program each time).
+std::string help_all() { return slurp(WEARSCALE_HELP_ALL); }
 
 // The commands of --help-all (headings "wearscale <command>:") with their examples.
 std::vector<std::pair<std::string, std::vector<std::string>>> commands_and_examples() {
