@@ -148,21 +148,29 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& c = curves[k];
     const std::string rgb = colour(k);
+    // One run: the title names it, the legend says what the lines are.
+    const bool one = curves.size() == 1;
+    const std::string name = literal(legend_label(c.label));
     if (has_column(c.csv, "friction_moving_average")) {
       mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1 lc rgb '#A0{}' notitle, "
                         "'' using ($1*1e3):(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
-                        k ? ", " : "", data(c.csv), rgb, rgb, literal(legend_label(c.label)));
+                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "moving average" : name);
     } else {
       mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
-                        data(c.csv), rgb, literal(legend_label(c.label)));
+                        data(c.csv), rgb, one ? "μ" : name);
     }
     // One legend entry per series (its colour); the line style tells pin from disc.
     wear += fmt::format("{}'{}' using ($1*1e3):(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' notitle, "
-                        "'' using ($1*1e3):(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' title '{}'",
-                        k ? ", " : "", data(c.csv), rgb, rgb, literal(legend_label(c.label)));
+                        "'' using ($1*1e3):(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' {}",
+                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "notitle" : "title '" + name + "'");
   }
-  wear += ", NaN with lines lw 1.5 lc rgb 'black' title 'disc (solid)', "
-          "NaN with lines lw 1.5 dt 2 lc rgb 'black' title 'pin (dashed)'";
+  if (curves.size() > 1)
+    wear += ", NaN with lines lw 1.5 lc rgb 'black' title 'disc (solid)', "
+            "NaN with lines lw 1.5 dt 2 lc rgb 'black' title 'pin (dashed)'";
+  else if (curves.size() == 1)
+    wear += fmt::format(", NaN with lines lw 1.5 lc rgb '#{0}' title 'disc', NaN with lines lw 1.5 dt 2 lc rgb '#{0}' "
+                        "title 'pin'",
+                        colour(0));
   // Both panels share the x axis and the same margins, so that their axes align
   // whatever the width of the tick labels and of the legend outside.
   const std::string script = fmt::format(
