@@ -19,15 +19,17 @@ Command add_dem(CLI::App& app) {
   auto* dem = app.add_subcommand(
       "dem", "Coarse-grained cohesive DEM (thesis ch. 6-7): patch tests, sheared junctions, rough surfaces, trapped particles");
   dem->require_subcommand(1);
-  const std::pair<const char*, const char*> studies[] = {
-      {"patch-test", "dem/patch_test"},
-      {"junction", "dem/junction"},
-      {"rough-shear", "dem/rough_shear"},
-      {"trapped-particles", "dem/trapped_particles"}};
+  struct Entry {
+    const char *command, *study, *set_example;  // a key of the study's own for --set's help
+  };
+  const Entry studies[] = {{"patch-test", "dem/patch_test", "dem.patch_test.width=4"},
+                           {"junction", "dem/junction", "dem.junction.seed=2"},
+                           {"rough-shear", "dem/rough_shear", "dem.rough_shear.seed=2"},
+                           {"trapped-particles", "dem/trapped_particles", "dem.trapped_particles.seed=2"}};
   std::vector<std::pair<CLI::App*, Command>> commands;
-  for (const auto& [command, study] : studies) {
+  for (const auto& [command, study, set_example] : studies) {
     auto run = add_study_command(*dem, command, study, studies::study_registry().create(study)->summary(),
-                                 "dem.patch_test.width=4");
+                                 set_example);
     commands.emplace_back(dem->get_subcommands({}).back(), std::move(run));
   }
   return [dem, commands]() {

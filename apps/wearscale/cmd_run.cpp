@@ -47,7 +47,7 @@ void set_invocation(int argc, char** argv) {
 Command add_run(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Run a case file: its study (the scale pipeline, contact, ...), its sweep, its outputs");
   auto f = std::make_shared<StudyFlags>();
-  cmd->add_option("case", f->options.case_file, "Case file (TOML), e.g. cases/pin_on_disc.toml")->required();
+  cmd->add_option("case", f->options.case_file, "Case file (TOML), e.g. cases/pin_on_disc_si_oxide.toml")->required();
   add_runner_flags(cmd, *f, "scale.macro.grid=64");
   return [f]() { return run_study(*f); };
 }

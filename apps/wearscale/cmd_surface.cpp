@@ -239,10 +239,10 @@ int run_analyze(const AnalyzeOptions& o) {
   if (!o.psd_out.empty()) {
     std::vector<double> count(radial.count.begin(), radial.count.end());
     const fs::path csv(o.psd_out);
-    write_csv(csv, {"q", "C", "count"}, {radial.q, radial.c, count},
+    write_csv(csv, {"q", "C", "count"}, {radial.q, radial.c, count}, {"rad/m", "m^4", "1"},
               {fmt::format("radial PSD of {} ({}), C = LxLy/(nx²ny²)|ĥ|² (thesis 1.9)", o.file, g.to_string()),
                o.window ? "plane removed, radial Hann window, normalised by <w²>" : "no window (periodic data)",
-               "q: mean |q| of the bin [rad/m]; C: mean PSD [m^4]; count: modes in the bin"});
+               "q_rad_per_m: mean |q| of the bin; C_m4: mean PSD; count: modes in the bin"});
   }
 
   const char* method = o.window ? "finite-difference" : "spectral";
@@ -323,7 +323,7 @@ Command add_surface(CLI::App& app) {
   ana->add_flag("--window,!--no-window", a->window,
                 "Level the data and apply a radial Hann window before the PSD (default, for measured data); "
                 "--no-window for periodic surfaces such as generated ones");
-  ana->add_option("--psd-out", a->psd_out, "Write the radial PSD as CSV (columns q, C, count)");
+  ana->add_option("--psd-out", a->psd_out, "Write the radial PSD as CSV (columns q_rad_per_m, C_m4, count)");
   ana->add_flag("--json", a->json, "Print the results as one JSON object");
 
   return [gen, g, a]() { return gen->parsed() ? run_generate(*g) : run_analyze(*a); };

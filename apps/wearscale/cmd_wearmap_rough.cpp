@@ -112,6 +112,12 @@ std::vector<double> geometric(std::pair<double, double> r, std::size_t k) {
   return v;
 }
 
+// Viridis (perceptually uniform, readable in grey and by the colour-blind),
+// for the maps; Okabe & Ito's palette for the curves.
+const char* const kViridis = "set palette defined (0 '#440154', 1 '#482878', 2 '#3E4989', 3 '#31688E', 4 '#26828E', "
+                             "5 '#1F9E89', 6 '#35B779', 7 '#6DCD59', 8 '#B4DE2C', 9 '#FDE725')\n";
+const char* const kOkabeIto[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
+
 // Fig. 5.6: one map (column `col` of the pixel CSV) over (p̃_N, d*/L), invalid pixels crossed.
 std::string map_script(const fs::path& csv, int col, const std::string& title, bool log_scale,
                        const std::vector<double>& loads, const std::vector<double>& dstars) {
@@ -119,34 +125,44 @@ std::string map_script(const fs::path& csv, int col, const std::string& title, b
   const double ps = 60.0 / static_cast<double>(std::max(nl, nd));
   const double dx = nl > 1 ? 0.5 * (loads.back() - loads.front()) / double(nl - 1) : 0.5 * loads.front();
   const double fy = nd > 1 ? std::pow(dstars.back() / dstars.front(), 0.5 / double(nd - 1)) : 1.5;
+  // One header line, then a row per pixel (skip 1).
   return fmt::format(
-      "set datafile separator ','\nset title '{}'\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
+      "set datafile separator ','\nset title '{}' noenhanced\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
       "set ylabel 'd*/L (4.35), crossed: invalid' noenhanced\nset logscale y\nset xrange [{}:{}]\n"
-      "set yrange [{}:{}]\n{}set palette rgb 33,13,10\nset key off\n"
-      "plot '{}' skip 2 using 1:2:({}) with points pt 5 ps {:.3g} lc palette, \\\n"
-      "  '' skip 2 using 1:($9 > 0.5 ? NaN : $2) with points pt 2 ps {:.3g} lc rgb 'black'\n",
+      "set yrange [{}:{}]\n{}{}set key off\n"
+      "plot '{}' skip 1 using 1:2:({}) with points pt 5 ps {:.3g} lc palette, \\\n"
+      "  '' skip 1 using 1:($9 > 0.5 ? NaN : $2) with points pt 2 ps {:.3g} lc rgb 'black'\n",
       title, loads.front() - dx, loads.back() + dx, dstars.front() / fy, dstars.back() * fy,
-      log_scale ? "set logscale cb\n" : "", csv.string(),
+      log_scale ? "set logscale cb\nset format cb '10^{%L}'\n" : "", kViridis, csv.string(),
       log_scale ? fmt::format("${} > 0 ? ${} : NaN", col, col) : fmt::format("${}", col), ps, 0.6 * ps);
 }
 
 // Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid
-// points cut; the number of particles also smoothed (dashed, §5.2).
-std::string curves_script(const fs::path& csv, std::size_t nd, bool volume) {
-  const std::size_t step = std::max<std::size_t>(1, nd / 5);
+// points cut; the number of particles also smoothed (dashed, §5.2; a count,
+// drawn from 0 up: the filter's undershoot below 0 is not drawn).
+std::string curves_script(const fs::path& csv, const std::vector<double>& dstars, bool volume) {
+  const std::size_t nd = dstars.size(), step = std::max<std::size_t>(1, nd / 5);
   const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid, smoothed count
-  const std::string smoothed =
-      volume ? "" : fmt::format(", for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+6*k) > 0.5 ? column(7+6*k) : NaN) "
-                                "with lines dt 2 lc k/{}+1 notitle",
-                                nd - 1, step, csv.string(), step);
+  std::string plots;
+  for (std::size_t d = 0, c = 0; d < nd; d += step, ++c) {
+    const int base = static_cast<int>(6 * d);
+    const char* colour = kOkabeIto[c % (sizeof kOkabeIto / sizeof *kOkabeIto)];
+    plots += fmt::format("{}'{}' skip 1 using 1:(column({}) > 0.5 ? column({}) : NaN):(column({})) with yerrorlines "
+                         "lw 1.5 pt 7 ps 0.8 lc rgb '{}' title 'd*/L = {:.3g}'",
+                         plots.empty() ? "" : ", ", csv.string(), 6 + base, off + base, off + 1 + base, colour,
+                         dstars[d]);
+    if (!volume)
+      plots += fmt::format(", '' skip 1 using 1:(column({}) > 0.5 ? max(0, column({})) : NaN) with lines dt 2 lw 1.5 "
+                           "lc rgb '{}' notitle",
+                           6 + base, 7 + base, colour);
+  }
   return fmt::format(
-      "set datafile separator ','\nset title '{}'\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
-      "set ylabel '{}'\n{}set key top left noenhanced\n"
-      "plot for [k=0:{}:{}] '{}' skip 1 using 1:(column(6+6*k) > 0.5 ? column({}+6*k) : NaN):"
-      "(column({}+6*k)) with yerrorlines lc k/{}+1 title columnhead({}+6*k){}\n",
+      "set datafile separator ','\nmax(a, b) = a > b ? a : b\nset title '{}'\n"
+      "set xlabel 'normalized load p̃_N (5.1)' noenhanced\nset ylabel '{}'\n{}set grid\n"
+      "set offsets graph 0.03, graph 0.03, 0, 0\nset key top left noenhanced\nplot {}\n",
       volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a; dashed: Savitzky-Golay, 3/11)",
-      volume ? "wear volume / L^3" : "number of particles", volume ? "set logscale y\n" : "", nd - 1, step,
-      csv.string(), off, off + 1, step, off, smoothed);
+      volume ? "wear volume V / L^3" : "number of particles", volume ? "set logscale y\nset format y '10^{%L}'\n" : "set yrange [0:*]\n",
+      plots);
 }
 
 nlohmann::json result(double value, const char* unit, const std::string& description) {
@@ -320,9 +336,11 @@ int run_rough(const WearmapCase& wcase) {
     w.commit();
   }
   sidecar.write(xmf, h5);
-  write_csv(csv, names, columns, {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
+  // Every column is a ratio, a count or a length / L, a volume / L^3: dimensionless.
+  const auto plain = [](const std::vector<std::string>& n) { return std::vector<std::string>(n.size(), "1"); };
+  write_csv(csv, names, columns, plain(names), {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
                                   "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
-  write_csv(pcsv, pnames, pcols, {"every detached particle of every seed and pixel; lengths / L"});
+  write_csv(pcsv, pnames, pcols, plain(pnames), {"every detached particle of every seed and pixel; lengths / L"});
   {
     std::vector<std::string> cn = {"p_N_tilde"};
     std::vector<std::vector<double>> cv(1 + 6 * nd, std::vector<double>(nl));
@@ -339,10 +357,10 @@ int run_rough(const WearmapCase& wcase) {
       }
     }
     std::vector<std::span<const double>> spans(cv.begin(), cv.end());
-    write_csv(ccsv, cn, spans,
+    write_csv(ccsv, cn, spans, plain(cn),
               {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3, and the number "
                "of particles smoothed as in §5.2 (wearmap_rough_peaks.csv: the maximum of each curve)"});
-    write_csv(kcsv, peak_names, peak_cols, {peak_note});
+    write_csv(kcsv, peak_names, peak_cols, plain(peak_names), {peak_note});
   }
   nlohmann::json files = {h5.string(), xmf.string(), csv.string(), pcsv.string(), ccsv.string(), kcsv.string()};
   // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
@@ -353,8 +371,8 @@ int run_rough(const WearmapCase& wcase) {
       {map_script(OutputSet::readable(csv), 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads,
                   spec.critical_diameters),
        "volume"},
-      {curves_script(OutputSet::readable(ccsv), nd, false), "curves_count"},
-      {curves_script(OutputSet::readable(ccsv), nd, true), "curves_volume"}};
+      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, false), "curves_count"},
+      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, true), "curves_volume"}};
   for (const auto& [script, name] : plots)
     if (auto p = coupling::render_plot(script, out / ("wearmap_rough_" + name + ".png"), 1000, 760))
       files.push_back(p->string());

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <new>
 #include <optional>
@@ -21,6 +22,8 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "completion.hpp"
+#include "examples.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
@@ -72,6 +75,8 @@ int run(int argc, char** argv) {
   app.add_flag("-v,--verbose", verbose, "Debug messages on stderr");
   app.add_option("-j,--threads", threads, "OpenMP and FFTW threads (default: all cores)")->check(CLI::Range(1, 1024));
   app.set_version_flag("--version", "wearscale " + version(), "Print the version of wearscale and exit");
+  // Before the subcommands, which inherit it: every command's help at once (for help2man, the man page).
+  app.set_help_all_flag("--help-all", "Print the help of every command and exit");
 
   std::map<CLI::App*, app::Command> commands;
   auto add = [&](app::Command (*adder)(CLI::App&)) {
@@ -86,6 +91,8 @@ int run(int argc, char** argv) {
   add(app::add_strength_table);
   add(app::add_dem);
   add(app::add_wearmap);
+  add(app::add_completion);
+  app::add_examples(app);
 
   if (const auto unknown = unknown_command(app, argc, argv)) {
     std::vector<std::string> names;
@@ -99,8 +106,9 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app::help_of_every_command(app);
+    return 0;
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return exit_bad_input;

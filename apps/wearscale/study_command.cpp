@@ -5,12 +5,24 @@
 
 #include <fmt/format.h>
 
+#include "completion.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::app {
 
 namespace {
+// "hcp | amorphous" → {"hcp", "amorphous"}
+std::vector<std::string> choice_list(const std::string& range) {
+  std::vector<std::string> out;
+  for (std::size_t start = 0;;) {
+    const auto bar = range.find(" | ", start);
+    out.push_back(range.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
+    if (bar == std::string::npos) return out;
+    start = bar + 3;
+  }
+}
+
 // One row per swept value: the headline figures of the pin-on-disc runs when
 // present, else every figure.
 void print_sweep_table(const studies::RunSummary& summary) {
@@ -56,8 +68,10 @@ void add_runner_flags(CLI::App* cmd, StudyFlags& f, const std::string& example) 
 void add_schema_flags(CLI::App* cmd, StudyFlags& f, const std::string& study) {
   for (const auto& spec : studies::study_registry().create(study)->schema())
     if (spec.flag.empty()) continue;
-    else if (spec.switch_value.empty())
-      cmd->add_option(spec.flag, f.keys[spec.key], studies::help_line(spec));
+    else if (spec.switch_value.empty()) {
+      auto* option = cmd->add_option(spec.flag, f.keys[spec.key], studies::help_line(spec));
+      if (spec.type == "choice") with_choices(option, choice_list(spec.range));
+    }
     else  // a switch: sets its key to one value
       cmd->add_flag_callback(spec.flag, [&f, spec] { f.keys[spec.key] = spec.switch_value; },
                              fmt::format("{} = {}: {}", spec.key, spec.switch_value, spec.doc));

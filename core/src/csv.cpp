@@ -1,5 +1,6 @@
 #include "wearscale/core/csv.hpp"
 
+#include <cctype>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -16,6 +17,18 @@ std::string quoted(const std::string& cell) {
   std::string out = "\"";
   for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
+}
+
+// "m^-1" → "per_m", "m^3" → "m3", "kg" → "kg": one factor of a unit as a word.
+std::string factor_word(std::string factor, bool denominator) {
+  const auto caret = factor.find('^');
+  std::string symbol = factor.substr(0, caret), power = caret == std::string::npos ? "" : factor.substr(caret + 1);
+  if (power.starts_with("-")) {
+    denominator = !denominator;
+    power.erase(0, 1);
+  }
+  if (power == "1") power.clear();
+  return (denominator ? "per_" : "") + symbol + power;
 }
 
 std::size_t row_count(const std::vector<std::string>* labels, const std::vector<std::span<const double>>& columns) {
@@ -44,10 +57,13 @@ std::string table_text(const std::vector<std::string>* labels, const std::vector
 // The table's notes and provenance, beside it, so that the table itself is
 // one header line and rows (pandas.read_csv reads it as is). No timestamp:
 // a resumed run writes the same bytes as an uninterrupted one.
-void write_sidecar(const std::filesystem::path& path, const std::vector<std::string>& names, std::size_t rows,
-                   const std::vector<std::string>& notes) {
+void write_sidecar(const std::filesystem::path& path, const std::vector<std::string>& names,
+                   const std::vector<std::string>& units, std::size_t rows, const std::vector<std::string>& notes) {
+  nlohmann::json unit_of = nlohmann::json::object();
+  for (std::size_t k = 0; k < names.size(); ++k) unit_of[names[k]] = units[k];
   const nlohmann::json j = {{"file", path.filename().string()},
                             {"columns", names},
+                            {"units", unit_of},
                             {"rows", rows},
                             {"notes", notes},
                             {"generator", "wearscale " + version()}};
@@ -56,25 +72,65 @@ void write_sidecar(const std::filesystem::path& path, const std::vector<std::str
 
 }  // namespace
 
+std::string csv_column_name(const std::string& name, const std::string& unit) {
+  if (unit.empty()) throw std::invalid_argument("write_csv: column '" + name + "' has no unit (\"1\" if dimensionless)");
+  if (unit == "1") return name;
+  // "J/m^2" → numerator "J", denominator "m^2"; factors joined by a space or '·'.
+  std::vector<std::string> words;
+  const auto slash = unit.find('/');
+  for (int part = 0; part < 2; ++part) {
+    std::string text = part == 0 ? unit.substr(0, slash) : slash == std::string::npos ? "" : unit.substr(slash + 1);
+    for (std::size_t at; (at = text.find("·")) != std::string::npos;) text.replace(at, std::string("·").size(), " ");
+    for (std::size_t start = 0; start < text.size();) {
+      const auto space = text.find_first_of(" *", start);
+      const std::string factor = text.substr(start, space == std::string::npos ? std::string::npos : space - start);
+      if (!factor.empty() && factor != "1") words.push_back(factor_word(factor, part == 1));
+      if (space == std::string::npos) break;
+      start = space + 1;
+    }
+  }
+  std::string out = name;
+  for (const auto& w : words) out += "_" + w;
+  for (const char c : out.substr(name.size()))
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_') || words.empty())
+      throw std::invalid_argument("write_csv: cannot spell the unit '" + unit + "' of column '" + name + "'");
+  return out;
+}
+
 std::filesystem::path csv_sidecar(const std::filesystem::path& csv) {
   auto out = csv;
   out += ".json";
   return out;
 }
 
+namespace {
+// The header names and units of `names` in `units` (the label column first, without a unit).
+std::pair<std::vector<std::string>, std::vector<std::string>> headers(const std::string* label_name,
+                                                                      const std::vector<std::string>& names,
+                                                                      const std::vector<std::string>& units) {
+  if (units.size() != names.size()) throw std::invalid_argument("write_csv: names and units differ in count");
+  std::vector<std::string> header, unit;
+  if (label_name) header.push_back(*label_name), unit.push_back("");
+  for (std::size_t k = 0; k < names.size(); ++k) header.push_back(csv_column_name(names[k], units[k]));
+  unit.insert(unit.end(), units.begin(), units.end());
+  return {header, unit};
+}
+}  // namespace
+
 void write_csv(const std::filesystem::path& path, const std::vector<std::string>& names,
-               const std::vector<std::span<const double>>& columns, const std::vector<std::string>& comments) {
-  write_file_atomically(path, table_text(nullptr, names, columns));
-  write_sidecar(path, names, row_count(nullptr, columns), comments);
+               const std::vector<std::span<const double>>& columns, const std::vector<std::string>& units,
+               const std::vector<std::string>& notes) {
+  const auto [header, unit] = headers(nullptr, names, units);
+  write_file_atomically(path, table_text(nullptr, header, columns));
+  write_sidecar(path, header, unit, row_count(nullptr, columns), notes);
 }
 
 void write_csv(const std::filesystem::path& path, const std::string& label_name, const std::vector<std::string>& labels,
                const std::vector<std::string>& names, const std::vector<std::span<const double>>& columns,
-               const std::vector<std::string>& comments) {
-  std::vector<std::string> header{label_name};
-  header.insert(header.end(), names.begin(), names.end());
+               const std::vector<std::string>& units, const std::vector<std::string>& notes) {
+  const auto [header, unit] = headers(&label_name, names, units);
   write_file_atomically(path, table_text(&labels, header, columns));
-  write_sidecar(path, header, row_count(&labels, columns), comments);
+  write_sidecar(path, header, unit, row_count(&labels, columns), notes);
 }
 
 }  // namespace wearscale

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -69,8 +70,10 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
 }
 
 namespace {
-constexpr const char* kColours[] = {"1f77b4", "d62728", "2ca02c", "ff7f0e", "9467bd", "8c564b",
-                                    "e377c2", "7f7f7f", "bcbd22", "17becf"};
+// Okabe & Ito's colour-blind-safe palette (Color Universal Design, 2008), its
+// yellow last (faint on white): the k-th series has the same colour in every
+// figure of a sweep (friction curves, disc profiles).
+constexpr const char* kColours[] = {"0072B2", "D55E00", "009E73", "CC79A7", "E69F00", "56B4E9", "000000", "F0E442"};
 std::string colour(std::size_t k) { return kColours[k % (sizeof kColours / sizeof *kColours)]; }
 
 // A label in gnuplot's enhanced text, in single quotes: '_' printed as itself.
@@ -84,6 +87,52 @@ std::string literal(const std::string& text) {
   return out;
 }
 
+// The sliding distances (second column) of a history table, in order.
+std::vector<double> second_column(const std::filesystem::path& csv) {
+  std::ifstream in(OutputSet::readable(csv));
+  std::string line;
+  std::vector<double> out;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    if (comma == std::string::npos) continue;
+    try {
+      out.push_back(std::stod(line.substr(comma + 1)));
+    } catch (const std::exception&) {
+      return out;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string legend_label(const std::string& run_label) {
+  std::string out;
+  std::istringstream words(run_label);
+  for (std::string word; words >> word;) {
+    const auto eq = word.find('=');
+    std::string part = word;
+    if (eq != std::string::npos) {
+      const std::string key = word.substr(0, eq), value = word.substr(eq + 1);
+      part = key + " = " + value;
+      if (key == "thickness") {  // the oxide layer's, in metres
+        if (value == "inf") {
+          part = "h = ∞ (bulk oxide)";
+        } else {
+          char* end = nullptr;
+          const double h = std::strtod(value.c_str(), &end);
+          if (end == value.c_str() + value.size() && !value.empty())
+            part = h == 0.0 ? std::string("h = 0 (no oxide)") : fmt::format("h = {:g} µm", h * 1e6);
+        }
+      }
+    }
+    out += (out.empty() ? "" : ", ") + part;
+  }
+  return out.empty() ? run_label : out;
+}
+
+namespace {
 bool has_column(const std::filesystem::path& csv, const std::string& name) {
   std::ifstream in(OutputSet::readable(csv));  // a staged output is read under its temporary name
   std::string line;
@@ -99,27 +148,42 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& c = curves[k];
     const std::string rgb = colour(k);
+    // One run: the title names it, the legend says what the lines are.
+    const bool one = curves.size() == 1;
+    const std::string name = literal(legend_label(c.label));
     if (has_column(c.csv, "friction_moving_average")) {
-      mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1 lc rgb '#B0{}' notitle, "
-                        "'' using 1:(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
-                        k ? ", " : "", data(c.csv), rgb, rgb, literal(c.label));
+      mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1 lc rgb '#A0{}' notitle, "
+                        "'' using ($1*1e3):(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
+                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "moving average" : name);
     } else {
-      mu += fmt::format("{}'{}' using 1:(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
-                        data(c.csv), rgb, literal(c.label));
+      mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
+                        data(c.csv), rgb, one ? "μ" : name);
     }
-    wear += fmt::format("{}'{}' using 1:(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' title 'pin {}', "
-                        "'' using 1:(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' title 'disc {}'",
-                        k ? ", " : "", data(c.csv), rgb, literal(c.label), rgb, literal(c.label));
+    // One legend entry per series (its colour); the line style tells pin from disc.
+    wear += fmt::format("{}'{}' using ($1*1e3):(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' notitle, "
+                        "'' using ($1*1e3):(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' {}",
+                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "notitle" : "title '" + name + "'");
   }
+  if (curves.size() > 1)
+    wear += ", NaN with lines lw 1.5 lc rgb 'black' title 'disc (solid)', "
+            "NaN with lines lw 1.5 dt 2 lc rgb 'black' title 'pin (dashed)'";
+  else if (curves.size() == 1)
+    wear += fmt::format(", NaN with lines lw 1.5 lc rgb '#{0}' title 'disc', NaN with lines lw 1.5 dt 2 lc rgb '#{0}' "
+                        "title 'pin'",
+                        colour(0));
+  // Both panels share the x axis and the same margins, so that their axes align
+  // whatever the width of the tick labels and of the legend outside.
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
       "set multiplot layout 2,1 title '{}'\n"
-      "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right\n"
-      "set label 1 'faint: raw μ; full: moving average' at graph 0.01, graph 0.95 font ',9'\n"
+      "set lmargin at screen 0.10\nset rmargin at screen 0.74\n"
+      "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right top\n"
+      "set xlabel 'sliding distance s [mm]'\n"
+      "set label 1 'faint: raw μ; full: moving average' at graph 0.01, graph 0.93 font ',9'\n"
       "plot {}\nunset label 1\n"
-      "set ylabel 'worn volume [µm³]'\nset xlabel 'sliding distance s [m]'\nset autoscale y\n"
+      "set ylabel 'worn volume [µm³]'\nset autoscale y\nset yrange [0:*]\n"
       "plot {}\nunset multiplot\n",
-      literal(title), mu, wear);
+      literal(title), mu.empty() ? "NaN notitle" : mu, wear);
   return render_plot(script, png);
 }
 
@@ -129,7 +193,7 @@ std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<Fricti
   std::string curves;
   for (std::size_t k = 0; k < profiles.size(); ++k)
     curves += fmt::format("{}'{}' using ($1*1e3):(-$2*1e6) with lines lw 2 lc rgb '#{}' title '{}'", k ? ", " : "",
-                          data(profiles[k].csv), colour(k), literal(profiles[k].label));
+                          data(profiles[k].csv), colour(k), literal(legend_label(profiles[k].label)));
   if (layer_thickness > 0.0 && std::isfinite(layer_thickness))
     curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
                           -layer_thickness * 1e6);
@@ -153,7 +217,7 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vecto
         "'{0}' using (bulk($1)):(column('mu_final')) with points pt 5 ps 1.8 lc rgb '#{1}' title '{2}: bulk SiO_2', \\\n"
         "'{0}' using (finite($1)):(column('mu_mean')) with linespoints pt 6 dt 3 lw 1 lc rgb '#{1}' "
         "title '{2}: mean μ', \\\n",
-        file, rgb, literal(t.label));
+        file, rgb, literal(legend_label(t.label)));
   }
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
@@ -172,11 +236,21 @@ std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vecto
 
 std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::path& history_csv,
                                                          const std::filesystem::path& png, const std::string& title) {
+  // The samples are forces averaged over equal intervals of sliding; the last
+  // one closes a shorter interval when the slide is not a whole number of
+  // them, and its average of fewer steps draws a spike: it is left out.
+  const auto s = second_column(history_csv);
+  double last = s.empty() ? 0.0 : s.back();
+  if (s.size() >= 3 && s[s.size() - 1] - s[s.size() - 2] < 0.99 * (s[s.size() - 2] - s[s.size() - 3]))
+    last = s[s.size() - 2];
   return render_plot(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
-                            "set title '{}'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
-                            "set grid\nplot '{}' every ::1 using ($2*1e9):($3*1e9) with lines lw 2 title 'tangential F_T', "
-                            "'' every ::1 using ($2*1e9):($4*1e9) with lines lw 1 title 'normal F_N'\n",
-                            title, data(history_csv)),
+                            "set title '{}' font ',11'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
+                            "last = {:.17g}\nset grid\n"
+                            "plot '{}' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($3*1e9) with lines lw 2 "
+                            "lc rgb '#0072B2' title 'tangential F_T', "
+                            "'' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($4*1e9) with lines lw 1.5 "
+                            "lc rgb '#D55E00' title 'normal F_N'\n",
+                            literal(title), last, data(history_csv)),
                 png);
 }
 

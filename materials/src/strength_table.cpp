@@ -7,7 +7,10 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/text_file.hpp"
@@ -69,8 +72,35 @@ bool is_hdf5(const std::filesystem::path& p) {
 // A strength table has rows of a few pressures: 16 MiB is far beyond any.
 constexpr std::uintmax_t kMaxTableBytes = std::uintmax_t{16} << 20;
 
+// The provenance a table written by write_strength_table keeps in its
+// sidecar <file>.csv.json ("notes": ["key: value", ...]), after any in the
+// table's own '#' comments (hand-written and shipped tables).
+void read_sidecar_provenance(const std::filesystem::path& file, StrengthTable& t) {
+  const auto sidecar = csv_sidecar(file);
+  std::error_code ec;
+  if (!std::filesystem::exists(sidecar, ec)) return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_text_file(sidecar, "strength table sidecar", kMaxTableBytes));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not JSON ({}); allowed: the sidecar wearscale writes beside {}",
+                                 sidecar.string(), e.what(), file.filename().string()));
+  }
+  if (!j.is_object() || !j.contains("notes") || !j["notes"].is_array()) return;
+  for (const auto& note : j["notes"]) {
+    if (!note.is_string()) continue;
+    const std::string text = note.get<std::string>();
+    const auto colon = text.find(':');
+    if (colon != std::string::npos && colon > 0)
+      t.provenance.emplace_back(trim(text.substr(0, colon)), trim(text.substr(colon + 1)));
+  }
+  if (t.material.empty()) t.material = t.info("material");
+}
+
 StrengthTable read_csv(const std::filesystem::path& file) {
-  return parse_strength_table_csv(read_text_file(file, "strength table", kMaxTableBytes), file.string());
+  auto t = parse_strength_table_csv(read_text_file(file, "strength table", kMaxTableBytes), file.string());
+  read_sidecar_provenance(file, t);
+  return t;
 }
 
 }  // namespace
@@ -221,13 +251,17 @@ void write_strength_table(const std::filesystem::path& file, const StrengthTable
     w.commit();
     return;
   }
-  std::string text;
-  for (const auto& [k, v] : provenance) text += fmt::format("# {}: {}\n", k, v);
-  text += fmt::format("{},{},{}\n", kColumns[0], kColumns[1], kColumns[2]);
-  for (std::size_t r = 0; r < table.pressure.size(); ++r)
-    text += fmt::format("{:.10g},{:.10g},{:.10g}\n", table.pressure[r] / kGPa, table.sigma_max[r] / kGPa,
-                        table.sigma_dyn[r] / kGPa);
-  write_file_atomically(file, text);
+  // One header line (pressure_GPa, sigma_max_GPa, sigma_dyn_GPa) and rows;
+  // the provenance in the sidecar <file>.csv.json, as every wearscale table.
+  std::vector<double> p, smax, sdyn;
+  for (std::size_t r = 0; r < table.pressure.size(); ++r) {
+    p.push_back(table.pressure[r] / kGPa);
+    smax.push_back(table.sigma_max[r] / kGPa);
+    sdyn.push_back(table.sigma_dyn[r] / kGPa);
+  }
+  std::vector<std::string> notes;
+  for (const auto& [k, v] : provenance) notes.push_back(fmt::format("{}: {}", k, v));
+  write_csv(file, {"pressure", "sigma_max", "sigma_dyn"}, {p, smax, sdyn}, {"GPa", "GPa", "GPa"}, notes);
 }
 
 }  // namespace wearscale::materials

@@ -178,7 +178,7 @@ void run_normal_study(const Config& config, const Config& c, const RealField& h,
                    {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
   h5.commit();
   sidecar.write(out / "contact.xdmf", h5_path);
-  write_csv(out / "clusters.csv", {"area_m2", "centroid_x_m", "centroid_y_m"}, {area, cx, cy},
+  write_csv(out / "clusters.csv", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"},
             {"micro-contacts of the solved contact, largest first"});
   for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
 }
@@ -336,12 +336,11 @@ void run_frictional_study(const Config& config, const Config& c, const RealField
     }
   }
   std::vector<std::string> names = {"area", "centroid_x", "centroid_y"};
-  std::vector<std::string> csv_names = {"area_m2", "centroid_x_m", "centroid_y_m"}, table_units = {"m^2", "m", "m"};
+  std::vector<std::string> table_units = {"m^2", "m", "m"};
   std::vector<std::span<const double>> columns = {area, cx, cy};
   if (crack) {
     report("crack_initiation_sites", count, "1", "micro-contacts meeting (4.25) at both edges");
     names.insert(names.end(), {"trailing_sigma_I", "leading_sigma_III", "crack_initiation"});
-    csv_names.insert(csv_names.end(), {"trailing_sigma_I_Pa", "leading_sigma_III_Pa", "crack_initiation"});
     table_units.insert(table_units.end(), {"Pa", "Pa", "1"});
     columns.insert(columns.end(), {trailing, leading, initiates});
   }
@@ -353,7 +352,7 @@ void run_frictional_study(const Config& config, const Config& c, const RealField
   std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
   if (crack)
     comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));
-  write_csv(out / "clusters.csv", csv_names, columns, comments);
+  write_csv(out / "clusters.csv", names, columns, table_units, comments);
   for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
 }
 

@@ -105,14 +105,11 @@ std::vector<std::string> write_sliding_history(const std::vector<SlidingSample>&
     sa_b.push_back(h.roughness_bottom);
     sa_t.push_back(h.roughness_top);
   }
-  write_csv(csv,
-            {"time_s", "sliding_m", "tangential_force_N", "normal_force_N", "kinetic_energy_J", "worn",
-             "roughness_bottom_m", "roughness_top_m"},
-            {t, s, ft, fn, ke, worn, sa_b, sa_t}, {title});
-  h5.write_table("/history",
-                 {"time", "sliding", "tangential_force", "normal_force", "kinetic_energy", "worn", "roughness_bottom",
-                  "roughness_top"},
-                 {t, s, ft, fn, ke, worn, sa_b, sa_t}, {"s", "m", "N", "N", "J", "1", "m", "m"});
+  const std::vector<std::string> names = {"time",           "sliding", "tangential_force", "normal_force",
+                                          "kinetic_energy", "worn",    "roughness_bottom", "roughness_top"},
+                                 units = {"s", "m", "N", "N", "J", "1", "m", "m"};
+  write_csv(csv, names, {t, s, ft, fn, ke, worn, sa_b, sa_t}, units, {title});
+  h5.write_table("/history", names, {t, s, ft, fn, ke, worn, sa_b, sa_t}, units);
   return {csv.string(), h5.final_path().string()};
 }
 
@@ -270,12 +267,21 @@ nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
     measured.insert(measured.end(), {*result.tensile_strength, *result.shear_strength});
     target.insert(target.end(), {result.target_tensile, result.target_shear});
   }
-  std::vector<double> index(names.size());
-  for (std::size_t k = 0; k < index.size(); ++k) index[k] = static_cast<double>(k);
+  // One row: each quantity measured and its target, in its own unit.
+  std::vector<std::string> columns, units;
+  std::vector<std::vector<double>> values;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string unit = names[k] == "nu" ? "1" : stress_unit;
+    columns.insert(columns.end(), {names[k], names[k] + "_target"});
+    units.insert(units.end(), {unit, unit});
+    values.push_back({measured[k]});
+    values.push_back({target[k]});
+  }
+  const std::vector<std::span<const double>> spans(values.begin(), values.end());
   const auto csv = out / "patch_test.csv";
-  write_csv(csv, {"quantity_index", "measured", "target"}, {index, measured, target},
+  write_csv(csv, columns, spans, units,
             {fmt::format("DEM patch test (§6.2), {} {}, d0 = {:g}", spec.amorphous ? "amorphous" : "HCP", spec.material.name, spec.d0),
-             fmt::format("quantities: {}", fmt::join(names, ", "))});
+             "each quantity measured and its target (<name>_target)"});
   return {{"files", {csv.string()}}};
 }
 
@@ -329,7 +335,8 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
     ke.push_back(h.kinetic_energy);
   }
   const auto csv = out / "junction_history.csv";
-  write_csv(csv, {"time_s", "sliding_m", "tangential_force_N", "normal_force_N", "kinetic_energy_J"}, {t, s, ft, fn, ke},
+  write_csv(csv, {"time", "sliding", "tangential_force", "normal_force", "kinetic_energy"}, {t, s, ft, fn, ke},
+            {"s", "m", "N", "N", "J"},
             {fmt::format("sheared {} junction (§6.3): D = {:.3g} m, d0 = {:.3g} m; {}", spec.material.name,
                          spec.diameter, spec.d0, r.verdict())});
   const auto h5_path = out / "junction.h5";
@@ -353,6 +360,8 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   return {{"verdict", r.verdict()},
+          {"caption", fmt::format("{}, D = {:.3g} nm, d_0 = {:.3g} nm, p_N = {:.3g} GPa", spec.material.name,
+                                  spec.diameter * 1e9, spec.d0 * 1e9, spec.pressure / 1e9)},
           {"files", {csv.string(), h5_path.string(), dump.final_path().string()}}};
 }
 
@@ -425,7 +434,11 @@ nlohmann::json run_rough_shear_study(const Config& root, RunContext& context) {
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"verdict", r.regime}, {"files", files}};
+  return {{"verdict", r.regime},
+          {"caption", fmt::format("{}, L = {:.3g} nm, Sa/L = {:g}, d_0 = {:.3g} nm, p_N = {:.3g} GPa",
+                                  spec.cell.material.name, spec.cell.box.x * 1e9, spec.roughness, d0 * 1e9,
+                                  spec.cell.pressure / 1e9)},
+          {"files", files}};
 }
 
 nlohmann::json run_trapped_particles_study(const Config& root, RunContext& context) {
@@ -489,7 +502,11 @@ nlohmann::json run_trapped_particles_study(const Config& root, RunContext& conte
   put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
   h5.commit();
   files.push_back(dumps.writer.final_path().string());
-  return {{"verdict", r.regime()}, {"files", files}};
+  return {{"verdict", r.regime()},
+          {"caption", fmt::format("{}, n = {} particles of D = {:.3g} nm, d_0 = {:.3g} nm, p_N = {:.3g} GPa",
+                                  spec.cell.material.name, spec.count, spec.diameter * 1e9, d0 * 1e9,
+                                  spec.cell.pressure / 1e9)},
+          {"files", files}};
 }
 
 // A measured E ≤ 0 or ν outside (−1, 0.5) is no elastic solid: the patch
@@ -523,7 +540,10 @@ class DemStudy : public Study {
     const std::string verdict = outputs["verdict"].get<std::string>();
     context.note("verdict", verdict);
     const auto& out = context.output_dir();
-    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), verdict))
+    // The title states the parameters, then the verdict.
+    const std::string title =
+        outputs.contains("caption") ? outputs["caption"].get<std::string>() + ": " + verdict : verdict;
+    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), title))
       context.add_file(*png);
   }
   static Schema material_keys(const std::string& flag_doc) {

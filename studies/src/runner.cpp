@@ -7,6 +7,7 @@
 #include <exception>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -405,14 +406,23 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   // The sweep tables (one per series value): the swept value, then every
   // headline figure of the runs.
   OutputSet outputs(sweep.output_dir, "summary.json");
-  std::vector<std::string> names;
+  std::vector<std::string> names, result_units;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
-      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  // The swept values as numbers, if they all are (else the tables keep the text).
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        names.push_back(name);
+        // A headline figure's unit: SI, "1" or "" when it has none (a count, a ratio).
+        const std::string unit = v.contains("unit") ? v["unit"].get<std::string>() : "";
+        result_units.push_back(unit.empty() ? "1" : unit);
+      }
+  // The swept values as numbers in SI, if they all are and share one dimension (else the tables keep the text).
   std::vector<double> numeric;
+  std::optional<units::Dimension> swept_dimension;
   for (const auto& v : values) try {
-      numeric.push_back(units::parse_quantity(v).value);
+      const auto q = units::parse_quantity(v);
+      if (swept_dimension && !(*swept_dimension == q.dimension)) throw std::invalid_argument("mixed dimensions");
+      swept_dimension = q.dimension;
+      numeric.push_back(q.value);
     } catch (const std::exception&) {
       numeric.clear();
       break;
@@ -437,11 +447,12 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
         fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
     if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
     if (numeric_values) {
-      std::vector<std::string> header{key};
+      std::vector<std::string> header{key}, header_units{swept_dimension->to_string()};
       header.insert(header.end(), names.begin(), names.end());
-      write_csv(table, header, spans, comments);
+      header_units.insert(header_units.end(), result_units.begin(), result_units.end());
+      write_csv(table, header, spans, header_units, comments);
     } else {
-      write_csv(table, key, values, names, spans, comments);
+      write_csv(table, key, values, names, spans, result_units, comments);
     }
     sweep.files.push_back(table);
     tables.push_back({label.empty() ? "model" : label, table});

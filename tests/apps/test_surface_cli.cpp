@@ -61,7 +61,7 @@ TEST(SurfaceCli, GenerateThenAnalyzeRecoversTheHurstExponent) {
     EXPECT_EQ(a["fit"]["points"].get<int>(), 60);
     EXPECT_NEAR(a["h_prime_rms"].get<double>(), 0.2, 1e-12);
     EXPECT_NEAR(a["Sa"].get<double>(), g["Sa"].get<double>(), 1e-12 * g["Sa"].get<double>());
-    EXPECT_THAT(slurp(work / "psd.csv"), HasSubstr("q,C,count\n"));
+    EXPECT_THAT(slurp(work / "psd.csv"), HasSubstr("q_rad_per_m,C_m4,count\n"));
 
     // Without a band the one recorded by `generate` (k_r … k_s) is used.
     const auto by_default = nlohmann::json::parse(run_cli(fmt::format("surface analyze {} --no-window --json", name), work).out);

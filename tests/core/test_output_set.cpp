@@ -129,5 +129,5 @@ TEST(AtomicFile, AWriteThatFailsLeavesNoFileAndNamesThePath) {
   } catch (const OutputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("/proc/self/summary.json"));
   }
-  EXPECT_THROW(write_csv("/proc/self/x.csv", {"a"}, {std::vector<double>{1.0}}), OutputError);
+  EXPECT_THROW(write_csv("/proc/self/x.csv", {"a"}, {std::vector<double>{1.0}}, {"1"}), OutputError);
 }

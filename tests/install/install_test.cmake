@@ -24,6 +24,17 @@ foreach(f IN LISTS configs)
   endif()
 endforeach()
 
+# The CLI's shell completions, and its man page when help2man made one (cmake/WearscaleCliDocs.cmake).
+set(cli_docs share/bash-completion/completions/wearscale share/zsh/site-functions/_wearscale)
+if(EXISTS ${BUILD}/cli-docs/man1/wearscale.1)
+  list(APPEND cli_docs share/man/man1/wearscale.1)
+endif()
+foreach(f IN LISTS cli_docs)
+  if(NOT EXISTS ${PREFIX}/${f})
+    message(FATAL_ERROR "cmake --install did not install ${f}")
+  endif()
+endforeach()
+
 if(STEP STREQUAL "cxx")
   set(consumer ${PREFIX}-consumer)
   file(REMOVE_RECURSE ${consumer})

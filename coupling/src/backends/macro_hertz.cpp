@@ -42,7 +42,7 @@ class MacroHertz final : public Scale {
     }
     ctx.h5().write_table("/macro/hertz/profile", {"r", "pressure"}, {r, p}, {"m", "Pa"});
     const auto csv = ctx.output_dir() / "pressure_profile.csv";
-    write_csv(csv, {"r_m", "pressure_Pa"}, {r, p}, {"Hertz pressure profile of the unworn pin (macro/hertz)"});
+    write_csv(csv, {"r", "pressure"}, {r, p}, {"m", "Pa"}, {"Hertz pressure profile of the unworn pin (macro/hertz)"});
     ctx.add_file(csv);
     exchange.put<Quantity::MacroResult>(provides().front().subject, ctx.results(), provenance_);
   }

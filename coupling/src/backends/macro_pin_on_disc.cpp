@@ -250,7 +250,7 @@ class MacroPinOnDisc final : public Scale {
     ctx.h5().write_table("/macro/final/disc_profile", {"x", "worn_depth", "through_layer"}, {x, depth, through},
                          {"m", "m", "1"});
     const auto csv = ctx.output_dir() / "disc_profile.csv";
-    write_csv(csv, {"x_m", "worn_depth_m", "through_layer"}, {x, depth, through},
+    write_csv(csv, {"x", "worn_depth", "through_layer"}, {x, depth, through}, {"m", "m", "1"},
               {"macro/bem-pin-on-disc: final worn depth of the disc across the track (mean along it); "
                "through_layer = 1 where the oxide is worn through (a groove)"});
     ctx.add_file(csv);
@@ -345,9 +345,9 @@ class MacroPinOnDisc final : public Scale {
                          {"m", "1", "1", "m", "m^3", "m^3", "1", "1", "1", "1"});
     const auto csv = ctx.output_dir() / "friction.csv";
     write_csv(csv,
-              {"distance_m", "friction", "friction_moving_average", "pin_wear_m3", "disc_wear_m3", "contact_fraction",
+              {"distance", "friction", "friction_moving_average", "pin_wear", "disc_wear", "contact_fraction",
                "layer_share", "grooves"},
-              {s, mu, smoothed, v_pin, v_disc, area, on_layer, grooves},
+              {s, mu, smoothed, v_pin, v_disc, area, on_layer, grooves}, {"m", "1", "1", "m^3", "m^3", "1", "1", "1"},
               {"macro/bem-pin-on-disc (§9.3.2): friction and wear volumes against sliding distance",
                fmt::format("friction_moving_average: centred moving mean over {:g} m of sliding (Fig. 9.23)",
                            moving_window_)});

@@ -482,14 +482,15 @@ class NanoDem final : public Scale {
     const std::vector<std::string> names{"D_over_L", "p_N", "A_over_A0_initial", "A_over_A0_loaded", "A_over_A0_final",
                                          "p_T_peak", "p_T_steady", "p_N_measured", "outcome", "rolling_rate", "cached"};
     const std::string group = "/nano/" + i.tag();
+    const std::vector<std::string> units{"1", "Pa", "1", "1", "1", "Pa", "Pa", "Pa", "1", "1", "1"};
     ctx.h5().write_table(group + "/runs", names, {ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached},
-                         {"1", "Pa", "1", "1", "1", "Pa", "Pa", "Pa", "1", "1", "1"});
+                         units);
     ctx.h5().set_attribute(group + "/runs", "outcome", "0 flattened, 1 sheared, 2 detached");
     ctx.h5().write_scalar(group + "/sigma_fit", fit.shear_strength, "Pa");
     ctx.h5().write_scalar(group + "/p_crit", fit.p_crit, "Pa");
     ctx.h5().write_scalar(group + "/mu0", fit.mu0, "1");
     const auto csv = ctx.output_dir() / ("junction_" + i.tag() + ".csv");
-    write_csv(csv, names, {ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached},
+    write_csv(csv, names, {ratio, p_n, c0, cl, cf, peak, steady, normal, outcome, rolling, cached}, units,
               {fmt::format("nano/dem junction runs of {} (§7.1.1), SI units; outcome: 0 flattened, 1 sheared, 2 detached",
                            i.pair()),
                fmt::format("fit (§7.1.2): sigma = {:.6g} Pa (rel. RMS {:.3f}), sliding strength {:.6g} Pa, p_crit = {:.6g} Pa "

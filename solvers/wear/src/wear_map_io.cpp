@@ -80,7 +80,8 @@ void write_wear_map_csv(const std::filesystem::path& path, const WearMap& map) {
     comments.push_back(fmt::format("{}: {}", l.name, l.description));
   }
   for (const auto& [name, value] : map.parameters) comments.push_back(fmt::format("{} = {:.17g}", name, value));
-  write_csv(path, names, columns, comments);
+  // Every axis and layer of a wear map is a ratio (d/l, R, p/p_crit): dimensionless.
+  write_csv(path, names, columns, std::vector<std::string>(names.size(), "1"), comments);
 }
 
 }  // namespace wearscale::wear

@@ -19,6 +19,10 @@ bool plotting_available();
 std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png,
                                                  int width = 1000, int height = 700);
 
+/// A legend entry for a sweep's run folder name, "thickness=5e-07" → "h = 0.5 µm",
+/// "thickness=0" → "h = 0 (no oxide)", "thickness=inf" → "h = ∞ (bulk oxide)", "slope=0.02 layer_test=disc" → "slope = 0.02, layer_test = disc".
+std::string legend_label(const std::string& run_label);
+
 /// One curve set per run: label and its friction.csv (distance, friction, pin and disc wear).
 struct FrictionCurve {
   std::string label;
