@@ -27,6 +27,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
@@ -75,14 +76,22 @@ std::string heat_map(const wear::WearMap& map, const std::string& title, const f
       hi + 0.5, tics, csv.string());
 }
 
+namespace oi = coupling::okabe_ito;
+// The regions' fills: neutral greys for the inaccessible (d_a < d_r) and plastic
+// regions, Okabe-Ito categories tinted halfway to white for the wear regions,
+// so that the analytic lines, drawn in the full colours, show over them.
+constexpr double kFill = 0.5;
+
 std::optional<fs::path> plot_2d(const wear::WearMap& map, const fs::path& csv, const fs::path& png) {
   // Fig. 3.7: d_r = d* (3.25) and d_a = d_r²/d* (3.27) where d_a ≥ d_r, and d_a = d_r (a single contact).
   const std::string script =
-      heat_map(map, "2D wear map of N micro-contacts (thesis Fig. 3.7)", csv, {"#bdbdbd", "#f7f7f7", "#9ecae1", "#de2d26"}) +
+      heat_map(map, "2D wear map of N micro-contacts (thesis Fig. 3.7)", csv,
+               {"#BBBBBB", "#F7F7F7", oi::tint(oi::sky_blue, kFill), oi::tint(oi::orange, kFill)}) +
       fmt::format(", \\\n  '+' using (1):(1 + $0/999*({} - 1)) with lines lw 2 dt 2 lc rgb 'black' "
                   "title 'd_r = d* (3.25)'",
                   map.y.max) +
-      ", \\\n  (x >= 1 ? x*x : 1/0) with lines lw 2 dt 2 lc rgb '#08519c' title 'd_a = d_r^2/d* (3.27)', \\\n"
+      fmt::format(", \\\n  (x >= 1 ? x*x : 1/0) with lines lw 2 dt 2 lc rgb '{}' title 'd_a = d_r^2/d* (3.27)', \\\n",
+                  oi::blue) +
       "  x with lines lw 1 lc rgb 'black' title 'd_a = d_r (one contact)'\n";
   return coupling::render_plot(script, png, 1000, 760);
 }
@@ -91,7 +100,8 @@ std::optional<fs::path> plot_3d(const wear::WearMap& map, double c_inter, const 
   // Fig. 4.6: the lines R = 1 of (4.48) at this C_inter (solid) and at the other bound (dashed), and d = d*.
   const double other = c_inter > 0.5 ? wear::min_interaction_constant : wear::max_interaction_constant;
   std::string lines;
-  const char* colours[] = {"#08519c", "#006d2c", "#a50f15"};
+  // Each case's line in the full colour of the region it bounds.
+  const char* colours[] = {oi::blue, oi::bluish_green, oi::vermillion};
   for (const double c : {c_inter, other})
     for (std::size_t k = 0; k < wear::particle_cases.size(); ++k) {
       const auto d = wear::particle_cases[k];
@@ -104,7 +114,9 @@ std::optional<fs::path> plot_3d(const wear::WearMap& map, double c_inter, const 
     }
   const std::string title =
       fmt::format("3D wear map of two micro-contacts, R ≥ 1 (4.48) at C_{{inter}} = {:.4g} (thesis Fig. 4.6)", c_inter);
-  const std::string script = heat_map(map, title, csv, {"#f7f7f7", "#c6dbef", "#a1d99b", "#fcae91"}) + lines +
+  const std::string script = heat_map(map, title, csv,
+                                        {"#F7F7F7", oi::tint(oi::sky_blue, kFill), oi::tint(oi::bluish_green, kFill),
+                                         oi::tint(oi::orange, kFill)}) + lines +
                              ", \\\n  x with lines lw 1 dt 3 lc rgb 'black' title 'd = d*'\n";
   return coupling::render_plot(script, png, 1000, 760);
 }
