@@ -6,11 +6,13 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/core/units.hpp"
 
 namespace wearscale::coupling {
 
@@ -87,6 +89,19 @@ std::string literal(const std::string& text) {
   return out;
 }
 
+// A title as a gnuplot string expression: each line literal() in single
+// quotes, the lines joined by "\n" (a line break in gnuplot's double quotes).
+std::string title_string(const std::string& title) {
+  std::string out;
+  for (std::size_t start = 0;;) {
+    const auto end = title.find('\n', start);
+    out += "'" + literal(title.substr(start, end == std::string::npos ? std::string::npos : end - start)) + "'";
+    if (end == std::string::npos) return out;
+    out += ".\"\\n\".";
+    start = end + 1;
+  }
+}
+
 // The sliding distances (second column) of a history table, in order.
 std::vector<double> second_column(const std::filesystem::path& csv) {
   std::ifstream in(OutputSet::readable(csv));
@@ -106,6 +121,34 @@ std::vector<double> second_column(const std::filesystem::path& csv) {
 }
 
 }  // namespace
+
+std::string sweep_title(const Config& c, const std::string& case_name, const std::string& key,
+                        const std::string& series_key) {
+  std::vector<std::string> parts;
+  try {  // material names (a material defined in the case is a table: left out)
+    if (c.has("materials.pin") && c.has("materials.disc"))
+      parts.push_back(fmt::format("{} pin on {} disc", c.string("materials.pin"), c.string("materials.disc")));
+  } catch (const std::exception&) {
+  }
+  struct Parameter {
+    const char *key, *symbol, *unit;
+    double scale;
+    units::Dimension dim;
+  };
+  for (const auto& [name, symbol, unit, scale, dim] :
+       {Parameter{"scale.macro.pin_radius", "R", "mm", units::mm, units::length},
+        Parameter{"scale.macro.normal_load", "F_N", "N", units::N, units::force},
+        Parameter{"scale.macro.velocity", "v", "mm/s", units::mm, units::velocity}}) {
+    if (name == key || name == series_key || !c.has(name)) continue;  // swept: the legends give it
+    try {
+      parts.push_back(fmt::format("{} = {:.3g} {}", symbol, c.number(name, Range::any(), dim) / scale, unit));
+    } catch (const std::exception&) {  // not a number (the run would have said so): left out of the title
+    }
+  }
+  std::string swept = "swept: " + key;
+  if (!series_key.empty()) swept += ", series: " + series_key;
+  return fmt::format("{}\n{}{}{}", case_name, fmt::join(parts, ", "), parts.empty() ? "" : "; ", swept);
+}
 
 std::string legend_label(const std::string& run_label) {
   std::string out;
@@ -175,7 +218,7 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
   // whatever the width of the tick labels and of the legend outside.
   const std::string script = fmt::format(
       "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
-      "set multiplot layout 2,1 title '{}'\n"
+      "set multiplot layout 2,1 title {}\n"
       "set lmargin at screen 0.10\nset rmargin at screen 0.74\n"
       "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right top\n"
       "set xlabel 'sliding distance s [mm]'\n"
@@ -183,7 +226,7 @@ std::optional<std::filesystem::path> plot_friction_curves(const std::vector<Fric
       "plot {}\nunset label 1\n"
       "set ylabel 'worn volume [µm³]'\nset autoscale y\nset yrange [0:*]\n"
       "plot {}\nunset multiplot\n",
-      literal(title), mu.empty() ? "NaN notitle" : mu, wear);
+      title_string(title), mu.empty() ? "NaN notitle" : mu, wear);
   return render_plot(script, png);
 }
 
@@ -198,9 +241,9 @@ std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<Fricti
     curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
                           -layer_thickness * 1e6);
   return render_plot(fmt::format("set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
-                                 "set title '{}'\nset xlabel 'across the track x [mm]'\nset ylabel 'disc surface [µm]'\n"
+                                 "set title {}\nset xlabel 'across the track x [mm]'\nset ylabel 'disc surface [µm]'\n"
                                  "set grid\nset key outside right\nplot {}\n",
-                                 literal(title), curves),
+                                 title_string(title), curves),
                      png);
 }
 

@@ -90,7 +90,7 @@ class PipelineStudy final : public Study {
     for (std::size_t k = 0; k < s.folders.size(); ++k)
       if (std::filesystem::exists(s.folders[k] / "friction.csv")) curves.push_back({s.labels[k], s.folders[k] / "friction.csv"});
     if (!curves.empty())
-      if (auto png = plot_friction_curves(curves, s.output_dir / "friction_curves.png", s.case_name)) files.push_back(*png);
+      if (auto png = plot_friction_curves(curves, s.output_dir / "friction_curves.png", sweep_title(*s.probe, s.case_name, s.key, s.series_key))) files.push_back(*png);
     for (std::size_t k = 0; k < s.folders.size(); ++k) {
       const auto csv = s.folders[k] / "disc_profile.csv";
       if (std::filesystem::exists(csv))
@@ -102,7 +102,7 @@ class PipelineStudy final : public Study {
       const bool one_oxide = s.key != thickness && s.series_key != thickness && s.probe->has(thickness);
       const double h =
           one_oxide ? s.probe->number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
-      if (auto png = plot_disc_profiles(profiles, s.output_dir / "disc_profiles.png", s.case_name, h))
+      if (auto png = plot_disc_profiles(profiles, s.output_dir / "disc_profiles.png", sweep_title(*s.probe, s.case_name, s.key, s.series_key), h))
         files.push_back(*png);
     }
     if (s.key == thickness && s.numeric_values &&

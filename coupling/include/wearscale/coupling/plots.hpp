@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "wearscale/core/config.hpp"
+
 namespace wearscale::coupling {
 
 /// Whether `gnuplot` is on the PATH (checked once).
@@ -22,6 +24,13 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
 /// A legend entry for a sweep's run folder name, "thickness=5e-07" → "h = 0.5 µm",
 /// "thickness=0" → "h = 0 (no oxide)", "thickness=inf" → "h = ∞ (bulk oxide)", "slope=0.02 layer_test=disc" → "slope = 0.02, layer_test = disc".
 std::string legend_label(const std::string& run_label);
+
+/// The title of a sweep's figures, two lines: `case_name`, then what a reader
+/// needs to place the curves, of those the case `c` sets: "SiO2 pin on Si disc,
+/// R = 3 mm, F_N = 1 N, v = 8 mm/s; swept: materials.layer.thickness" (a swept
+/// key's value is left to the legends; ", series: KEY" for a series key).
+std::string sweep_title(const Config& c, const std::string& case_name, const std::string& key,
+                        const std::string& series_key = "");
 
 /// One curve set per run: label and its friction.csv (distance, friction, pin and disc wear).
 struct FrictionCurve {
