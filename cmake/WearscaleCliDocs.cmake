@@ -24,12 +24,28 @@ add_custom_command(OUTPUT ${bash_completion} ${zsh_completion} ${WEARSCALE_HELP_
   DEPENDS wearscale VERBATIM COMMENT "Generating the bash and zsh completion of wearscale")
 set(outputs ${bash_completion} ${zsh_completion})
 
+# help2man reads the help in its own locale, C unless told: every byte of µ, ν,
+# ≥, §, … became '?' in the page. It reads it as UTF-8 here, and preconv (groff)
+# turns each of those characters into its groff escape \[uXXXX]: an ASCII page
+# that man renders as the character in a UTF-8 locale and as groff's ASCII
+# fallback (<nu>, >=) in the C locale, whatever encoding man assumes. Without
+# preconv the page stays UTF-8 (man-db reads that too). The --help text is
+# untouched.
+find_program(WEARSCALE_PRECONV preconv)
 if(WEARSCALE_HELP2MAN)
-  add_custom_command(OUTPUT ${man_page}
+  set(man_source ${man_page})
+  if(WEARSCALE_PRECONV)
+    set(man_source ${cli_docs}/wearscale.1.utf8)
+  endif()
+  set(man_commands
     COMMAND ${CMAKE_COMMAND} -E make_directory ${cli_docs}/man1
-    COMMAND ${CMAKE_COMMAND} -E env CI=true ${WEARSCALE_HELP2MAN} --no-info --no-discard-stderr
+    COMMAND ${CMAKE_COMMAND} -E env CI=true ${WEARSCALE_HELP2MAN} --no-info --no-discard-stderr --locale=C.UTF-8
             --help-option=--help-all --version-option=--version --include=${h2m}
-            --output=${man_page} $<TARGET_FILE:wearscale>
+            --output=${man_source} $<TARGET_FILE:wearscale>)
+  if(WEARSCALE_PRECONV)
+    list(APPEND man_commands COMMAND ${WEARSCALE_PRECONV} -r -e UTF-8 ${man_source} > ${man_page})
+  endif()
+  add_custom_command(OUTPUT ${man_page} ${man_commands}
     DEPENDS wearscale ${h2m} VERBATIM COMMENT "Generating the wearscale(1) man page (help2man)")
   list(APPEND outputs ${man_page})
   install(FILES ${man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
