@@ -1,8 +1,10 @@
 #include "wearscale/coupling/plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -301,26 +303,47 @@ std::optional<std::filesystem::path> plot_junction_strength(const std::filesyste
                                                             const std::filesystem::path& png, const std::string& title,
                                                             const std::vector<double>& contact_ratios, double sigma,
                                                             double p_crit, double length) {
+  // Columns: 1 D/L, 2 p_N [Pa], 6 peak p_T [Pa], 9 outcome (0 flattened, 1 sheared, 2 detached). Each D/L in
+  // its colour, each outcome its marker; (7.9), p_T = (D/L) σ, is each D/L's plateau, (7.10),
+  // p_T = (p_N/p_crit) σ, the same line for all: drawn once, in black, over the plateaus' ends.
   std::string plots;
   const double s = sigma / 1e9, pc = p_crit / 1e9;
+  const std::string file = data(runs_csv);
+  struct Outcome {
+    int code, point;
+    const char* name;
+  };
+  constexpr Outcome outcomes[] = {{1, 7, "sheared"}, {0, 6, "flattened"}, {2, 9, "detached (rolling)"}};
   for (std::size_t k = 0; k < contact_ratios.size(); ++k) {
     const double c = contact_ratios[k];
-    const int colour = static_cast<int>(k) + 1;
-    const std::string label = length > 0.0 ? fmt::format("DEM, D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
-                                           : fmt::format("DEM, D/L = {:.3g}", c);
-    plots += fmt::format("'{}' every ::1 using ($1=={:.17g} ? $2/1e9 : 1/0):($6/1e9) with points pt 7 ps 1.5 lc {} "
-                         "title '{}', ",
-                         data(runs_csv), c, colour, label);
-    plots += fmt::format("max({:.17g}*{:.6g}, x/{:.6g}*{:.6g}) with lines lw 2 lc {} notitle, ", c, s, pc, s, colour);
+    const std::string rgb = colour(k);
+    const std::string label = length > 0.0 ? fmt::format("D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
+                                           : fmt::format("D/L = {:.3g}", c);
+    for (const auto& o : outcomes)
+      plots += fmt::format("'{}' every ::1 using (($1=={:.17g} && $9=={}) ? $2/1e9 : 1/0):($6/1e9) with points pt {} "
+                           "ps 1.6 lw 1.5 lc rgb '#{}' notitle, ",
+                           file, c, o.code, o.point, rgb);
+    plots += fmt::format("(x < {0:.17g}*{1:.17g} ? {0:.17g}*{2:.17g} : 1/0) with lines lw 2 lc rgb '#{3}' title '{4}', ",
+                         c, pc, s, rgb, literal(label));
   }
-  plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N'";
-  return render_plot(fmt::format("set datafile separator ','\nmax(a, b) = a > b ? a : b\nset key outside right top\n"
-                            "set offsets 0, graph 0.05, graph 0.05, 0\nset title '{}'\nset xlabel 'normal pressure p_N [GPa]'\n"
-                            "set ylabel 'peak tangential stress p_T [GPa]'\nset grid\nset xrange [0:*]\nset yrange [0:*]\n"
-                            "set label 1 'lines: (7.9)-(7.10) with {:.3g} GPa, p_{{crit}} = {:.3g} GPa' at graph 0.35, graph 0.05\n"
-                            "plot {}\n",
-                            title, s, pc, plots),
-                png);
+  // (7.10) from the smallest plateau's end on: below it the model is the plateaus.
+  const double from = contact_ratios.empty() ? 0.0 : *std::min_element(contact_ratios.begin(), contact_ratios.end()) * pc;
+  plots += fmt::format("(x >= {0:.17g} ? x/{1:.17g}*{2:.17g} : 1/0) with lines lw 2 lc rgb 'black' "
+                       "title '(7.10): p_T = (p_N/p_{{crit}}) σ', ",
+                       from, pc, s);
+  plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N', ";
+  plots += "NaN with lines lw 2 lc rgb '#999999' title '(7.9): p_T = (D/L) σ, a line per D', ";
+  for (std::size_t k = 0; k < std::size(outcomes); ++k)
+    plots += fmt::format("{}NaN with points pt {} ps 1.6 lw 1.5 lc rgb 'black' title 'DEM run: {}'", k ? ", " : "",
+                         outcomes[k].point, outcomes[k].name);
+  return render_plot(
+      fmt::format("set datafile separator ','\nset key outside right top\n"
+                  "set offsets 0, graph 0.05, graph 0.05, 0\nset title {}\nset xlabel 'normal pressure p_N [GPa]'\n"
+                  "set ylabel 'peak tangential stress p_T [GPa]'\nset grid\nset xrange [0:*]\nset yrange [0:*]\n"
+                  "set samples 1000\nset label 1 'fit: σ = {:.3g} GPa, p_{{crit}} = {:.3g} GPa' at graph 0.5, graph 0.05\n"
+                  "plot {}\n",
+                  title_string(title), s, pc, plots),
+      png, 1100, 700);
 }
 
 }  // namespace wearscale::coupling

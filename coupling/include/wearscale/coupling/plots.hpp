@@ -71,10 +71,12 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
                                                          const std::filesystem::path& png, const std::string& title);
 
 /// Peak p_T against p_N of the junction runs of nano/dem (junction_<pair>.csv:
-/// D/L, p_N, ..., p_T_peak in columns 1, 2, 6), one point set per D/L, with the
-/// fitted model p_T = max((D/L) σ, (p_N/p_crit) σ) of (7.9)-(7.10) per D/L
-/// and the line p_T = p_N (Fig. 7.2, 7.3). With the cell `length` L [m] the
-/// legend gives D in nm.
+/// D/L, p_N, ..., p_T_peak, ..., outcome in columns 1, 2, 6, 9), a colour per
+/// D/L and a marker per outcome (sheared, flattened, detached), with the fitted
+/// model p_T = max((D/L) σ, (p_N/p_crit) σ) of (7.9)-(7.10): each D/L's plateau
+/// (7.9) in its colour, the line (7.10) common to all once, and p_T = p_N
+/// (Fig. 7.2, 7.3). `title` may be two lines ('\n'). With the cell `length` L
+/// [m] the legend gives D in nm.
 std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
                                                             const std::filesystem::path& png, const std::string& title,
                                                             const std::vector<double>& contact_ratios, double sigma,
