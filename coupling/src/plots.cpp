@@ -15,6 +15,7 @@
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/coupling/palette.hpp"
 
 namespace wearscale::coupling {
 
@@ -77,8 +78,11 @@ namespace {
 // Okabe & Ito's colour-blind-safe palette (Color Universal Design, 2008), its
 // yellow last (faint on white): the k-th series has the same colour in every
 // figure of a sweep (friction curves, disc profiles).
-constexpr const char* kColours[] = {"0072B2", "D55E00", "009E73", "CC79A7", "E69F00", "56B4E9", "000000", "F0E442"};
-std::string colour(std::size_t k) { return kColours[k % (sizeof kColours / sizeof *kColours)]; }
+namespace oi = okabe_ito;
+constexpr const char* kColours[] = {oi::blue,   oi::vermillion, oi::bluish_green, oi::reddish_purple,
+                                    oi::orange, oi::sky_blue,   oi::black,        oi::yellow};
+// "RRGGBB", without the '#': the scripts prefix it, or an alpha ('#A0RRGGBB').
+std::string colour(std::size_t k) { return kColours[k % (sizeof kColours / sizeof *kColours)] + 1; }
 
 // A label in gnuplot's enhanced text, in single quotes: '_' printed as itself.
 std::string literal(const std::string& text) {
