@@ -116,8 +116,10 @@ TEST(JunctionStudy, ThesisCellLargeJunctionsDetachAndSmallOnesAreCrushed) {
 // "At D = L, the resistance is equal to the shear strength of the material",
 // which the thesis reads off as 7.5 GPa (7.11). Not reproduced: this DEM's
 // full contact peaks at 9.1-10.2 GPa (falling with p_N), 22-35 % above, with
-// the same particles (σ_m,T = 9 GPa) and the thesis' force law; the HCP patch
-// test of these particles shears at 10.8 GPa. Characterised here (docs/dem.md).
+// the same particles (σ_m,T = 9 GPa) and the thesis' force law. The thesis'
+// LAMMPS pair style loses the tangential history of cohesive pairs at
+// neighbour rebuilds; LAMMPS with it kept gives 10.9 GPa on this cell at
+// p_N = 0 (bench/dem/thesis_lammps/README.md). Characterised here (docs/dem.md).
 TEST(JunctionStudy, ThesisCellFullContactPeaksAboveTheThesisStrength) {
   const auto& full = grid().results[3];
   double sum = 0.0;
