@@ -112,12 +112,13 @@ std::string run_key(const JunctionStrengthSpec& s) {
   const auto& c = s.cell;
   const std::string spec = fmt::format(
       "d0={:.17g} L={} H={} B={} gap={:.17g} wall={:.17g} D/L={:.17g} p={:.17g} v={:.17g} dt={:.17g} settle={:.17g} "
-      "slide={:.17g} steady={:.17g} every={}{}",
+      "slide={:.17g} steady={:.17g} every={}{}{}",
       c.d0, c.length, c.height, c.depth, c.gap, c.wall_thickness, s.contact_ratio, s.pressure, s.velocity, s.time_step,
       s.settle_distance, s.sliding_distance, s.steady_from, s.record_every,
       s.arrangement == dem::Arrangement::Amorphous
           ? fmt::format(" amorphous seed={} relax={:.17g}/{}", s.seed, s.relax_tolerance, s.max_relax_steps)
-          : std::string());
+          : std::string(),
+      s.history_of_touching_pairs_only ? " history=touching" : "");
   return md::cache_key({cache_version, WEARSCALE_VERSION, material_text(s.top), material_text(s.bottom), spec});
 }
 
@@ -199,6 +200,10 @@ class NanoDem final : public Scale {
     base_.sliding_distance = c.number_or("sliding_distance", 1.0, Range::positive());
     base_.steady_from = c.number_or("steady_from", 0.5, Range::closed_open(0.0, 1.0));
     base_.record_every = c.integer_or("record_every", 200, Range::at_least(1));
+    // "touching": carry tangential histories over neighbour rebuilds for
+    // touching pairs only, as LAMMPS did in the thesis' runs (its
+    // gran/cohesive/history); "kept": every contact keeps its history (6.4).
+    base_.history_of_touching_pairs_only = c.choice_or("history", "kept", {"kept", "touching"}) == "touching";
     // Interfaces with a material listed here are built amorphous (§6.2.2)
     // instead of on the HCP lattice of §7.1.1: the weakened, amorphous state
     // the thesis suggests for Si (§9.3.3).

@@ -216,7 +216,8 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   const double dt = spec.time_step * law.critical_time_step(particles);
   double wall_mass = 0.0;
   for (std::size_t i : top) wall_mass += particles.mass[i];
-  Simulation sim(std::move(particles), box, std::move(law), NeighborSettings{0.1 * d0, 0, true});
+  Simulation sim(std::move(particles), box, std::move(law),
+                 NeighborSettings{0.1 * d0, 0, true, spec.history_of_touching_pairs_only});
   sim.set_time_step(dt);
   const double area = length * depth;  // A0 = L B  (7.1)
   // The pressed wall's normal motion is damped critically on the cell's

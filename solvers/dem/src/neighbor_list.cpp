@@ -78,12 +78,12 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
         },
         layers * t / threads, layers * (t + 1) / threads);
   }
-  sort_and_keep_history(p);
+  sort_and_keep_history(p, box);
   built_at_.assign(p.position.begin(), p.position.end());
   built_image_.assign(p.image.begin(), p.image.end());
 }
 
-void NeighborList::sort_and_keep_history(const Particles& p) {
+void NeighborList::sort_and_keep_history(const Particles& p, const Box& box) {
   const std::size_t n = p.size();
   // Counting sort of the candidates by their lower index.
   count_.assign(n + 1, 0);
@@ -138,6 +138,8 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
     return d;
   };
   const bool same_images = old_images_ == images_;
+  std::array<Vec3, PeriodicImages::max_count> shift_vector{};
+  if (touching_only_) images_.vectors(box, shift_vector.data());
 #pragma omp parallel for schedule(static) if (n >= parallel_build)
   for (std::size_t i = 0; i < n; ++i) {
     const std::array<int, 3> di = wrapped(i);
@@ -157,6 +159,11 @@ void NeighborList::sort_and_keep_history(const Particles& p) {
           now = images_.find(s);
         }
         if (now != shift_[k]) continue;
+        if (touching_only_) {
+          const Vec3 d = p.position[j] + shift_vector[shift_[k]] - p.position[i];
+          const double contact = p.radius[i] + p.radius[j];
+          if (!(dot(d, d) < contact * contact)) break;  // not touching: starts afresh
+        }
         std::copy_n(old_history_.begin() + static_cast<std::ptrdiff_t>(stride * b), stride,
                     history_.begin() + static_cast<std::ptrdiff_t>(stride * k));
         break;

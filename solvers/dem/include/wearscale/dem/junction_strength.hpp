@@ -65,6 +65,10 @@ struct JunctionStrengthSpec {
   double sliding_distance = 1.0;///< in L
   double steady_from = 0.5;     ///< the steady window: the last (1 − steady_from) of the slide
   long record_every = 200;      ///< steps per sample of the history (forces averaged over them)
+  /// Carry tangential histories over neighbour rebuilds for touching pairs
+  /// only, as LAMMPS did in the thesis' runs (NeighborSettings); off: every
+  /// contact keeps its history, as (6.4) defines it.
+  bool history_of_touching_pairs_only = false;
 };
 
 struct JunctionStrengthResult {

@@ -25,6 +25,14 @@ struct NeighborSettings {
   /// Also rebuild when a particle has moved more than skin/2 since the last
   /// build (the list is then never stale).
   bool check_displacement = true;
+  /// At a rebuild, carry over the tangential history of touching pairs only
+  /// (r < r_i + r_j) and start every other pair afresh. This is what LAMMPS'
+  /// fix neigh/history does for a granular pair style that does not set
+  /// `beyond_contact`, as the thesis' gran/cohesive/history (§6.1); it drops
+  /// the springs of the cohesive pairs at a rate set by the skin, so results
+  /// depend on a numerical parameter. A compatibility switch, to reproduce
+  /// the thesis' runs (bench/dem/thesis_lammps/README.md); off by default.
+  bool history_of_touching_pairs_only = false;
 };
 
 class NeighborList {
@@ -39,6 +47,8 @@ class NeighborList {
   /// `history_size` doubles of history per pair (the contact law's); the
   /// histories are carried over only between builds of the same size.
   void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
+  /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
+  void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
 
   std::size_t pairs() const { return neighbor_.size(); }
   const std::vector<std::uint32_t>& offsets() const { return offset_; }
@@ -74,7 +84,7 @@ class NeighborList {
                int history_size = 3);
 
  private:
-  void sort_and_keep_history(const Particles& p);
+  void sort_and_keep_history(const Particles& p, const Box& box);
 
   std::vector<std::uint32_t> offset_, neighbor_;
   std::vector<std::uint8_t> shift_;
@@ -98,6 +108,7 @@ class NeighborList {
   int history_size_ = 3;
   double half_skin_ = 0.0;
   long builds_ = 0;
+  bool touching_only_ = false;
 };
 
 }  // namespace wearscale::dem
