@@ -156,7 +156,11 @@ int run(int argc, char** argv) {
       }
       return exit_bad_input;
     }
-    if (mpi::size() > 1 && !mpi::is_root()) log::set_level(log::Level::Quiet);  // a rank's own failure is heard
+    // A rank's own failure is heard, except a solver's NumericalError: the
+    // solver's sums are the same on every rank, so every rank fails alike and
+    // rank 0 says it once.
+    if (mpi::size() > 1 && !mpi::is_root() && dynamic_cast<const NumericalError*>(&e) == nullptr)
+      log::set_level(log::Level::Quiet);
     if (dynamic_cast<const InputError*>(&e) != nullptr) {
       log::error("{}", e.what());
       return exit_bad_input;

@@ -24,7 +24,7 @@ using ::testing::HasSubstr;
 namespace {
 const ScratchDir work_scratch("wearscale_mpi_contact_cli_");
 const fs::path work = work_scratch.path();
-const std::string rough_case = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/rough_contact.toml'";
+const std::string rough_case = "'" WEARSCALE_SOURCE_DIR "/cases/rough_contact.toml'";
 
 // `wearscale args` on `ranks` ranks (0: without mpirun).
 CliResult run(int ranks, const std::string& args) {
@@ -42,6 +42,12 @@ std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
+}
+
+// The error messages in `err`: the lines that start with "error: ".
+std::size_t error_lines(const std::string& err) {
+  std::size_t n = err.starts_with("error: ") ? 1 : 0;
+  return n + count(err, "\nerror: ");
 }
 
 // Every headline figure within 1e-12 relative, counts equal. The residual ε
@@ -136,8 +142,18 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
     const auto r = run(3, args + " " + set + " --out " + dir);
     EXPECT_EQ(r.status, 2) << set << "\n" << r.err;
     EXPECT_THAT(r.err, HasSubstr(key)) << set;
-    EXPECT_EQ(count(r.err, "error: "), 1u) << set << "\n" << r.err;  // said once, by one rank
+    EXPECT_EQ(error_lines(r.err), 1u) << set << "\n" << r.err;  // said once, by one rank
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("MPI_ABORT"))) << set;
     EXPECT_FALSE(fs::exists(work / dir)) << set;  // nothing written, not even the folder
   }
+}
+
+TEST(MpiContactCli, ASolverFailureEndsEveryRankOnceWithStatus1) {
+  // Three iterations cannot reach 1e-10: every rank fails alike (the same
+  // sums), rank 0 says it once, the job ends (no rank waits), nothing is left.
+  const auto r = run(2, "contact " + rough_case + " --set contact.grid=128 --set contact.max_iterations=3 -q --out failed");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(error_lines(r.err), 1u) << r.err;  // message lines start with "error: "
+  EXPECT_THAT(r.err, HasSubstr("no convergence"));
+  EXPECT_FALSE(fs::exists(work / "failed" / "summary.json"));
 }
