@@ -55,12 +55,15 @@ SlabCase read_slab_case(const Config& config) {
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
   const double points = static_cast<double>(s.grid.size());
   const bool gather = s.grid.size() <= slab_gather_limit;
-  // Every rank checks the whole job's need on its machine: the ranks of a job
-  // on one machine share its memory.
-  require_memory(kBytesPerPoint * points + (gather ? kGatherBytesPerPoint * points : 0.0),
-                 fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks", c.where("grid"),
-                             c.full_key("grid"), n, n, n, ranks),
-                 "give a smaller grid");
+  // Each rank checks its own share (rank 0 adds the gathered fields) against
+  // the memory of its machine: the point of the slabs is a grid larger than
+  // one machine. Ranks sharing a machine each see all of its free memory, so
+  // there the check is per rank, not for the job (an overcommitted job is
+  // ended by the system and mpirun ends the others: no wrong answer, no hang).
+  require_memory(kBytesPerPoint * points / ranks + (mpi::is_root() && gather ? kGatherBytesPerPoint * points : 0.0),
+                 fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks (rank {}'s share)",
+                             c.where("grid"), c.full_key("grid"), n, n, n, ranks, mpi::rank()),
+                 "give a smaller grid or more ranks");
   config.reject_unknown_keys();  // every check before any work
   return s;
 }

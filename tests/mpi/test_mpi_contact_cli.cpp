@@ -26,13 +26,13 @@ const ScratchDir work_scratch("wearscale_mpi_contact_cli_");
 const fs::path work = work_scratch.path();
 const std::string rough_case = "'" WEARSCALE_SOURCE_DIR "/cases/rough_contact.toml'";
 
-// `wearscale args` on `ranks` ranks (0: without mpirun).
-CliResult run(int ranks, const std::string& args) {
+// `wearscale args` on `ranks` ranks (0: without mpirun); `env` adds variables.
+CliResult run(int ranks, const std::string& args, const std::string& env = {}) {
   fs::create_directories(work);
   const auto out = work / "cli.stdout", err = work / "cli.stderr";
   const std::string launcher =
       ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
-  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + launcher + "'" +
+  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + env + " " + launcher + "'" +
                           std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int raw = std::system(cmd.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
@@ -146,6 +146,13 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
     EXPECT_THAT(r.err, ::testing::Not(HasSubstr("MPI_ABORT"))) << set;
     EXPECT_FALSE(fs::exists(work / dir)) << set;  // nothing written, not even the folder
   }
+  // More than a rank's share of memory (rank 0's, which gathers the fields): refused before any work.
+  const auto r = run(2, "contact " + rough_case + " --set contact.grid=2048 -q --out refused_memory",
+                     "WEARSCALE_MEMORY_LIMIT=100MiB");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("contact.grid"));
+  EXPECT_THAT(r.err, HasSubstr("rank 0's share"));
+  EXPECT_FALSE(fs::exists(work / "refused_memory"));
 }
 
 TEST(MpiContactCli, ASolverFailureEndsEveryRankOnceWithStatus1) {
