@@ -121,15 +121,21 @@ int run(int argc, char** argv) {
   }
   install_interrupt_handlers();
   app::set_invocation(argc, argv);
-  if (mpi::size() > 1) {
-    // No command distributes its work over ranks yet: P copies of one run would
-    // write the same files at once. Refused on every rank before any work.
+  const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();
+  if (mpi::size() > 1 && command != "contact" && command != "run") {
+    // Only the runner's distributed studies (the contact study, in slabs over
+    // the ranks, rank 0 writing) spread their work over ranks: P copies of
+    // another command would write the same files at once. Refused on every
+    // rank before any work.
     if (mpi::is_root())
-      log::error("wearscale {}: runs on one rank only for now ({} ranks started); run it without mpirun",
-                 app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name(), mpi::size());
+      log::error("wearscale {}: runs on one rank only ({} ranks started; under mpirun only `contact` and `run` of "
+                 "a contact case are distributed); run it without mpirun",
+                 command, mpi::size());
     every_rank_refused = true;
     return exit_bad_input;
   }
+  // Under mpirun the ranks other than 0 print nothing (rank 0 speaks for the job), except their own failure.
+  if (mpi::size() > 1 && !mpi::is_root()) log::set_level(log::Level::Silent);
   try {
     for (auto* sub : app.get_subcommands())
       if (commands.count(sub) != 0) return commands.at(sub)();
@@ -142,6 +148,19 @@ int run(int argc, char** argv) {
       log::error("interrupted by a signal ({})", e.what());
       return exit_interrupted;
     }
+    if (const auto* joint = dynamic_cast<const mpi::JointRefusal*>(&e)) {  // every rank refused together
+      every_rank_refused = true;
+      if (joint->speaks()) {
+        log::set_level(log::Level::Quiet);
+        log::error("{}", e.what());
+      }
+      return exit_bad_input;
+    }
+    // A rank's own failure is heard, except a solver's NumericalError: the
+    // solver's sums are the same on every rank, so every rank fails alike and
+    // rank 0 says it once.
+    if (mpi::size() > 1 && !mpi::is_root() && dynamic_cast<const NumericalError*>(&e) == nullptr)
+      log::set_level(log::Level::Quiet);
     if (dynamic_cast<const InputError*>(&e) != nullptr) {
       log::error("{}", e.what());
       return exit_bad_input;

@@ -7,6 +7,7 @@
 
 #include "completion.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::app {
@@ -85,6 +86,7 @@ int run_study(StudyFlags& f) {
   if (!f.out.empty()) f.options.output_dir = f.out;
   if (!f.resume.empty()) f.options.resume_dir = f.resume;
   const auto summary = studies::run_case(f.options);
+  if (!mpi::is_root()) return 0;  // under mpirun rank 0 prints the job's summary
   if (f.json) {
     std::cout << summary.to_json().dump(2) << '\n';
     return 0;

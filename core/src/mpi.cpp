@@ -143,4 +143,24 @@ void gather(std::span<const double> local, std::span<double> all) {
   std::copy(local.begin(), local.end(), all.begin());
 }
 
+void refuse_together(const std::function<void()>& checks) {
+  if (size() == 1) {
+    checks();
+    return;
+  }
+  std::string message;
+  bool refused = false;
+  try {
+    checks();
+  } catch (const InputError& e) {
+    message = e.what();
+    refused = true;
+  }
+  // The lowest rank that refused, as size() − rank (0: none refused).
+  const double lowest = max(refused ? static_cast<double>(size() - rank()) : 0.0);
+  if (lowest == 0.0) return;
+  const bool speaks = refused && static_cast<double>(size() - rank()) == lowest;
+  throw JointRefusal(speaks ? message : std::string(), speaks);
+}
+
 }  // namespace wearscale::mpi

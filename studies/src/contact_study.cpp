@@ -19,9 +19,12 @@
 //   stress_depths = ["1 um", "5 um"]  # optional: σ_I and τ_m fields below the surface
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "contact_case.hpp"
+#include "contact_slab.hpp"
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/crack_initiation.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
@@ -36,6 +39,7 @@
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/core/xdmf.hpp"
 #include "wearscale/studies/study.hpp"
 
@@ -70,26 +74,8 @@ RealField build_surface(const Config& c, const std::string& friction) {
   }
   const Grid2D g = h.grid();
   if (c.has("rough")) {
-    const Config r = c.section("rough");
-    RoughSurfaceSpec spec;
-    spec.grid = g;
-    // Ranges checked here so messages name the case key; the generator checks them again.
-    const double nyquist = static_cast<double>(std::min(g.nx, g.ny) / 2);
-    spec.hurst = r.number("hurst", Range::open_closed(0.0, 1.0));
-    spec.k_l = r.number("k_l", Range::open_closed(0.0, nyquist));
-    spec.k_r = r.number_or("k_r", spec.k_l, Range::closed(spec.k_l, nyquist));
-    spec.k_s = r.number("k_s", Range::closed(spec.k_r, nyquist));
-    spec.seed = static_cast<std::uint64_t>(r.integer_or("seed", 0, Range::non_negative()));
-    const int targets = int(r.has("hprime_rms")) + int(r.has("h_rms")) + int(r.has("sa"));
-    if (targets != 1) throw r.error("hprime_rms", "give exactly one of hprime_rms, h_rms, sa", "one roughness target");
-    RealField rough;
-    if (r.has("hprime_rms"))
-      rough = generate_surface(spec, RoughnessMeasure::HPrimeRms, r.number("hprime_rms", Range::positive()));
-    else if (r.has("h_rms"))
-      rough = generate_surface(spec, RoughnessMeasure::HRms, r.number("h_rms", Range::positive(), units::length));
-    else
-      rough = generate_surface(spec, RoughnessMeasure::Sa, r.number("sa", Range::positive(), units::length));
-    h = add(h, rough);
+    const RoughCase r = read_rough_case(c.section("rough"), g);
+    h = add(h, generate_surface(r.spec, r.measure, r.target));
   }
   if (c.has("sphere")) {
     const double radius = c.number("sphere.radius", Range::positive(), units::length);
@@ -101,86 +87,16 @@ RealField build_surface(const Config& c, const std::string& friction) {
   return h;
 }
 
-// [contact] boundary: "periodic" (a cell of a periodic surface) or "free" (a window on an isolated body).
-Boundary contact_boundary(const Config& c) {
-  return c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? Boundary::Free : Boundary::Periodic;
-}
-
-double contact_modulus(const Config& c) {
-  if (c.has("e_star")) return c.number("e_star", Range::positive(), units::pressure);
-  const double e = c.number("young", Range::positive(), units::pressure);
-  const double nu = c.number("poisson", Range::open_closed(-1.0, 0.5));
-  return e / (1.0 - nu * nu);  // rigid surface on an elastic flat (1.12)
-}
-
 // Frictionless normal contact (Polonsky–Keer).
 void run_normal_study(const Config& config, const Config& c, const RealField& h, RunContext& context) {
-  const auto& out = context.output_dir();
   const Grid2D g = h.grid();
-  const double e_star = contact_modulus(c);
-  const int loads = int(c.has("mean_pressure")) + int(c.has("normal_load")) + int(c.has("interference"));
-  if (loads != 1)
-    throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load, interference", "one load");
-  ContactOptions options;
-  options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
-  options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
-  const auto connectivity =
-      c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
-  const Boundary boundary = contact_boundary(c);
-  double p0 = 0.0, delta = 0.0;
-  if (c.has("mean_pressure")) p0 = c.number("mean_pressure", Range::non_negative(), units::pressure);
-  if (c.has("normal_load")) p0 = c.number("normal_load", Range::non_negative(), units::force) / g.area();
-  if (c.has("interference")) delta = c.number("interference", Range::any(), units::length);
+  const NormalCase n = read_normal_case(c, g);
   config.reject_unknown_keys();  // every check before any work
 
-  log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), e_star, to_string(boundary));
-  NormalContact contact(h, e_star, boundary);
-  const ContactResult r =
-      c.has("interference") ? contact.solve_interference(delta, options) : contact.solve_mean_pressure(p0, options);
-  const ContactMap map = find_clusters(contact.pressure(), connectivity);
-
-  RealField in_contact(g);
-  for (std::size_t k = 0; k < g.size(); ++k) in_contact[k] = contact.pressure()[k] > 0.0 ? 1.0 : 0.0;
-  const auto h5_path = out / "contact.h5";
-  H5Writer h5(h5_path);
-  h5.write_field("/surface/height", h, "m");
-  h5.write_field("/fields/pressure", contact.pressure(), "Pa");
-  h5.write_field("/fields/gap", contact.gap(), "m");
-  h5.write_field("/fields/displacement", contact.displacement(), "m");
-  h5.write_field("/fields/contact", in_contact, "1");
-  h5.set_attribute("/", "case_toml", config.to_toml());
-
-  auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    context.report(name, v, unit, what);
-    h5.write_scalar("/results/" + name, v, unit);
-  };
-  report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
-  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-  report("contact_area", contact_area(contact.pressure()), "m^2", "real contact area A");
-  report("interference", r.interference, "m",
-         boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
-                                    : "summit depth below the mean deformed surface");
-  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
-  report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
-  report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
-  report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
-  report("hprime_rms", h_prime_rms(h), "1", "RMS slope of the surface (1.6)");
-
-  std::vector<double> area, cx, cy;
-  for (const auto& cl : map.clusters) {
-    area.push_back(cl.area);
-    cx.push_back(cl.centroid_x);
-    cy.push_back(cl.centroid_y);
-  }
-  h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"});
-  XdmfSidecar sidecar(g);
-  sidecar.add(h5, {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
-                   {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
-  h5.commit();
-  sidecar.write(out / "contact.xdmf", h5_path);
-  write_csv(out / "clusters.csv", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"},
-            {"micro-contacts of the solved contact, largest first"});
-  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
+  log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), n.e_star, to_string(n.boundary));
+  NormalContact contact(h, n.e_star, n.boundary);
+  const ContactResult r = n.solve(contact);
+  write_normal_study(config, n, h, contact.pressure(), contact.gap(), contact.displacement(), r, context);
 }
 
 // Frictional contact (Appendix A): tractions, stick/slip map, displacements,
@@ -363,7 +279,16 @@ class ContactStudy final : public Study {
     return "normal or frictional contact of a rigid surface (file, rough, sphere) on an elastic flat (BEM)";
   }
   Schema schema() const override;
+  // Under mpirun (P > 1) the case is read and checked on every rank before any
+  // work (contact_slab.hpp says what is refused); serial runs read it in run().
+  std::vector<std::string> prepare(const Config& config) override {
+    if (mpi::size() > 1) slab_ = read_slab_case(config);
+    return {};
+  }
+  bool distributed() const override { return true; }
+  void run_other_rank(const Config& config) override { run_slab_contact(config, slab_.value(), nullptr); }
   void run(const Config& config, RunContext& context) override {
+    if (slab_) return run_slab_contact(config, *slab_, &context);
     const Config c = config.section("contact");
     const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
     const RealField h = build_surface(c, friction);
@@ -375,6 +300,9 @@ class ContactStudy final : public Study {
     else
       run_frictional_study(config, c, h, friction, context);
   }
+
+ private:
+  std::optional<SlabCase> slab_;  // read by prepare() under mpirun
 };
 
 Schema ContactStudy::schema() const {

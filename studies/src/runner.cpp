@@ -23,6 +23,7 @@
 #include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/progress.hpp"
@@ -478,9 +479,55 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   return sweep;
 }
 
+// Under `mpirun -np P` (P > 1): one run of a distributed study, every rank in
+// it. Every check (the case, the study's keys, rank 0's output folder) is
+// agreed by all ranks before any work (mpi::refuse_together: a refusal ends
+// every rank with status 2, nothing written); then rank 0 runs the study into
+// its folder as a single run does and the other ranks make the same
+// collective calls (Study::run_other_rank), writing nothing.
+RunSummary run_distributed(const RunOptions& options) {
+  std::optional<PreparedRun> run;
+  std::optional<OutputLock> lock;
+  const std::string command = command_line(options, thread_budget());
+  mpi::refuse_together([&] {
+    require_utf8_paths(options);
+    if (options.resume_dir)
+      throw InputError(fmt::format("--resume {}: a run on {} MPI ranks writes no checkpoints and is not resumed; run "
+                                   "it again, or resume a run made without mpirun without mpirun",
+                                   options.resume_dir->string(), mpi::size()));
+    Config cfg = options.case_text ? Config::from_string(*options.case_text, options.case_file.string())
+                 : options.case_file.empty() ? Config::from_string("", "<command line>")
+                                             : Config::load(options.case_file);
+    for (const auto& o : options.overrides) cfg.override_value(o);
+    if (cfg.has("sweep"))
+      throw cfg.error("sweep.key", fmt::format("a sweep is not distributed over MPI ranks ({} ranks started)", mpi::size()),
+                      "no [sweep] under mpirun; a sweep without mpirun");
+    run.emplace(prepare(std::move(cfg), options.output_dir, options));
+    if (!run->study->distributed())
+      throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun only the contact "
+                                   "study is distributed); run it without mpirun",
+                                   run->summary.study, mpi::size()));
+  });
+  mpi::refuse_together([&] {  // the folder: rank 0's alone
+    if (!mpi::is_root()) return;
+    lock.emplace(OutputLock::folder(run->summary.output_dir, command));
+    check_fresh_start(*run);
+  });
+  FFTPlanCache::global().set_rigor(run->fft_rigor);
+  if (!mpi::is_root()) {
+    run->study->run_other_rank(run->cfg);
+    return run->summary;
+  }
+  log::info("case '{}': study {} on {} MPI ranks → {}", run->summary.case_name, run->summary.study, mpi::size(),
+            run->summary.output_dir.string());
+  execute(*run, options, true, nullptr);
+  return run->summary;
+}
+
 }  // namespace
 
 RunSummary run_case(const RunOptions& options_in) {
+  if (mpi::size() > 1) return run_distributed(options_in);
   require_utf8_paths(options_in);
   RunOptions options = options_in;
   if (options.resume_dir)

@@ -10,6 +10,7 @@
 
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/roots.hpp"
 
 namespace wearscale::bem {
@@ -305,6 +306,7 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
     if (!std::isfinite(descent.error))
       throw NumericalError(kSolver, it, "orthogonality error", "not finite (NaN in u or p)");
     if (it == 0) first_error = descent.error;
+    if (it % 10 == 0) log::debug("{}: iteration {}, ε = {:.3g}", kSolver, it, descent.error);  // long solves: -v
     history_.push_back(descent.error);
     if (history_.size() > kHistory) history_.erase(history_.begin());
     if (descent.error < opt.tolerance && !descent.penetrates) {

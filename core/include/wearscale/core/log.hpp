@@ -7,7 +7,8 @@
 
 namespace wearscale::log {
 
-enum class Level { Quiet = 0, Normal = 1, Verbose = 2 };
+/// Silent: nothing at all, not even warnings and errors (the ranks other than 0 of an MPI job).
+enum class Level { Silent = -1, Quiet = 0, Normal = 1, Verbose = 2 };
 
 void set_level(Level level);
 Level level();

@@ -6,7 +6,11 @@
 // 1, no MPI call), and so does a build without WEARSCALE_MPI. A rank that
 // fails calls abort(): the whole job ends, no rank waits for it forever.
 #include <cstddef>
+#include <functional>
 #include <span>
+#include <string>
+
+#include "wearscale/core/errors.hpp"
 
 namespace wearscale::mpi {
 
@@ -46,5 +50,25 @@ double max(double local);
 /// (whose size must be the total; ignored on the other ranks): a field
 /// distributed in slabs of rows becomes the whole field on rank 0. Serial: a copy.
 void gather(std::span<const double> local, std::span<double> all);
+
+/// The refusal of a job that every rank reached together (refuse_together):
+/// every rank ends with status 2 and no rank needs MPI_Abort. `speaks` on the
+/// one rank that prints the message (the lowest that refused); the others
+/// carry an empty message and print nothing.
+class JointRefusal : public InputError {
+ public:
+  JointRefusal(const std::string& message, bool speaks) : InputError(message), speaks_(speaks) {}
+  bool speaks() const { return speaks_; }
+
+ private:
+  bool speaks_;
+};
+
+/// Runs `checks` on every rank (collective) and agrees on the outcome: when an
+/// InputError is thrown on any rank, every rank throws a JointRefusal (the
+/// message of the lowest rank that refused, spoken there only). Other
+/// exceptions pass through (a rank that fails otherwise ends the job through
+/// abort()). Serial: runs `checks`, its InputError unchanged.
+void refuse_together(const std::function<void()>& checks);
 
 }  // namespace wearscale::mpi

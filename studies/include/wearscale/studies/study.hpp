@@ -71,6 +71,14 @@ class Study {
   /// work (config.reject_unknown_keys()), when prepare() did not.
   virtual void run(const Config& inputs, RunContext& context) = 0;
 
+  /// Under `mpirun -np P` (P > 1): whether the study spreads its work over
+  /// the ranks (the runner refuses the others). Rank 0 calls run(); every
+  /// other rank calls run_other_rank(), which makes the same collective calls
+  /// and writes nothing. prepare() runs on every rank, so its refusals are the
+  /// same on all of them.
+  virtual bool distributed() const { return false; }
+  virtual void run_other_rank(const Config& /*inputs*/) {}
+
   /// What a sweep over this study adds besides its table (plots of the
   /// runs' curves), given each run's folder and label; returns the files written.
   struct SweepRuns {

@@ -1,0 +1,46 @@
+#pragma once
+// The parts of a [contact] case that the serial contact study
+// (contact_study.cpp) and the one in slabs over MPI ranks (contact_slab.cpp)
+// share: the keys of a generated rough surface and of a frictionless load, and
+// the files written from the solved whole fields. Private to the studies.
+#include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/bem/surface_generator.hpp"
+#include "wearscale/core/config.hpp"
+#include "wearscale/coupling/run_context.hpp"
+
+namespace wearscale::studies {
+
+/// [contact.rough] on grid `g`: the spectrum and the roughness it is scaled to.
+struct RoughCase {
+  bem::RoughSurfaceSpec spec;
+  bem::RoughnessMeasure measure = bem::RoughnessMeasure::HPrimeRms;
+  double target = 1.0;
+};
+RoughCase read_rough_case(const Config& rough, const Grid2D& g);
+
+/// [contact] boundary: "periodic" (a cell of a periodic surface) or "free" (a window on an isolated body).
+bem::Boundary contact_boundary(const Config& contact);
+/// E* from e_star, or from young and poisson (rigid surface on an elastic flat, 1.12).
+double contact_modulus(const Config& contact);
+
+/// The frictionless keys of [contact] on grid `g`: modulus, boundary, load, tolerance, micro-contacts.
+struct NormalCase {
+  double e_star = 1.0;
+  bem::Boundary boundary = bem::Boundary::Periodic;
+  bem::ContactOptions options;
+  bem::Connectivity connectivity = bem::Connectivity::Four;
+  double p0 = 0.0, delta = 0.0;
+  bool imposes_interference = false;
+  /// The solve the case asks for (imposed mean pressure or interference).
+  bem::ContactResult solve(bem::NormalContact& contact) const;
+};
+NormalCase read_normal_case(const Config& contact, const Grid2D& g);
+
+/// contact.h5 (+ .xdmf) and clusters.csv from the whole fields, and the
+/// headline figures reported to `context`.
+void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
+                        const RealField& gap, const RealField& u, const bem::ContactResult& r,
+                        coupling::RunContext& context);
+
+}  // namespace wearscale::studies

@@ -1,0 +1,115 @@
+#include "contact_slab.hpp"
+
+#include <fmt/format.h>
+
+#include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/slab_half_space.hpp"
+#include "wearscale/bem/slab_surface.hpp"
+#include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/mpi.hpp"
+#include "wearscale/core/units.hpp"
+
+namespace wearscale::studies {
+
+using namespace bem;
+
+namespace {
+// Peak memory per grid point of the slab solve summed over the ranks
+// (measured at 4096², P = 2: 83 B per point a rank holds, docs/bem.md), and
+// what rank 0 adds to gather the four fields, find the micro-contacts and
+// write them.
+constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 88.0;
+
+// The whole field on rank 0 (an empty one elsewhere) from every rank's rows.
+RealField gathered(const RealField& slab, const Grid2D& g) {
+  RealField whole(mpi::is_root() ? g : Grid2D(0, g.ny, 1.0, g.ly));
+  mpi::gather(slab.values(), whole.values());
+  return whole;
+}
+}  // namespace
+
+SlabCase read_slab_case(const Config& config) {
+  const Config c = config.section("contact");
+  const int ranks = mpi::size();
+  if (c.choice_or("friction", "none", {"none", "coulomb", "tresca"}) != "none")
+    throw c.error("friction",
+                  fmt::format("frictional contact is not distributed over MPI ranks ({} ranks started)", ranks),
+                  "\"none\" under mpirun; frictional contact without mpirun");
+  if (c.has("surface"))
+    throw c.error("surface", fmt::format("a measured surface is not read in slabs over MPI ranks ({} ranks started)", ranks),
+                  "[contact.rough] and/or [contact.sphere] under mpirun; a file without mpirun");
+  SlabCase s;
+  const long n = c.integer("grid", Range::closed(8, 16384));
+  s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
+  if (c.has("rough")) s.rough = read_rough_case(c.section("rough"), s.grid);
+  if (c.has("sphere")) s.sphere_radius = c.number("sphere.radius", Range::positive(), units::length);
+  if (!c.has("rough") && !c.has("sphere"))
+    throw c.error("surface", "no surface: give a [contact.rough] or a [contact.sphere] table (under mpirun)",
+                  "rough and/or sphere");
+  s.normal = read_normal_case(c, s.grid);
+  if (s.normal.boundary == Boundary::Free)
+    throw c.error("boundary", fmt::format("a free boundary is not distributed over MPI ranks ({} ranks started)", ranks),
+                  "\"periodic\" under mpirun; \"free\" without mpirun");
+  s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
+                     s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
+  const double points = static_cast<double>(s.grid.size());
+  const bool gather = s.grid.size() <= slab_gather_limit;
+  // Each rank checks its own share (rank 0 adds the gathered fields) against
+  // the memory of its machine: the point of the slabs is a grid larger than
+  // one machine. Ranks sharing a machine each see all of its free memory, so
+  // there the check is per rank, not for the job (an overcommitted job is
+  // ended by the system and mpirun ends the others: no wrong answer, no hang).
+  require_memory(kBytesPerPoint * points / ranks + (mpi::is_root() && gather ? kGatherBytesPerPoint * points : 0.0),
+                 fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks (rank {}'s share)",
+                             c.where("grid"), c.full_key("grid"), n, n, n, ranks, mpi::rank()),
+                 "give a smaller grid or more ranks");
+  config.reject_unknown_keys();  // every check before any work
+  return s;
+}
+
+void run_slab_contact(const Config& config, const SlabCase& s, coupling::RunContext* context) {
+  const Grid2D& g = s.grid;
+  const NormalCase& normal = s.normal;
+  log::info("contact: {} , E* = {:g} Pa, periodic boundary, in slabs over {} MPI ranks", g.to_string(), normal.e_star,
+            mpi::size());
+  auto body = std::make_unique<SlabHalfSpace>(g, normal.e_star, s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
+  const std::size_t first = body->first_row(), rows = body->rows();
+  SlabFFT& fft = body->fft();  // owned by the body, which the contact keeps
+  RealField h(body->local_grid());  // 0 + rough + sphere, as the serial study adds them
+  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, fft));
+  if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
+  NormalContact contact(std::move(body), h, normal.e_star);
+  const ContactResult r = normal.solve(contact);
+
+  if (g.size() <= slab_gather_limit) {
+    RealField whole_h = gathered(h, g);
+    h = RealField();  // each slab freed once gathered: rank 0 holds the whole fields next
+    const RealField p = gathered(contact.pressure(), g), gap = gathered(contact.gap(), g);
+    const RealField u = gathered(contact.displacement(), g);
+    if (context != nullptr) write_normal_study(config, normal, whole_h, p, gap, u, r, *context);
+    return;
+  }
+  // Above the gather limit: the headline figures from the slabs (collective), no fields, no micro-contacts.
+  const double hprime = roughness_slab(h, g, RoughnessMeasure::HPrimeRms, fft);
+  long long touching = 0;
+  for (double v : contact.pressure()) touching += v > 0.0 ? 1 : 0;
+  const double area = static_cast<double>(mpi::sum(touching)) * g.cell_area();
+  if (context == nullptr) return;
+  log::warn("contact: {} points are more than rank 0 gathers ({}): only the headline figures are written (no "
+            "contact.h5, clusters.csv or micro-contacts)",
+            g.size(), slab_gather_limit);
+  auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+    context->report(name, v, unit, what);
+  };
+  report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
+  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
+  report("contact_area", area, "m^2", "real contact area A");
+  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
+  report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
+  report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
+  report("hprime_rms", hprime, "1", "RMS slope of the surface (1.6)");
+}
+
+}  // namespace wearscale::studies

@@ -1,0 +1,42 @@
+#pragma once
+// The contact study on the ranks of an MPI job (`mpirun -np P wearscale
+// contact CASE`): the fields in slabs of rows over the ranks (SlabHalfSpace,
+// FFTW-MPI; memory per rank about 1/P of the serial study's), the rough
+// surface drawn per slab from the seed's stream (the serial surface), the one
+// Polonsky–Keer solver on them (the serial iterations and answer). Rank 0
+// gathers height, pressure, gap and displacement and writes the serial study's
+// files when the grid has at most slab_gather_limit points; above it reports
+// the headline figures only (no contact.h5, no micro-contacts) and says so.
+//
+// Distributed: frictionless, periodic contact of a generated rough surface
+// and/or a sphere. Refused (InputError naming the key, the same on every rank,
+// before any work): contact.friction other than "none", contact.boundary =
+// "free", contact.surface (a measured file).
+#include <cstddef>
+#include <optional>
+
+#include "contact_case.hpp"
+
+namespace wearscale::studies {
+
+/// Grids above this many points are not gathered on rank 0 (8 B per point and field).
+inline constexpr std::size_t slab_gather_limit = std::size_t{4096} * 4096;
+
+/// A [contact] case the slabs can run, every key read and checked.
+struct SlabCase {
+  Grid2D grid;
+  NormalCase normal;
+  std::optional<RoughCase> rough;
+  double sphere_radius = 0.0;  ///< 0: no sphere
+  bool measured_plans = true;  ///< FFTW MEASURE plans ([run] fft_planning, and from 512²)
+};
+
+/// Reads and checks the case (collective only through the InputError it may
+/// throw alike on every rank); ends with config.reject_unknown_keys().
+SlabCase read_slab_case(const Config& config);
+
+/// Solves the case on every rank (collective). Rank 0 passes its context and
+/// writes; the other ranks pass nullptr and write nothing.
+void run_slab_contact(const Config& config, const SlabCase& slab, coupling::RunContext* context);
+
+}  // namespace wearscale::studies

@@ -1,0 +1,166 @@
+// `mpirun -np P wearscale contact`: the fields in slabs over the ranks, the
+// serial study's summary and files (rank 0 alone writes and prints); what the
+// slabs cannot do is refused on every rank (status 2, the key named, nothing
+// written). Runs mpirun itself (label "mpi"); 128² and 160², one thread a rank.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const ScratchDir work_scratch("wearscale_mpi_contact_cli_");
+const fs::path work = work_scratch.path();
+const std::string rough_case = "'" WEARSCALE_SOURCE_DIR "/cases/rough_contact.toml'";
+
+// `wearscale args` on `ranks` ranks (0: without mpirun); `env` adds variables.
+CliResult run(int ranks, const std::string& args, const std::string& env = {}) {
+  fs::create_directories(work);
+  const auto out = work / "cli.stdout", err = work / "cli.stderr";
+  const std::string launcher =
+      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
+  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + env + " " + launcher + "'" +
+                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The error messages in `err`: the lines that start with "error: ".
+std::size_t error_lines(const std::string& err) {
+  std::size_t n = err.starts_with("error: ") ? 1 : 0;
+  return n + count(err, "\nerror: ");
+}
+
+// Every headline figure within 1e-12 relative, counts equal. The residual ε
+// (Σp|g| / Σp·h_rms at the last iteration, g ≈ 0 on the contact) is the
+// round-off of the transforms itself: below the tolerance in both and equal
+// to 1e-12 absolute (measured: 1e-16 apart, 1e-6 of its value, at 128²).
+void expect_same_results(const nlohmann::json& serial, const nlohmann::json& slab, int ranks) {
+  ASSERT_EQ(serial["results"].size(), slab["results"].size());
+  const double tolerance = serial["parameters"]["contact"]["tolerance"].get<double>();
+  for (const auto& [name, v] : serial["results"].items()) {
+    ASSERT_TRUE(slab["results"].contains(name)) << name;
+    if (name == "error") {
+      const double a = v["value"].get<double>(), b = slab["results"][name]["value"].get<double>();
+      EXPECT_LT(a, tolerance);
+      EXPECT_LT(b, tolerance);
+      EXPECT_LE(std::abs(a - b), 1e-12) << "error at P = " << ranks;
+      continue;
+    }
+    const double a = v["value"].get<double>(), b = slab["results"][name]["value"].get<double>();
+    EXPECT_LE(std::abs(a - b), 1e-12 * std::abs(a)) << name << " at P = " << ranks << ": " << a << " vs " << b;
+  }
+  EXPECT_EQ(serial["results"]["iterations"], slab["results"]["iterations"]);
+  EXPECT_EQ(serial["results"]["clusters"], slab["results"]["clusters"]);
+}
+
+// The datasets of contact.h5 within 1e-12 of each field's largest value; the
+// contact map and the micro-contacts' table equal.
+void expect_same_files(const fs::path& serial, const fs::path& slab) {
+  for (const char* f : {"run.h5", "contact.h5", "contact.xdmf", "clusters.csv", "summary.json"})
+    EXPECT_TRUE(fs::exists(slab / f)) << slab / f;
+  const wearscale::H5Reader a(serial / "contact.h5"), b(slab / "contact.h5");
+  for (const char* d : {"/surface/height", "/fields/pressure", "/fields/gap", "/fields/displacement", "/fields/contact",
+                        "/clusters/area", "/clusters/centroid_x", "/clusters/centroid_y"}) {
+    const auto read = [d](const wearscale::H5Reader& h5) {
+      if (std::string(d).starts_with("/clusters")) return h5.read_series(d);
+      const auto f = h5.read_field(d);
+      return std::vector<double>(f.values().begin(), f.values().end());
+    };
+    const auto x = read(a), y = read(b);
+    ASSERT_EQ(x.size(), y.size()) << d;
+    double largest = 0.0, worst = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      largest = std::max(largest, std::abs(x[k]));
+      worst = std::max(worst, std::abs(x[k] - y[k]));
+    }
+    EXPECT_LE(worst, 1e-12 * largest) << d;
+  }
+  EXPECT_EQ(slurp(serial / "clusters.csv").size(), slurp(slab / "clusters.csv").size());
+}
+}  // namespace
+
+TEST(MpiContactCli, TwoAndThreeRanksGiveTheSerialSummaryAndFiles) {
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --json";
+  const auto serial = run(0, args + " -q --out serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto s = nlohmann::json::parse(serial.out);
+  for (int ranks : {2, 3}) {
+    const std::string dir = "slab" + std::to_string(ranks);
+    const auto slab = run(ranks, args + " --out " + dir);
+    ASSERT_EQ(slab.status, 0) << slab.err;
+    expect_same_results(s, nlohmann::json::parse(slab.out), ranks);  // one JSON object: rank 0's alone
+    EXPECT_EQ(count(slab.err, "contact: "), 1u) << slab.err;         // the other ranks print nothing
+    expect_same_files(work / "serial", work / dir);
+  }
+}
+
+TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
+  const std::string args = "contact " + rough_case +
+                           " --set contact.grid=160 --set contact.sphere.radius=2 --set contact.rough.hprime_rms=0.2 "
+                           "--set contact.mean_pressure=0.01 --json -q";
+  const auto serial = run(0, args + " --out sphere_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto slab = run(2, args + " --out sphere_slab");
+  ASSERT_EQ(slab.status, 0) << slab.err;
+  expect_same_results(nlohmann::json::parse(serial.out), nlohmann::json::parse(slab.out), 2);
+  expect_same_files(work / "sphere_serial", work / "sphere_slab");
+}
+
+TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 -q";
+  const std::pair<const char*, const char*> cases[] = {
+      {"--set contact.boundary=free", "contact.boundary"},
+      {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5",
+       "contact.friction"},
+      {"--set contact.surface=rough.h5", "contact.surface"},
+      {"--set contact.grid=7", "contact.grid"},
+      {"--set sweep.key=contact.grid --set 'sweep.values=[128, 256]'", "sweep"},
+      {"--resume elsewhere", "--resume"}};
+  int k = 0;
+  for (const auto& [set, key] : cases) {
+    const std::string dir = "refused" + std::to_string(k++);
+    const auto r = run(3, args + " " + set + " --out " + dir);
+    EXPECT_EQ(r.status, 2) << set << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr(key)) << set;
+    EXPECT_EQ(error_lines(r.err), 1u) << set << "\n" << r.err;  // said once, by one rank
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("MPI_ABORT"))) << set;
+    EXPECT_FALSE(fs::exists(work / dir)) << set;  // nothing written, not even the folder
+  }
+  // More than a rank's share of memory (rank 0's, which gathers the fields): refused before any work.
+  const auto r = run(2, "contact " + rough_case + " --set contact.grid=2048 -q --out refused_memory",
+                     "WEARSCALE_MEMORY_LIMIT=100MiB");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("contact.grid"));
+  EXPECT_THAT(r.err, HasSubstr("rank 0's share"));
+  EXPECT_FALSE(fs::exists(work / "refused_memory"));
+}
+
+TEST(MpiContactCli, ASolverFailureEndsEveryRankOnceWithStatus1) {
+  // Three iterations cannot reach 1e-10: every rank fails alike (the same
+  // sums), rank 0 says it once, the job ends (no rank waits), nothing is left.
+  const auto r = run(2, "contact " + rough_case + " --set contact.grid=128 --set contact.max_iterations=3 -q --out failed");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(error_lines(r.err), 1u) << r.err;  // message lines start with "error: "
+  EXPECT_THAT(r.err, HasSubstr("no convergence"));
+  EXPECT_FALSE(fs::exists(work / "failed" / "summary.json"));
+}
