@@ -29,7 +29,5 @@ Command add_strength_table(CLI::App& app);
 Command add_dem(CLI::App& app);
 Command add_wearmap(CLI::App& app);
 Command add_completion(CLI::App& app);
-/// `wearmap rough` (ch. 5), added under the `wearmap` command by add_wearmap.
-Command add_wearmap_rough(CLI::App& wearmap);
 
 }  // namespace wearscale::app
