@@ -17,7 +17,7 @@
 #include "wearscale/core/log.hpp"
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
-#include "wearscale/md/shear_test_config.hpp"
+#include "wearscale/coupling/shear_test_keys.hpp"
 
 namespace wearscale::app {
 
@@ -101,7 +101,7 @@ Command add_strength_table(CLI::App& app) {
     cfg.string_or("case.name", "strength-table");
     cfg.string_or("case.description", "");
     cfg.choice_or("md.backend", "lammps", {"lammps"});
-    const md::ShearTestSpec spec = md::read_shear_test_spec(cfg);
+    const md::ShearTestSpec spec = coupling::read_shear_test_spec(cfg);
     if (spec.pressures.size() < 2)
       throw cfg.error("md.pressures", "a strength table needs at least two pressures", "two or more pressures");
     const std::string out = cfg.string_or(
