@@ -37,7 +37,7 @@ const std::map<std::string, std::vector<std::string>>& table() {
         "--tangential-pressure 4e-5 --tensile-strength 1e-3 --out mindlin    # Mindlin partial slip (Fig. A.4a)"}},
       {"strength-table",
        {"wearscale strength-table --backend lammps --material Si --pressures 0,5 --set md.sample_steps=200 "
-        "--out si.csv    # two pressures with LAMMPS's smoke preset (tens of seconds; cached afterwards)"}},
+        "--out si    # two pressures with LAMMPS's smoke preset: si/lammps_smoke_Si.csv (tens of seconds; cached afterwards)"}},
       {"dem", {patch_test}},
       {"dem patch-test", {patch_test, "wearscale dem patch-test cases/dem_patch_test.toml --set dem.patch_test.length=12 "
                                       "--no-strengths --out patch-case"}},
