@@ -116,6 +116,7 @@ void add_schema_flags(CLI::App* cmd, StudyFlags& f, const std::string& study) {
       given.flag = spec.flag;
       given.range = spec.type == "range";
       given.list_unit = spec.list_unit;
+      // A flag without dashes ("file") is the command's positional argument.
       auto* option = cmd->add_option(spec.flag, given.value, studies::help_line(spec));
       if (spec.type == "choice") with_choices(option, choice_list(spec.range));
       if (given.range) option->type_name("MIN:MAX");
@@ -156,7 +157,10 @@ Command add_study_command(CLI::App& app, const std::string& command, const std::
   auto* cmd = app.add_subcommand(command, description);
   auto f = std::make_shared<StudyFlags>();
   f->options.study = study;
-  cmd->add_option("case", f->options.case_file, "Case file (TOML); without one the flags and --set give the keys");
+  // The case file is the positional argument, unless a key of the study is (`surface analyze FILE`).
+  const auto schema = studies::study_registry().create(study)->schema();
+  if (std::none_of(schema.begin(), schema.end(), [](const auto& k) { return !k.flag.empty() && k.flag[0] != '-'; }))
+    cmd->add_option("case", f->options.case_file, "Case file (TOML); without one the flags and --set give the keys");
   add_schema_flags(cmd, *f, study);
   add_runner_flags(cmd, *f, set_example);
   return [f]() {

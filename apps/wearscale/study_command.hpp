@@ -34,8 +34,9 @@ void add_schema_flags(CLI::App* cmd, StudyFlags& flags, const std::string& study
 /// Runs the study through the runner and prints its summary (JSON with --json).
 int run_study(StudyFlags& flags);
 
-/// A command that runs `study`: an optional case file, the schema's alias
-/// flags, and the runner's flags.
+/// A command that runs `study`: an optional case file (the positional
+/// argument, unless a key's alias is: a flag without dashes), the schema's
+/// alias flags, and the runner's flags.
 /// (The subcommand is app.get_subcommands({}).back(), for extra checks such as excludes.)
 Command add_study_command(CLI::App& app, const std::string& command, const std::string& study,
                           const std::string& description, const std::string& set_example);
