@@ -13,9 +13,6 @@ using Command = std::function<int()>;
 
 /// Prints headline figures {name: {value, unit, description}}, one a line.
 void print_results(const nlohmann::json& results);
-/// NumericalError (exit 1) naming the first headline figure {name: {value, …}}
-/// that is NaN or infinite: a summary never holds one (JSON null).
-void require_finite_results(const nlohmann::json& results, const std::string& solver);
 /// The command line this process was started with (for lock files and messages).
 const std::string& invocation();
 void set_invocation(int argc, char** argv);
