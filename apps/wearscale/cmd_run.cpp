@@ -1,14 +1,10 @@
 // wearscale run CASE.toml [--set KEY=VALUE]... [--out DIR] [--resume DIR] [--json]
 // Runs any study a case file names (studies/study.hpp: study_of).
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "wearscale/core/errors.hpp"
-#include "wearscale/core/log.hpp"
 #include "study_command.hpp"
 
 namespace wearscale::app {
@@ -17,14 +13,6 @@ void print_results(const nlohmann::json& results) {
   for (const auto& [name, r] : results.items())
     std::cout << fmt::format("{:<22} {:>14.6g} {:<4} {}\n", name, r["value"].get<double>(),
                              r["unit"].get<std::string>(), r["description"].get<std::string>());
-}
-
-void require_finite_results(const nlohmann::json& results, const std::string& solver) {
-  for (const auto& [name, r] : results.items()) {
-    const auto& v = r.contains("value") ? r["value"] : r;
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-      throw NumericalError(solver, 0, name, fmt::format("the result is {} (NaN or infinite)", v.dump()));
-  }
 }
 
 namespace {

@@ -13,9 +13,6 @@ using Command = std::function<int()>;
 
 /// Prints headline figures {name: {value, unit, description}}, one a line.
 void print_results(const nlohmann::json& results);
-/// NumericalError (exit 1) naming the first headline figure {name: {value, …}}
-/// that is NaN or infinite: a summary never holds one (JSON null).
-void require_finite_results(const nlohmann::json& results, const std::string& solver);
 /// The command line this process was started with (for lock files and messages).
 const std::string& invocation();
 void set_invocation(int argc, char** argv);
@@ -29,7 +26,5 @@ Command add_strength_table(CLI::App& app);
 Command add_dem(CLI::App& app);
 Command add_wearmap(CLI::App& app);
 Command add_completion(CLI::App& app);
-/// `wearmap rough` (ch. 5), added under the `wearmap` command by add_wearmap.
-Command add_wearmap_rough(CLI::App& wearmap);
 
 }  // namespace wearscale::app

@@ -11,7 +11,7 @@ namespace {
 const std::string pod = "wearscale run cases/pin_on_disc_si_oxide.toml --set scale.macro.grid=32 "
                         "--set scale.macro.distance=0.001 --out pod";
 const std::string generate = "wearscale surface generate --n 128 --size \"100 um\" --hurst 0.8 --kl 2 --kr 4 --ks 32 "
-                             "--hprime-rms 0.5 --seed 1 --out rough.h5";
+                             "--hprime-rms 0.5 --seed 1 --out rough    # rough/surface.h5 (+ .xdmf)";
 const std::string patch_test = "wearscale dem patch-test --lattice hcp --nu 0.1 --length 12 --no-strengths --out patch";
 const std::string analytic2d = "wearscale wearmap analytic2d --n 40 --out map2d";
 
@@ -27,9 +27,9 @@ const std::map<std::string, std::vector<std::string>>& table() {
         "--out sweep    # the oxide-thickness sweep, coarse"}},
       {"backends", {"wearscale backends", "wearscale backends --json"}},
       {"version", {"wearscale version", "wearscale version --json"}},
-      {"surface", {generate, "wearscale surface analyze rough.h5 --no-window    # periodic: no window"}},
+      {"surface", {generate, "wearscale surface analyze rough/surface.h5 --no-window    # periodic: no window"}},
       {"surface generate", {generate}},
-      {"surface analyze", {generate, "wearscale surface analyze rough.h5 --no-window --psd-out psd.csv --json"}},
+      {"surface analyze", {generate, "wearscale surface analyze rough/surface.h5 --no-window --psd-out psd.csv --out psd --json"}},
       {"contact",
        {"wearscale contact cases/rough_contact.toml --set contact.grid=128 --out rough-contact",
         "wearscale contact --set contact.grid=64 --set contact.size=1 --set contact.sphere.radius=10 "
@@ -37,7 +37,7 @@ const std::map<std::string, std::vector<std::string>>& table() {
         "--tangential-pressure 4e-5 --tensile-strength 1e-3 --out mindlin    # Mindlin partial slip (Fig. A.4a)"}},
       {"strength-table",
        {"wearscale strength-table --backend lammps --material Si --pressures 0,5 --set md.sample_steps=200 "
-        "--out si.csv    # two pressures with LAMMPS's smoke preset (tens of seconds; cached afterwards)"}},
+        "--out si    # two pressures with LAMMPS's smoke preset: si/lammps_smoke_Si.csv (tens of seconds; cached afterwards)"}},
       {"dem", {patch_test}},
       {"dem patch-test", {patch_test, "wearscale dem patch-test cases/dem_patch_test.toml --set dem.patch_test.length=12 "
                                       "--no-strengths --out patch-case"}},

@@ -1,11 +1,15 @@
 #include "study_command.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <iostream>
+#include <string_view>
 
 #include <fmt/format.h>
 
 #include "completion.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/studies/study.hpp"
@@ -21,6 +25,45 @@ std::vector<std::string> choice_list(const std::string& range) {
     out.push_back(range.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
     if (bar == std::string::npos) return out;
     start = bar + 3;
+  }
+}
+
+// "MIN:MAX" → "[MIN, MAX]"; InputError naming the flag otherwise.
+std::string range_to_toml(const std::string& flag, const std::string& text) {
+  const auto bad = [&]() {
+    return InputError(fmt::format("{} = '{}' is not a range; allowed: MIN:MAX, e.g. 0.01:0.3", flag, text));
+  };
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) throw bad();
+  auto number = [&](std::string_view s) {
+    double v = 0.0;
+    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v)) throw bad();
+    return v;
+  };
+  const std::string_view all(text);
+  return fmt::format("[{}, {}]", number(all.substr(0, colon)), number(all.substr(colon + 1)));
+}
+
+// "0,10,25" with unit "GPa" → ["0 GPa", "10 GPa", "25 GPa"]; InputError naming the flag for an item that is
+// not a plain number.
+std::string list_to_toml(const std::string& flag, const std::string& list, const std::string& unit,
+                         const std::string& key) {
+  std::string out;
+  for (std::size_t start = 0;;) {
+    const auto comma = list.find(',', start);
+    std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+    item = b == std::string::npos ? std::string() : item.substr(b, e - b + 1);
+    double v = 0.0;
+    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size())
+      throw InputError(fmt::format("{} '{}': '{}' is not a number; {} takes plain numbers in {} separated by commas, "
+                                   "e.g. {} 0,10,25 (unit strings go in the case key: --set '{}=[\"0 {}\", \"10 {}\"]')",
+                                   flag, list, item, flag, unit, flag, key, unit, unit));
+    out += fmt::format("{}\"{} {}\"", out.empty() ? "" : ", ", item, unit);
+    if (comma == std::string::npos) return "[" + out + "]";
+    start = comma + 1;
   }
 }
 
@@ -70,19 +113,30 @@ void add_schema_flags(CLI::App* cmd, StudyFlags& f, const std::string& study) {
   for (const auto& spec : studies::study_registry().create(study)->schema())
     if (spec.flag.empty()) continue;
     else if (spec.switch_value.empty()) {
-      auto* option = cmd->add_option(spec.flag, f.keys[spec.key], studies::help_line(spec));
+      auto& given = f.keys[spec.key];
+      given.flag = spec.flag;
+      given.range = spec.type == "range";
+      given.list_unit = spec.list_unit;
+      // A flag without dashes ("file") is the command's positional argument.
+      auto* option = cmd->add_option(spec.flag, given.value, studies::help_line(spec));
       if (spec.type == "choice") with_choices(option, choice_list(spec.range));
+      if (given.range) option->type_name("MIN:MAX");
     }
-    else  // a switch: sets its key to one value
-      cmd->add_flag_callback(spec.flag, [&f, spec] { f.keys[spec.key] = spec.switch_value; },
+    else {  // a switch: sets its key to one value
+      f.keys[spec.key] = {spec.flag, "", false, true, ""};
+      cmd->add_flag_callback(spec.flag, [&f, spec] { f.keys[spec.key].value = spec.switch_value; },
                              fmt::format("{} = {}: {}", spec.key, spec.switch_value, spec.doc));
+    }
 }
 
 int run_study(StudyFlags& f) {
-  std::vector<std::string> flags;  // the alias flags first, then --set
-  for (const auto& [key, value] : f.keys)
-    if (!value.empty()) flags.push_back(key + "=" + value);
-  f.options.overrides.insert(f.options.overrides.begin(), flags.begin(), flags.end());
+  for (const auto& [key, given] : f.keys)  // the alias flags, then --set
+    if (!given.value.empty())
+      f.options.flags.emplace_back(
+          key + "=" + (given.range                ? range_to_toml(given.flag, given.value)
+                       : !given.list_unit.empty() ? list_to_toml(given.flag, given.value, given.list_unit, key)
+                                                  : given.value),
+          given.is_switch ? given.flag : given.flag + " " + given.value);
   if (!f.out.empty()) f.options.output_dir = f.out;
   if (!f.resume.empty()) f.options.resume_dir = f.resume;
   const auto summary = studies::run_case(f.options);
@@ -105,7 +159,10 @@ Command add_study_command(CLI::App& app, const std::string& command, const std::
   auto* cmd = app.add_subcommand(command, description);
   auto f = std::make_shared<StudyFlags>();
   f->options.study = study;
-  cmd->add_option("case", f->options.case_file, "Case file (TOML); without one the flags and --set give the keys");
+  // The case file is the positional argument, unless a key of the study is (`surface analyze FILE`).
+  const auto schema = studies::study_registry().create(study)->schema();
+  if (std::none_of(schema.begin(), schema.end(), [](const auto& k) { return !k.flag.empty() && k.flag[0] != '-'; }))
+    cmd->add_option("case", f->options.case_file, "Case file (TOML); without one the flags and --set give the keys");
   add_schema_flags(cmd, *f, study);
   add_runner_flags(cmd, *f, set_example);
   return [f]() {

@@ -13,10 +13,18 @@
 namespace wearscale::app {
 
 struct StudyFlags {
+  /// What an alias flag gave its key.
+  struct Given {
+    std::string flag;   ///< "--hurst"
+    std::string value;  ///< the text given; empty: not given
+    bool range = false; ///< "MIN:MAX", written to the key as [MIN, MAX]
+    bool is_switch = false;
+    std::string list_unit;  ///< "A,B": plain numbers in this unit, written as ["A unit", "B unit"]
+  };
   studies::RunOptions options;
   std::string out, resume;
   bool json = false;
-  std::map<std::string, std::string> keys;  ///< schema key → value given by its alias flag
+  std::map<std::string, Given> keys;  ///< schema key → its alias flag and value
 };
 
 /// Adds --set, --out, --resume and --json to `cmd`; `example` is a key for --set's help.
@@ -26,8 +34,10 @@ void add_schema_flags(CLI::App* cmd, StudyFlags& flags, const std::string& study
 /// Runs the study through the runner and prints its summary (JSON with --json).
 int run_study(StudyFlags& flags);
 
-/// A command that runs `study`: an optional case file, the schema's alias
-/// flags, and the runner's flags.
+/// A command that runs `study`: an optional case file (the positional
+/// argument, unless a key's alias is: a flag without dashes), the schema's
+/// alias flags, and the runner's flags.
+/// (The subcommand is app.get_subcommands({}).back(), for extra checks such as excludes.)
 Command add_study_command(CLI::App& app, const std::string& command, const std::string& study,
                           const std::string& description, const std::string& set_example);
 

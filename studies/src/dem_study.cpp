@@ -546,18 +546,33 @@ class DemStudy : public Study {
     if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), title))
       context.add_file(*png);
   }
+  // [dem]: the material (dem_material) and the contact law (read_contact_law).
   static Schema material_keys(const std::string& flag_doc) {
-    return {{"dem.material", "string", "", "", "", flag_doc, "--material"},
-            {"dem.poisson", "number", "≤ 0.25", "1", "", "target Poisson's ratio", ""},
-            {"dem.restitution", "number", "(0, 1]", "1", "", "coefficient of restitution", ""},
-            {"dem.scaling_exponent", "number", "", "1", "", "size-scaling exponent s of (6.57)", ""}};
+    return {{"dem.material", "string", "", "", "table-6.4", flag_doc, "--material"},
+            {"dem.poisson", "number", "(-1, 0.25]", "1", "the material's", "target Poisson's ratio", ""},
+            {"dem.restitution", "number", "(0, 1]", "1", "the material's", "coefficient of restitution", ""},
+            {"dem.scaling_exponent", "number", "[0, 1]", "1", "0.5", "size-scaling exponent s of (6.57)", ""},
+            {"dem.law", "choice", fmt::format("{}", fmt::join(contact_law_names(), " | ")), "", "cohesive",
+             "contact law between the particles (contact_law.hpp)", ""},
+            {"dem.friction", "number", "≥ 0", "1", "0.5", "Coulomb μ of the hooke law", ""}};
   }
+  // The sliding cell of the wear studies (read_sliding_cell, and the dumps).
   static Schema sliding_keys(const std::string& table, const std::string& slide_default) {
     return {{table + ".d0", "number", "> 0", "m", "", "mode of the particle diameters", "--d0"},
-            {table + ".velocity", "number", "> 0", "m/s", "", "sliding velocity of the top wall", "--velocity"},
-            {table + ".pressure", "number", "≥ 0", "Pa", "", "normal pressure on the top wall", "--pressure"},
+            {table + ".velocity", "number", "(0, 1000)", "m/s", "10", "sliding velocity of the top wall", "--velocity"},
+            {table + ".pressure", "number", "[0, σ_m,N]", "Pa", "5e8", "normal pressure on the top wall", "--pressure"},
             {table + ".sliding_distance", "number", "> 0", "m", slide_default, "sliding distance", "--slide"},
-            {table + ".seed", "integer", "≥ 0", "1", "", "seed of the amorphous sample", "--seed"}};
+            {table + ".seed", "integer", "[0, 4294967295]", "1", "1", "seed of the amorphous sample", "--seed"},
+            {table + ".largest", "number", "≥ d0", "m", "1.25 d0", "largest particle diameter", ""},
+            {table + ".time_step", "number", "(0, 1)", "1", "0.1", "time step in Δt_c", ""},
+            {table + ".settle_distance", "number", "≥ 0", "m", "d0", "loading at rest before sliding, for the time the wall takes to slide this far", ""},
+            {table + ".wall_damping", "number", "[0, 1]", "1", "0", "damping of the pressed wall's normal motion, in the critical damping", ""},
+            {table + ".wall_thickness", "number", "[1, 10]", "1", "1.5", "wall thickness in d0", ""},
+            {table + ".record_every", "integer", "≥ 1", "1", "200", "steps per history sample", ""},
+            {table + ".relax_tolerance", "number", "(0, 0.01)", "1", "1e-4", "stress tolerance of the relaxation, in E", ""},
+            {table + ".max_relax_steps", "integer", "≥ 0", "1", "20000", "relaxation step limit", ""},
+            {table + ".depth", "number", "≥ largest", "m", "3.5 d0", "cell depth W (periodic)", ""},
+            {table + ".dump_every", "integer", "≥ 0", "1", "2000", "steps between OVITO dump frames (0: none)", ""}};
   }
 };
 
@@ -579,7 +594,14 @@ class PatchTestStudy final : public DemStudy {
               {"dem.patch_test.width", "number", "[1.25, 100]", "1", "3", "sample width in d0", ""},
               {"dem.patch_test.seed", "integer", "≥ 0", "1", "", "seed of the amorphous sample", "--seed"},
               {"dem.patch_test.strengths", "boolean", "", "", "true", "also pull and shear the walls", "--no-strengths",
-               "false"}});
+               "false"},
+              {"dem.patch_test.load_along_c_axis", "boolean", "", "", "false",
+               "HCP: the c axis (stacking direction) along the load", ""},
+              {"dem.patch_test.load", "number", "(0, σ_m,N/E)", "1", "0.01", "compressive stress of the elastic test, in E", ""},
+              {"dem.patch_test.time_step", "number", "(0, 1)", "1", "0.1", "time step in Δt_c", ""},
+              {"dem.patch_test.strain_rate", "number", "(0, 0.01)", "1", "1e-5", "strength tests: ε̇ Δt", ""},
+              {"dem.patch_test.max_elastic_steps", "integer", "≥ 1000", "1", "40000",
+               "step limit of the elastic compression", ""}});
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
@@ -603,8 +625,18 @@ class JunctionStudy final : public DemStudy {
   Schema schema() const override {
     Schema s = material_keys("Si, SiO2 or a [materials.define] name");
     s.push_back({"dem.junction.diameter", "number", "> 0", "m", "", "junction diameter D, e.g. 20e-9 or \"20 nm\"", "--D"});
-    const Schema sliding = sliding_keys("dem.junction", "1.5 D");
-    s.insert(s.end(), sliding.begin(), sliding.end());
+    // The junction reads its own keys (not the sliding cell's): these.
+    const std::string t = "dem.junction.";
+    s.insert(s.end(),
+             {{t + "d0", "number", "> 0", "m", "", "mode of the particle diameters", "--d0"},
+              {t + "velocity", "number", "> 0", "m/s", "10", "sliding velocity of the top wall", "--velocity"},
+              {t + "pressure", "number", "≥ 0", "Pa", "1e8", "normal pressure on the top wall", "--pressure"},
+              {t + "sliding_distance", "number", "> 0", "m", "1.5 D", "sliding distance", "--slide"},
+              {t + "seed", "integer", "[0, 4294967295]", "1", "1", "seed of the amorphous sample", "--seed"},
+              {t + "largest", "number", "≥ d0", "m", "1.25 d0", "largest particle diameter", ""},
+              {t + "box", "list", "three lengths > 0", "m", "from D", "cell size [x, y, z]", ""},
+              {t + "time_step", "number", "(0, 1)", "1", "0.1", "time step in Δt_c", ""},
+              {t + "dump_every", "integer", "≥ 0", "1", "2000", "steps between OVITO dump frames (0: none)", ""}});
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
@@ -626,8 +658,12 @@ class RoughShearStudy final : public DemStudy {
   Schema schema() const override {
     Schema s = material_keys("Si, SiO2 or a [materials.define] name");
     s.push_back({"dem.rough_shear.length", "number", "> 0", "m", "", "cell length L (thesis: 25, 50, 100 d0)", "--length"});
-    s.push_back({"dem.rough_shear.roughness", "number", "> 0", "1", "", "initial Sa / L (thesis: 0.01, 0.02, 0.04)",
+    s.push_back({"dem.rough_shear.roughness", "number", "[0, 0.1]", "1", "0.02", "initial Sa / L (thesis: 0.01, 0.02, 0.04)",
                  "--roughness"});
+    s.push_back({"dem.rough_shear.height", "number", "≥ 2 (wall_thickness + 2) d0", "m", "14 d0", "cell height H", ""});
+    s.push_back({"dem.rough_shear.hurst", "number", "(0, 1]", "1", "0.8", "Hurst exponent of the initial surfaces", ""});
+    s.push_back({"dem.rough_shear.shortest_wavelength", "number", "≥ 2", "1", "4",
+                 "shortest wavelength of the initial surfaces in d0", ""});
     const Schema sliding = sliding_keys("dem.rough_shear", "L");
     s.insert(s.end(), sliding.begin(), sliding.end());
     return s;
@@ -650,9 +686,15 @@ class TrappedParticlesStudy final : public DemStudy {
   }
   Schema schema() const override {
     Schema s = material_keys("Si, SiO2 or a [materials.define] name");
-    s.push_back({"dem.trapped_particles.count", "integer", "≥ 1", "1", "", "number of loose particles (thesis: 2 to 4)", "--n"});
+    s.push_back({"dem.trapped_particles.count", "integer", "1 … 16", "1", "3", "number of loose particles (thesis: 2 to 4)", "--n"});
     s.push_back({"dem.trapped_particles.diameter", "number", "> 0", "m", "", "diameter of the loose particles (= the gap)", "--D"});
     s.push_back({"dem.trapped_particles.length", "number", "> 0", "m", "3 n D", "cell length L", "--length"});
+    s.push_back({"dem.trapped_particles.height", "number", "≥ D + 2 (wall_thickness + 2) d0", "m",
+                 "D + 2 (wall_thickness + 3) d0", "cell height H", ""});
+    s.push_back({"dem.trapped_particles.clearance", "number", "[0, 1)", "1", "0.25",
+                 "clearance between the loose particles and the surfaces, in d0", ""});
+    s.push_back({"dem.trapped_particles.fit_from", "number", "[0, 1)", "1", "0",
+                 "the rigid-body fit of the loose particles runs from this fraction of the slide", ""});
     const Schema sliding = sliding_keys("dem.trapped_particles", "L");
     s.insert(s.end(), sliding.begin(), sliding.end());
     return s;

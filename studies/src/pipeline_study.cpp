@@ -66,7 +66,7 @@ class PipelineStudy final : public Study {
   }
   std::string default_case_name() const override { return ""; }  // a case names itself
 
-  std::vector<std::string> prepare(const Config& inputs) override {
+  std::vector<std::string> prepare(Config& inputs) override {
     case_name_ = inputs.string("case.name");
     pipeline_ = build_pipeline(inputs);
     inputs.reject_unknown_keys();

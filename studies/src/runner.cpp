@@ -60,13 +60,14 @@ nlohmann::json RunSummary::to_json() const {
 
 namespace {
 
-// The case (parsed afresh by `parse`) with its --set overrides, and `extra`
-// (a sweep value) from `origin`.
-// The case with the overrides, then the `extra` ones (value, where it comes from).
+// The case (parsed afresh by `parse`) with its alias flags, its --set
+// overrides, then the `extra` ones (a sweep value, where it comes from).
+// A message about a key names what set it last: "--hurst 1.5", "--set KEY=VALUE".
 Config load(const CaseLoader& parse, const RunOptions& options,
             const std::vector<std::pair<std::string, std::string>>& extra = {}) {
   Config cfg = parse();
-  for (const auto& o : options.overrides) cfg.override_value(o);
+  for (const auto& [assignment, flag] : options.flags) cfg.override_value(assignment, flag);
+  for (const auto& o : options.overrides) cfg.override_value(o, is_utf8(o) ? "--set " + o : std::string("--set"));
   for (const auto& [value, origin] : extra) cfg.override_value(value, origin);
   return cfg;
 }
@@ -119,6 +120,15 @@ nlohmann::json provenance_of(const RunSummary& summary, const RunOptions& option
   return {{"wearscale_version", WEARSCALE_VERSION}, {"study", summary.study}, {"case_file", options.case_file.string()}};
 }
 
+// An output folder given as an existing file is bad input (exit 2), found before anything is written.
+void require_folder_or_nothing(const std::filesystem::path& dir, const char* option) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw InputError(fmt::format("{} = '{}' cannot be used as an output folder (not a folder); allowed: a folder that "
+                                 "can be created and written",
+                                 option, dir.string()));
+}
+
 PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
   PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false};
   Config& cfg = run.cfg;
@@ -130,6 +140,7 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   const std::string default_dir = run.study->default_output_dir();
   const std::string case_dir = cfg.string_or("output.dir", default_dir.empty() ? "out/" + run.summary.case_name : default_dir);
   run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
+  require_folder_or_nothing(run.summary.output_dir, out ? "--out" : "output.dir");
   cfg.mark_used("sweep");  // read by run_case
   // [run]: how the run is carried out, not what it computes.
   run.policy = checkpoint_policy(cfg);

@@ -35,11 +35,16 @@ std::string help_line(const KeySpec& s) {
 }
 
 std::string markdown_table(const Schema& schema) {
+  // A '|' inside a cell ("hcp | amorphous") would end it.
+  const auto cell = [](std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.insert(at, "\\");
+    return text;
+  };
   std::string out = "| key | type | unit | allowed | default | flag | meaning |\n|---|---|---|---|---|---|---|\n";
   for (const auto& k : schema)
-    out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", k.key, k.type, k.unit, k.range,
-                       k.fallback.empty() ? "" : "`" + k.fallback + "`", k.flag.empty() ? "" : "`" + k.flag + "`",
-                       k.doc);
+    out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", k.key, k.type, k.unit, cell(k.range),
+                       k.fallback.empty() ? "" : "`" + cell(k.fallback) + "`", k.flag.empty() ? "" : "`" + k.flag + "`",
+                       cell(k.doc));
   return out;
 }
 

@@ -43,7 +43,8 @@ const std::string contact_args =
     "contact -j 1 --set contact.grid=16 --set contact.size=1e-3 --set contact.sphere.radius=1e-2 --e-star 1e9 "
     "--pressure 1e6 --out out";
 const std::string generate_args =
-    "surface generate -j 1 --n 32 --size 1e-3 --hurst 0.8 --kl 1 --ks 4 --seed 1 --hprime-rms 0.1 --out out/s.h5";
+    "surface generate -j 1 --n 32 --size 1e-3 --hurst 0.8 --kl 1 --ks 4 --seed 1 --hprime-rms 0.1 "
+    "--set run.fft_planning=estimate --out out --file s.h5";
 
 // The datasets that say an HDF5 output is complete: the same values as the undisturbed run's file.
 // (HDF5 files are not byte-identical between runs: object time stamps. A generated surface agrees
@@ -53,6 +54,7 @@ const std::map<std::string, std::vector<const char*>> h5_datasets = {
     {"contact.h5", {"/surface/height", "/fields/pressure", "/fields/gap"}},
     // Every study's run.h5 holds its headline results; a contact's (the pipeline's series above aside):
     {"contact/run.h5", {"/results/mean_pressure", "/results/contact_fraction"}},
+    {"surface/run.h5", {"/results/Sa", "/results/h_rms", "/results/h_prime_rms"}},
     {"s.h5", {"/surface/height"}}};
 
 std::string shim_env(const fs::path& dir, const std::string& op, long at) {
@@ -82,7 +84,9 @@ void expect_complete_outputs(const fs::path& got, const fs::path& reference, con
       continue;
     }
     const bool contact_run = f == "run.h5" && fs::exists(reference / "contact.h5");
-    if (const auto d = h5_datasets.find(contact_run ? "contact/run.h5" : f); d != h5_datasets.end()) {
+    const bool surface_run = f == "run.h5" && fs::exists(reference / "s.h5");
+    if (const auto d = h5_datasets.find(contact_run ? "contact/run.h5" : surface_run ? "surface/run.h5" : f);
+        d != h5_datasets.end()) {
       wearscale::H5Reader a(reference / f), b(got / f);  // complete: it opens, and holds the same values
       EXPECT_EQ(fs::file_size(reference / f), fs::file_size(got / f)) << where << ": " << f;
       for (const char* s : d->second) {

@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(
                 {}, 2, {"key 'contact.grid' = 16384: a contact study of 16384 × 16384 points needs 40 GiB"},
                 "WEARSCALE_MEMORY_LIMIT=16GiB"},
         Hostile{"hprime_rms_1e308", generate + "--n 16 --hprime-rms 1e308 --out OUT/s.h5", {}, 2,
-                {"--hprime-rms = 1e+308; allowed: > 0 and ≤ 100"}},
+                {"--hprime-rms 1e308: key 'surface.generate.hprime_rms'", "allowed: (0, 100]"}},
         Hostile{"rough_shear_length_20",
                 "dem rough-shear --material SiO2 --d0 3e-9 --length 20 --out OUT", {}, 2,
                 {"a DEM sample of about", "particles (box 20 ×", "lengths are in metres"}},
@@ -198,7 +198,7 @@ INSTANTIATE_TEST_SUITE_P(
         Hostile{"wearmap_into_proc_self", "wearmap analytic2d --n 4 --out /proc/self", {}, 2,
                 {"/proc/self: cannot write into it"}},
         Hostile{"generate_into_proc_self", generate + "--n 16 --hprime-rms 1 --out /proc/self/s.h5", {}, 2,
-                {"/proc/self/s.h5: cannot write into it"}},
+                {"output folder /proc/self/s.h5: cannot create it"}},
         Hostile{"dem_into_proc_self", "dem patch-test --nu 0.1 --length 8 --out /proc/self", {}, 2,
                 {"/proc/self: cannot write into it"}}),
     [](const auto& p) {
@@ -214,15 +214,15 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(HostileInput, AHurstExponentOutsideZeroToOneIsNeverAResult) {
   const auto dir = work / "hurst";
   auto r = run_cli("surface generate --n 128 --size 1e-3 --hurst 0.8 --kl 2 --kr 4 --ks 32 --hprime-rms 0.1 --seed 1 "
-                   "--out s.h5",
+                   "--out gen --file s.h5",
                    dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  r = run_cli("surface analyze s.h5 --no-window --json", dir);  // with its k attributes: the band is known
+  r = run_cli("surface analyze gen/s.h5 --no-window --json", dir);  // with its k attributes: the band is known
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(nlohmann::json::parse(r.out)["hurst"].get<double>(), 0.8, 0.02);
   {
     // The heights alone, as h5py would copy them.
-    const auto h = wearscale::H5Reader(dir / "s.h5").read_series("/surface/height");
+    const auto h = wearscale::H5Reader(dir / "gen" / "s.h5").read_series("/surface/height");
     h5fixture::File out(dir / "copy.h5");
     out.dataset("/surface/height", {128, 128}, h);
     out.number_attribute("/surface/height", "lx", {1e-3});

@@ -103,7 +103,7 @@ double stored(const fs::path& h5, const std::string& dataset, std::size_t i, std
 
 // A 32 × 16 rough surface over 100 µm × 50 µm (nx ≠ ny catches swapped axes).
 const std::string surface = "surface generate --nx 32 --ny 16 --size 1e-4,5e-5 --hurst 0.8 --kl 1 --ks 8 --h-rms 1e-6 "
-                            "--seed 7 --out surface/rough.h5";
+                            "--seed 7 --out surface --file rough.h5";
 constexpr double dx = 1e-4 / 32, dy = 5e-5 / 16;
 
 }  // namespace

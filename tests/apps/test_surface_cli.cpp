@@ -42,13 +42,13 @@ TEST(SurfaceCli, EverySubcommandHasHelp) {
 
 TEST(SurfaceCli, GenerateThenAnalyzeRecoversTheHurstExponent) {
   for (const double hurst : {0.3, 0.8}) {
-    const std::string name = fmt::format("rough_{}.h5", hurst);
-    const auto gen = run_cli(generate_args(hurst, name), work);
+    const std::string folder = fmt::format("rough_{}", hurst), name = folder + "/surface.h5";
+    const auto gen = run_cli(generate_args(hurst, folder), work);
     ASSERT_EQ(gen.status, 0) << gen.err;
     const auto g = nlohmann::json::parse(gen.out);
     EXPECT_NEAR(g["h_prime_rms"].get<double>(), 0.2, 1e-12);  // rescaled exactly
     EXPECT_TRUE(fs::exists(work / name));
-    EXPECT_TRUE(fs::exists(work / fmt::format("rough_{}.xdmf", hurst)));
+    EXPECT_TRUE(fs::exists(work / folder / "surface.xdmf"));
 
     // Fit band q = 2π·4/L … 2π·64/L: the whole generated band (bins wholly inside [k_l, k_s]).
     const double q_l = 2.0 * std::numbers::pi * 4.0 / side, q_s = 2.0 * std::numbers::pi * 64.0 / side;
@@ -61,7 +61,7 @@ TEST(SurfaceCli, GenerateThenAnalyzeRecoversTheHurstExponent) {
     EXPECT_EQ(a["fit"]["points"].get<int>(), 60);
     EXPECT_NEAR(a["h_prime_rms"].get<double>(), 0.2, 1e-12);
     EXPECT_NEAR(a["Sa"].get<double>(), g["Sa"].get<double>(), 1e-12 * g["Sa"].get<double>());
-    EXPECT_THAT(slurp(work / "psd.csv"), HasSubstr("q_rad_per_m,C_m4,count\n"));
+    EXPECT_THAT(slurp(work / "out" / "surface-analyze" / "psd.csv"), HasSubstr("q_rad_per_m,C_m4,count\n"));
 
     // Without a band the one recorded by `generate` (k_r … k_s) is used.
     const auto by_default = nlohmann::json::parse(run_cli(fmt::format("surface analyze {} --no-window --json", name), work).out);
@@ -107,7 +107,7 @@ TEST(SurfaceCli, BadInputIsExitStatus2NamingTheParameter) {
   EXPECT_THAT(r.err, HasSubstr("--hprime-rms, --h-rms, --sa"));
   r = bad("surface generate --n 64 --size 3kg --hurst 0.5 --kl 2 --ks 16 --sa 1e-6 --out x.h5");
   EXPECT_EQ(r.status, 2);
-  EXPECT_THAT(r.err, HasSubstr("--size = '3kg'"));
+  EXPECT_THAT(r.err, HasSubstr("--size 3kg: key 'surface.generate.size' = \"3kg\": not a length"));
   EXPECT_FALSE(fs::exists(work / "x.h5"));
 
   r = bad("surface analyze missing.h5");
@@ -171,8 +171,8 @@ TEST(SurfaceCli, AnalyzeReadsAnInstrumentFileWithItsSizeAndAsksWhatToDoWithMissi
   EXPECT_DOUBLE_EQ(j["grid"]["ly"].get<double>(), 32 * 2.5e-7);
   const auto bad = run_cli("surface analyze '" + file.string() + "' --missing maybe", work);
   EXPECT_EQ(bad.status, 2);
-  EXPECT_THAT(bad.err, HasSubstr("--missing = 'maybe'"));
-  EXPECT_THAT(bad.err, HasSubstr("refuse | fill"));
+  EXPECT_THAT(bad.err, HasSubstr("--missing maybe: key 'surface.analyze.missing'"));
+  EXPECT_THAT(bad.err, HasSubstr("\"refuse\", \"fill\""));
 }
 
 TEST(SurfaceCli, AnUnsupportedFormatIsNamedWithTheFormatsThatAreRead) {

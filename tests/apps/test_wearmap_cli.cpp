@@ -173,7 +173,7 @@ TEST(WearmapCli, CaseFileGivesTheSameMapAsTheFlags) {
   EXPECT_EQ(p["n"], 17);
   EXPECT_EQ(p["d_over_l"], nlohmann::json::parse("[0.2, 0.9]"));
   EXPECT_EQ(jf["parameters"]["wearmap"]["analytic3d"], p);
-  EXPECT_EQ(nlohmann::json::parse(slurp(work / "by-case" / "wearmap_analytic3d_summary.json"))["parameters"],
+  EXPECT_EQ(nlohmann::json::parse(slurp(work / "by-case" / "summary.json"))["parameters"],
             jc["parameters"]);
   const wearscale::H5Reader h5(work / "by-case" / "wearmap_analytic3d.h5");
   const auto toml = h5.string_attribute("/", "case_toml");

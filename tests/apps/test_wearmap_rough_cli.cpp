@@ -31,7 +31,7 @@ TEST(WearmapRoughCli, SmallMapWritesFilesAndShowsTheRegimes) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* f : {"wearmap_rough.h5", "wearmap_rough.xdmf", "wearmap_rough.csv", "wearmap_rough_particles.csv",
-                        "wearmap_rough_curves.csv", "wearmap_rough_peaks.csv", "wearmap_rough_summary.json"})
+                        "wearmap_rough_curves.csv", "wearmap_rough_peaks.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(work / "small" / f)) << f;
   EXPECT_EQ(j["results"]["pixels"]["value"].get<double>(), 15.0);
   // The naive baseline (one full solve per candidate) finds the same particles as the fast evaluator.

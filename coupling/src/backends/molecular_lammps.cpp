@@ -9,7 +9,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/materials/strength_law.hpp"
 #include "wearscale/md/shear_study.hpp"
-#include "wearscale/md/shear_test_config.hpp"
+#include "wearscale/coupling/shear_test_keys.hpp"
 
 namespace wearscale::coupling {
 
@@ -23,7 +23,7 @@ class MolecularLammps final : public Scale {
       if (m != "Si" && m != "SiO2")
         throw setup.section.error("backend", "the LAMMPS shear test knows Si and SiO2 only (material '" + m + "')",
                                   "\"table\" or \"ideal\" for other materials");
-      specs_.emplace(m, md::read_shear_test_spec(setup.section, m));
+      specs_.emplace(m, read_shear_test_spec(setup.section, m));
     }
     outside_ = setup.section.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
                    ? materials::OutsideTable::Clamp

@@ -32,7 +32,10 @@ struct RunOptions {
   std::optional<std::string> case_text;
   std::string study;                              ///< the study to run; empty: the case says (study_of)
   std::string command;                            ///< the command line for messages; empty: `wearscale run ...`
-  std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set
+  /// "KEY=VALUE" from a command's alias flags, each with the flag as typed ("--hurst 1.5"), which a
+  /// message about its key names; applied before `overrides`.
+  std::vector<std::pair<std::string, std::string>> flags;
+  std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set (messages name "--set KEY=VALUE")
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
   std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
 };

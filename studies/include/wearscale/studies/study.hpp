@@ -28,13 +28,17 @@ using coupling::RunContext;
 /// One key of a study: what `--help`, "did you mean" and the docs' key tables show.
 struct KeySpec {
   std::string key;       ///< full case key, "contact.mean_pressure"
-  std::string type;      ///< "number", "integer", "string", "choice", "path", "table", "boolean", "list"
+  std::string type;      ///< "number", "integer", "string", "choice", "path", "table", "boolean", "list",
+                         ///< "range" ([MIN, MAX]; its alias flag takes MIN:MAX)
   std::string range;     ///< allowed values in words: "≥ 0", "(0, 0.5]", "none | coulomb | tresca"
   std::string unit;      ///< SI unit of a quantity ("Pa"), "1" for a number without one, "" otherwise
   std::string fallback;  ///< default value as text, "" when the key is required or optional
   std::string doc;       ///< one line
   std::string flag;      ///< the command-line alias of the key's command, "--pressure", or ""
   std::string switch_value = {};  ///< a flag without a value sets the key to this ("--no-strengths": "false")
+  /// A "list" key whose alias flag takes plain numbers in this unit separated by commas
+  /// ("--pressures 0,10" with "GPa": ["0 GPa", "10 GPa"]); "" for a flag that takes the key's value as it is.
+  std::string list_unit = {};
 };
 
 using Schema = std::vector<KeySpec>;
@@ -62,10 +66,12 @@ class Study {
   /// The output folder of a case that names none; empty: out/<case name>.
   virtual std::string default_output_dir() const { return {}; }
   /// Reads and checks every key the study uses before anything is written
-  /// (InputError on a bad one); a study that reads its keys at the start of
-  /// run() need not override it. Returns the parts it runs, in order (the
-  /// scales of a pipeline), for the summary.
-  virtual std::vector<std::string> prepare(const Config& /*inputs*/) { return {}; }
+  /// (InputError on a bad one), and may record the values it resolved
+  /// (defaults included) in `inputs`, so that summary.json's parameters and
+  /// run.h5's case hold every value the run used; a study that reads its keys
+  /// at the start of run() need not override it. Returns the parts it runs,
+  /// in order (the scales of a pipeline), for the summary.
+  virtual std::vector<std::string> prepare(Config& /*inputs*/) { return {}; }
   /// Computes, writing its outputs into context.output_dir() and reporting its
   /// headline figures and files to `context`. Checks every key before any
   /// work (config.reject_unknown_keys()), when prepare() did not.

@@ -1,4 +1,4 @@
-#include "wearscale/md/shear_test_config.hpp"
+#include "wearscale/coupling/shear_test_keys.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -7,7 +7,9 @@
 
 #include "wearscale/md/result_cache.hpp"
 
-namespace wearscale::md {
+namespace wearscale::coupling {
+
+using namespace md;
 
 ShearTestSpec read_shear_test_spec(const Config& config) {
   const Config c = config.section("md");
@@ -78,4 +80,4 @@ ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material_
   return s;
 }
 
-}  // namespace wearscale::md
+}  // namespace wearscale::coupling

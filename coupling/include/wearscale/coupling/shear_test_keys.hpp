@@ -1,6 +1,7 @@
 #pragma once
 // The MD shear test as case keys: a [md] table (or --set md.KEY=VALUE),
-// SI numbers or unit strings, on top of a preset.
+// SI numbers or unit strings, on top of a preset, read into the plain
+// md::ShearTestSpec that the md library runs (md reads no case).
 //
 //   [md]
 //   material = "Si"                 # or "SiO2"
@@ -22,14 +23,14 @@
 #include "wearscale/core/config.hpp"
 #include "wearscale/md/shear_test.hpp"
 
-namespace wearscale::md {
+namespace wearscale::coupling {
 
 /// Reads every key of the `md` section of `config` (preset first, then each
 /// key that is present overrides it) and validates the result; InputError
 /// naming the key for any bad value.
-ShearTestSpec read_shear_test_spec(const Config& config);
+md::ShearTestSpec read_shear_test_spec(const Config& config);
 /// The same keys read from `section` (e.g. [scale.molecular]) for a material
 /// given apart ("Si" or "SiO2").
-ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material);
+md::ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material);
 
-}  // namespace wearscale::md
+}  // namespace wearscale::coupling

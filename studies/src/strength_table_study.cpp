@@ -1,0 +1,140 @@
+// The strength-table study ([md]): shear strengths σ_max(p), σ_dyn(p) of Si or
+// SiO2 from the MD shear test of §9.3.1 run with LAMMPS at each pressure
+// (md::run_shear_study; identical inputs are read from the result cache),
+// written as a strength table (materials/ format, .csv or .h5) into the
+// output folder, with each point's strengths as headline figures.
+//
+//   [case]
+//   study = "strength-table"        # `wearscale strength-table` names it itself
+//   [md]
+//   material = "Si"                 # or "SiO2"
+//   pressures = ["0 GPa", "10 GPa"] # at least two
+//   preset = "smoke"                # or "thesis"; every other [md] key overrides it
+//   [output]
+//   file = "si.csv"                 # the table's name in the output folder
+#include <fmt/format.h>
+
+#include "wearscale/core/errors.hpp"
+#include "wearscale/coupling/shear_test_keys.hpp"
+#include "wearscale/materials/strength_table.hpp"
+#include "wearscale/md/shear_study.hpp"
+#include "wearscale/studies/study.hpp"
+
+namespace wearscale::studies {
+
+namespace {
+
+class StrengthTableStudy final : public Study {
+ public:
+  std::string name() const override { return "strength-table"; }
+  std::string summary() const override {
+    return "shear strengths σ_max(p), σ_dyn(p) of Si or SiO2 from the MD shear test of §9.3.1 (LAMMPS), written as a "
+           "strength table";
+  }
+  std::string default_case_name() const override { return "strength-table"; }
+  Schema schema() const override;
+
+  std::vector<std::string> prepare(Config& cfg) override {
+    cfg.choice_or("md.backend", "lammps", {"lammps"});
+    spec_ = coupling::read_shear_test_spec(cfg);
+    if (spec_.pressures.size() < 2)
+      throw cfg.error("md.pressures", "a strength table needs at least two pressures", "two or more pressures");
+    file_ = cfg.string_or("output.file",
+                          fmt::format("lammps_{}_{}.csv", spec_.preset, md::to_string(spec_.material)));
+    const std::filesystem::path name(file_);
+    const auto ext = name.extension().string();
+    if (name.filename() != name || name.filename().string().front() == '.' || (ext != ".csv" && ext != ".h5"))
+      throw cfg.error("output.file", "not a table file name in the output folder",
+                      "a plain file name ending in .csv or .h5 (the folder is --out / output.dir)");
+    cfg.reject_unknown_keys();
+    return {};
+  }
+
+  void run(const Config& /*cfg*/, RunContext& context) override {
+    const md::ShearStudy study = md::run_shear_study(spec_);
+    const materials::StrengthTable table = md::strength_table(study);
+    const auto file = context.output_dir() / file_;
+    materials::write_strength_table(file, table);
+    context.add_file(file);
+    for (std::size_t i = 0; i < table.pressure.size(); ++i) {
+      const std::string at = fmt::format("at p = {:g} GPa", table.pressure[i] / 1e9);
+      context.report(fmt::format("sigma_max_{}", i), table.sigma_max[i], "Pa", "maximum shear strength σ_max " + at);
+      context.report(fmt::format("sigma_dyn_{}", i), table.sigma_dyn[i], "Pa", "dynamic shear strength σ_dyn " + at);
+    }
+    context.note("material", table.material);
+    context.note("backend", "lammps");
+    context.note("preset", spec_.preset);
+    context.note("file", file.string());
+    context.note("lammps_version", study.lammps_version);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& p : study.points)
+      rows.push_back({{"pressure_GPa", p.pressure / 1e9},
+                      {"sigma_max_GPa", p.strength.sigma_max / 1e9},
+                      {"sigma_dyn_GPa", p.strength.sigma_dyn / 1e9},
+                      {"strain_at_max", p.strength.strain_at_max},
+                      {"sigma_dyn_std_GPa", p.strength.sigma_dyn_std / 1e9},
+                      {"temperature_window_K", p.strength.temperature_window},
+                      {"cached", p.run.cached},
+                      {"wall_seconds", p.run.wall_seconds}});
+    context.note("rows", rows);
+    nlohmann::json provenance = nlohmann::json::object();
+    for (const auto& [k, v] : table.provenance) provenance[k] = v;
+    context.note("table_provenance", provenance);
+  }
+
+ private:
+  md::ShearTestSpec spec_;
+  std::string file_;
+};
+
+Schema StrengthTableStudy::schema() const {
+  const std::string preset = "from the preset";
+  return {
+      {"md.backend", "choice", "lammps", "", "lammps", "molecular backend", "--backend"},
+      {"md.material", "choice", "Si | SiO2", "", "", "material of the shear test", "--material"},
+      {"md.pressures", "list", "≥ 0, increasing, at least two", "Pa", "", "normal pressures of the table",
+       "--pressures", "", "GPa"},
+      {"md.preset", "choice", "smoke | thesis", "", "smoke",
+       "smoke (small boxes, 100 m/s: seconds to a minute per pressure) or thesis (10 nm boxes, 10 m/s: hours per "
+       "pressure); the keys below override it",
+       "--preset"},
+      {"md.lmp", "string", "", "", "lmp on PATH", "LAMMPS executable", "--lmp"},
+      {"md.ranks", "integer", "1 … 1024", "1", "1", "MPI ranks, through mpirun when > 1", "--ranks"},
+      {"output.file", "string", "a file name ending in .csv or .h5", "", "lammps_<preset>_<material>.csv",
+       "the table's name in the output folder", "--table"},
+      {"md.lateral_size", "number", "> 0", "m", preset, "box side x = y, rounded to whole lattice cells", ""},
+      {"md.height", "number", "> 0", "m", preset, "box height", ""},
+      {"md.lattice_constant", "number", "> 0", "m", preset, "lattice constant of the sample", ""},
+      {"md.wall_thickness", "number", "> 0", "m", preset, "thickness of the rigid walls", ""},
+      {"md.thermostat_thickness", "number", "> 0", "m", preset, "thickness of the thermostatted layers", ""},
+      {"md.shear_velocity", "number", "> 0", "m/s", preset, "imposed shear velocity", ""},
+      {"md.temperature", "number", "> 0", "K", preset, "thermostat temperature", ""},
+      {"md.langevin_damp", "number", "> 0", "s", preset, "Langevin damping time", ""},
+      {"md.timestep", "number", "(0, 1e-14]", "s", preset, "time step", ""},
+      {"md.compression_time", "number", "≥ 0", "s", preset, "time under load before shearing", ""},
+      {"md.strain_end", "number", "(0, 10]", "1", preset, "shear strain at the end of the run", ""},
+      {"md.window", "list", "[begin, end] within [0, 10]", "1", preset,
+       "strain range over which σ_dyn is the mean shear stress", ""},
+      {"md.sample_steps", "integer", "1 … 1e7", "1", preset, "steps between thermo samples", ""},
+      {"md.seed", "integer", "1 … 9e8", "1", preset, "random seed of the velocities", ""},
+      {"md.potential", "path", "", "", preset, "interatomic potential file (relative to the case file)", ""},
+      {"md.cutoff", "number", "≥ 0", "m", preset, "Vashishta cutoff (SiO2 only)", ""},
+      {"md.cache", "boolean", "true | false", "", "true", "read identical runs from the result cache", ""},
+      {"md.cache_dir", "string", "", "", "$WEARSCALE_CACHE, else ~/.cache/wearscale/lammps", "result cache folder",
+       ""},
+      {"md.quench.temperatures", "list", "> 0", "K", preset, "SiO2 melt-quench: temperature schedule", ""},
+      {"md.quench.hold_time", "number", "> 0", "s", preset, "SiO2 melt-quench: time held at each temperature", ""},
+      {"md.quench.cooling_rate", "number", "> 0", "K/s", preset, "SiO2 melt-quench: cooling rate", ""},
+      {"md.quench.final_cooling_rate", "number", "> 0", "K/s", preset, "SiO2 melt-quench: last cooling rate", ""},
+      {"md.quench.timestep", "number", "(0, 1e-14]", "s", preset, "SiO2 melt-quench: time step", ""},
+      {"md.quench.pressure", "number", "any", "Pa", preset, "SiO2 melt-quench: barostat pressure", ""},
+      {"md.quench.barostat_damp", "number", "> 0", "s", preset, "SiO2 melt-quench: barostat damping time", ""},
+      {"md.quench.bulk_modulus", "number", "> 0", "Pa", preset, "SiO2 melt-quench: bulk modulus of the barostat", ""},
+      {"md.quench.thermostat_damp", "number", "> 0", "s", preset, "SiO2 melt-quench: thermostat damping time", ""},
+  };
+}
+
+}  // namespace
+}  // namespace wearscale::studies
+
+WEARSCALE_STUDY(StrengthTableStudy)

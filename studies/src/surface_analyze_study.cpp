@@ -1,0 +1,188 @@
+// The topography-analysis study ([surface.analyze], §8.1.1): roughness (Sa,
+// h_RMS, h'_RMS), the radial PSD and the Hurst exponent fitted on it, of a
+// measured (X3P, Gwyddion, Digital Surf, SDF, Zygo) or generated (HDF5, text
+// grid) topography; optionally the radial PSD as a CSV table in the output
+// folder.
+//
+//   [surface.analyze]
+//   file = "scan.x3p"
+//   missing = "fill"     # what to do with missing points: "refuse" (default) | "fill"
+//   window = false       # periodic data (a generated surface): no levelling, no window
+//   q_min = 2.5e5        # the fit band [rad/m]; default: the k_r … k_s a generated surface records
+//   psd = "psd.csv"
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "surface_sides.hpp"
+#include "wearscale/bem/roughness.hpp"
+#include "wearscale/bem/spectral_modes.hpp"
+#include "wearscale/bem/topography.hpp"
+#include "wearscale/bem/topography_io.hpp"
+#include "wearscale/core/csv.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/studies/study.hpp"
+
+namespace wearscale::studies {
+
+namespace {
+
+class SurfaceAnalyze final : public Study {
+ public:
+  std::string name() const override { return "surface/analyze"; }
+  std::string summary() const override {
+    return "Roughness, radial PSD and Hurst exponent of a topography (measured: X3P, Gwyddion, Digital Surf, SDF, "
+           "Zygo; or HDF5, text grid)";
+  }
+  std::string default_case_name() const override { return "surface-analyze"; }
+  Schema schema() const override {
+    const std::string k = "surface.analyze.";
+    return {
+        {k + "file", "path", "", "", "",
+         "topography: " + bem::supported_topography_formats() +
+             "; text grids have rows along x, columns along y (see docs/topography.md)",
+         "file"},
+        {k + "missing", "choice", "refuse | fill", "", bem::MissingPointsChoice::fallback,
+         bem::MissingPointsChoice::doc, "--missing"},
+        {k + "dataset", "string", "", "", std::string(bem::default_surface_dataset), "HDF5 dataset holding the heights",
+         "--dataset"},
+        {k + "size", "number", "> 0", "m", "the file's",
+         "side Lx (\"877 um\" also works; Ly from square pixels), or Lx,Ly; needed for text files without "
+         "'# lx = ...'",
+         "--size"},
+        {k + "q_min", "number", "≥ 0", "rad/m", "2π k_r/L, else above the first 2 PSD bins",
+         "lower end of the fit band (default: the k_r a generated surface records)", "--qmin"},
+        {k + "q_max", "number", "≥ 0", "rad/m", "2π k_s/L, else the last bin",
+         "upper end of the fit band (default: the k_s a generated surface records)", "--qmax"},
+        {k + "window", "boolean", "", "", "true",
+         "level the data and apply a radial Hann window before the PSD (measured data); false for periodic "
+         "surfaces such as generated ones",
+         "--no-window", "false"},
+        {k + "psd", "string", "a file name ending in .csv", "", "",
+         "write the radial PSD as this CSV table in the output folder (columns q_rad_per_m, C_m4, count)",
+         "--psd-out"},
+    };
+  }
+
+  // Reads the topography and checks it has a roughness to analyse, before anything is written.
+  std::vector<std::string> prepare(Config& cfg) override {
+    const Config c = cfg.section("surface.analyze");
+    file_ = c.path("file");
+    bem::TopographyOptions read;
+    read.dataset = dataset_ = c.string_or("dataset", std::string(bem::default_surface_dataset));
+    read.size = read_sides(c, "size");
+    read.missing = bem::missing_points_from(
+        c.choice_or("missing", bem::MissingPointsChoice::fallback, {"refuse", "fill"}), c.full_key("missing"));
+    window_ = c.boolean_or("window", true);
+    c.mark_used("q_min");
+    c.mark_used("q_max");
+    if (c.has("q_min")) q_min_ = c.number("q_min", Range::non_negative());
+    if (c.has("q_max")) q_max_ = c.number("q_max", Range::non_negative());
+    psd_ = c.string_or("psd", "");
+    cfg.reject_unknown_keys();
+
+    measured_ = bem::read_measured_topography(file_, read);
+    missing_ = read.missing;
+    const Grid2D& g = measured_.heights.grid();
+    // Analysed on the memory of a few copies of the grid (window, PSD, spectrum).
+    require_memory(64.0 * static_cast<double>(g.size()), fmt::format("surface analyze: a {} × {} topography", g.nx, g.ny));
+    double largest = 0.0;
+    for (const double v : measured_.heights) largest = std::max(largest, std::abs(v));
+    h_ = measured_.heights;
+    if (window_) {
+      // Measured, non-periodic data (§8.1.1): level, slopes by finite differences, radial Hann window.
+      plane_ = bem::remove_plane(h_);
+      h_prime_ = bem::h_prime_rms_finite_difference(h_);
+    } else {
+      h_prime_ = bem::h_prime_rms(h_);  // periodic data: as it is, slopes spectrally
+    }
+    // A flat topography (constant, or a plane) leaves rounding noise, whose PSD fits any exponent.
+    if (!(bem::h_rms(h_) > 1e-10 * largest))
+      throw InputError(fmt::format("{}: the topography is flat: h_RMS = {:g} m {}, rounding noise of heights up to {:g} "
+                                   "m; allowed: a rough surface",
+                                   file_.string(), bem::h_rms(h_), window_ ? "once levelled" : "about its mean", largest));
+    if (!psd_.empty()) {
+      const std::filesystem::path name(psd_);
+      if (name.filename() != name || psd_.front() == '.' || name.extension() != ".csv")
+        throw c.error("psd", "not a file name in the output folder", "a plain file name ending in .csv");
+    }
+    return {};
+  }
+
+  void run(const Config& /*cfg*/, RunContext& context) override {
+    const Grid2D& g = h_.grid();
+    const RealField psd = window_ ? bem::psd_2d(bem::windowed(h_, bem::radial_hann_window(g))) : bem::psd_2d(h_);
+    const double sa = bem::sa(h_), h_rms = bem::h_rms(h_);
+    const bem::RadialPsd radial = bem::radial_psd(psd);
+    if (radial.q.size() < 3)
+      throw InputError(fmt::format("{}: a {} × {} topography gives {} radial PSD bin(s); at least 3 are needed for a "
+                                   "Hurst fit",
+                                   file_.string(), g.nx, g.ny, radial.q.size()));
+    // Default band: the self-affine band k_r … k_s of a surface that records it (written by `surface
+    // generate`), else everything above the first 2 bins.
+    const auto k_r = bem::read_surface_attribute(file_, dataset_, "k_r");
+    const auto k_s = bem::read_surface_attribute(file_, dataset_, "k_s");
+    const bool recorded = k_r && k_s;
+    const double unit = bem::wavenumber_unit(g);
+    const double q_min = q_min_ ? *q_min_ : recorded ? *k_r * unit : radial.q[2];
+    const double q_max = q_max_ ? *q_max_ : recorded ? *k_s * unit : radial.q.back();
+    const bem::HurstFit fit = bem::fit_hurst(radial, q_min, q_max);
+    // A self-affine surface has 0 < H ≤ 1: anything else says the band is not self-affine.
+    if (!(fit.hurst > 0.0 && fit.hurst <= 1.0 + 3.0 * fit.hurst_error) || !std::isfinite(fit.hurst_error))
+      throw NumericalError(
+          "surface analyze", 0, "Hurst exponent",
+          fmt::format("the PSD over q = {:.4g} … {:.4g} rad/m{} fits H = {:.3f} ± {:.3f}, outside (0, 1]: that band is "
+                      "not self-affine; give the self-affine band with --qmin and --qmax (q_min, q_max)",
+                      fit.q_min, fit.q_max, recorded ? "" : " (the default band: the file records no k_r, k_s)",
+                      fit.hurst, fit.hurst_error));
+    if (!psd_.empty()) {
+      std::vector<double> count(radial.count.begin(), radial.count.end());
+      const auto csv = context.output_dir() / psd_;
+      write_csv(csv, {"q", "C", "count"}, {radial.q, radial.c, count}, {"rad/m", "m^4", "1"},
+                {fmt::format("radial PSD of {} ({}), C = LxLy/(nx²ny²)|ĥ|² (thesis 1.9)", file_.string(), g.to_string()),
+                 window_ ? "plane removed, radial Hann window, normalised by <w²>" : "no window (periodic data)",
+                 "q_rad_per_m: mean |q| of the bin; C_m4: mean PSD; count: modes in the bin"});
+      context.add_file(csv);
+      context.note("psd_csv", csv.string());
+    } else {
+      context.note("psd_csv", nullptr);
+    }
+    context.report("Sa", sa, "m", "arithmetic mean deviation Sa (1.4)");
+    context.report("h_rms", h_rms, "m", "RMS height h_RMS (1.5)");
+    context.report("h_prime_rms", h_prime_, "1", window_ ? "RMS slope h'_RMS, finite differences" : "RMS slope h'_RMS (1.6), spectral");
+    context.report("hurst", fit.hurst, "1", "Hurst exponent H fitted on the radial PSD");
+    context.report("hurst_error", fit.hurst_error, "1", "standard error of H");
+    context.note("file", file_.string());
+    context.note("format", measured_.format);
+    context.note("missing_points", measured_.missing);
+    context.note("missing", bem::name(missing_));
+    context.note("grid", {{"nx", g.nx}, {"ny", g.ny}, {"lx", g.lx}, {"ly", g.ly}});
+    context.note("window", window_);
+    context.note("Sa", sa);
+    context.note("h_rms", h_rms);
+    context.note("h_prime_rms", h_prime_);
+    context.note("h_prime_rms_method", window_ ? "finite-difference" : "spectral");
+    context.note("hurst", fit.hurst);
+    context.note("hurst_error", fit.hurst_error);
+    context.note("fit", {{"q_min", fit.q_min}, {"q_max", fit.q_max}, {"points", fit.points}, {"slope", fit.slope},
+                         {"slope_error", fit.slope_error}});
+    if (window_) context.note("plane", {{"offset", plane_.offset}, {"slope_x", plane_.slope_x}, {"slope_y", plane_.slope_y}});
+  }
+
+ private:
+  std::filesystem::path file_;
+  std::string dataset_, psd_;
+  bool window_ = true;
+  std::optional<double> q_min_, q_max_;
+  bem::MeasuredTopography measured_;
+  bem::MissingPoints missing_ = bem::MissingPoints::Refuse;
+  RealField h_;
+  bem::PlaneFit plane_;
+  double h_prime_ = 0.0;
+};
+
+}  // namespace
+}  // namespace wearscale::studies
+
+WEARSCALE_STUDY(SurfaceAnalyze)

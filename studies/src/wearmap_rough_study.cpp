@@ -1,0 +1,439 @@
+// The numerical wear maps of rough contacts (thesis ch. 5, Fig. 5.6–5.7) over
+// [wearmap.rough]: number of particles and wear volume over (p̃_N, d*/L),
+// mean and standard deviation over S random surfaces, the invalid region
+// flagged, and each curve's maximum read off its smoothed version (§5.2).
+// Outputs: wearmap_rough.h5 (+ .xdmf), wearmap_rough.csv (per pixel),
+// _particles.csv (every particle), _curves.csv and _peaks.csv (Fig. 5.7), PNGs.
+// With naive_pixels > 0 it also times the naive baseline (one full solve per
+// candidate) against the fast model on a few pixels (summary field `baseline`).
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "wear_map_output.hpp"
+#include "wearscale/core/csv.hpp"
+#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/output_set.hpp"
+#include "wearscale/core/progress.hpp"
+#include "wearscale/core/xdmf.hpp"
+#include "wearscale/coupling/palette.hpp"
+#include "wearscale/coupling/plots.hpp"
+#include "wearscale/studies/study.hpp"
+#include "wearscale/wear/rough_wear_map.hpp"
+#include "wearscale/wear/wear_curves.hpp"
+
+namespace wearscale::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace oi = coupling::okabe_ito;
+
+std::vector<double> linear(std::pair<double, double> r, std::size_t k) {
+  std::vector<double> v(k);
+  for (std::size_t i = 0; i < k; ++i)
+    v[i] = k == 1 ? r.first : r.first + (r.second - r.first) * static_cast<double>(i) / static_cast<double>(k - 1);
+  return v;
+}
+
+std::vector<double> geometric(std::pair<double, double> r, std::size_t k) {
+  std::vector<double> v(k);
+  for (std::size_t i = 0; i < k; ++i)
+    v[i] = k == 1 ? r.first : r.first * std::pow(r.second / r.first, static_cast<double>(i) / static_cast<double>(k - 1));
+  return v;
+}
+
+// Viridis (perceptually uniform, readable in grey and by the colour-blind) for the maps; Okabe & Ito's
+// palette (palette.hpp) for the curves.
+const char* const kViridis = "set palette defined (0 '#440154', 1 '#482878', 2 '#3E4989', 3 '#31688E', 4 '#26828E', "
+                             "5 '#1F9E89', 6 '#35B779', 7 '#6DCD59', 8 '#B4DE2C', 9 '#FDE725')\n";
+const char* const kCurveColours[] = {oi::blue, oi::vermillion, oi::bluish_green, oi::reddish_purple,
+                                     oi::orange, oi::sky_blue, oi::black};
+
+// Fig. 5.6: one map (column `col` of the pixel CSV) over (p̃_N, d*/L), invalid pixels crossed.
+std::string map_script(const fs::path& csv, int col, const std::string& title, bool log_scale,
+                       const std::vector<double>& loads, const std::vector<double>& dstars) {
+  const std::size_t nl = loads.size(), nd = dstars.size();
+  const double ps = 60.0 / static_cast<double>(std::max(nl, nd));
+  const double dx = nl > 1 ? 0.5 * (loads.back() - loads.front()) / double(nl - 1) : 0.5 * loads.front();
+  const double fy = nd > 1 ? std::pow(dstars.back() / dstars.front(), 0.5 / double(nd - 1)) : 1.5;
+  // One header line, then a row per pixel (skip 1).
+  return fmt::format(
+      "set datafile separator ','\nset title '{}' noenhanced\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
+      "set ylabel 'd*/L (4.35), crossed: invalid' noenhanced\nset logscale y\nset xrange [{}:{}]\n"
+      "set yrange [{}:{}]\n{}{}set key off\n"
+      "plot '{}' skip 1 using 1:2:({}) with points pt 5 ps {:.3g} lc palette, \\\n"
+      "  '' skip 1 using 1:($9 > 0.5 ? NaN : $2) with points pt 2 ps {:.3g} lc rgb 'black'\n",
+      title, loads.front() - dx, loads.back() + dx, dstars.front() / fy, dstars.back() * fy,
+      log_scale ? "set logscale cb\nset format cb '10^{%L}'\n" : "", kViridis, csv.string(),
+      log_scale ? fmt::format("${} > 0 ? ${} : NaN", col, col) : fmt::format("${}", col), ps, 0.6 * ps);
+}
+
+// Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid
+// points cut; the number of particles also smoothed (dashed, §5.2; a count,
+// drawn from 0 up: the filter's undershoot below 0 is not drawn).
+std::string curves_script(const fs::path& csv, const std::vector<double>& dstars, bool volume) {
+  const std::size_t nd = dstars.size(), step = std::max<std::size_t>(1, nd / 5);
+  const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid, smoothed count
+  std::string plots;
+  for (std::size_t d = 0, c = 0; d < nd; d += step, ++c) {
+    const int base = static_cast<int>(6 * d);
+    const char* colour = kCurveColours[c % std::size(kCurveColours)];
+    plots += fmt::format("{}'{}' skip 1 using 1:(column({}) > 0.5 ? column({}) : NaN):(column({})) with yerrorlines "
+                         "lw 1.5 pt 7 ps 0.8 lc rgb '{}' title 'd*/L = {:.3g}'",
+                         plots.empty() ? "" : ", ", csv.string(), 6 + base, off + base, off + 1 + base, colour,
+                         dstars[d]);
+    if (!volume)
+      plots += fmt::format(", '' skip 1 using 1:(column({}) > 0.5 ? max(0, column({})) : NaN) with lines dt 2 lw 1.5 "
+                           "lc rgb '{}' notitle",
+                           6 + base, 7 + base, colour);
+  }
+  return fmt::format(
+      "set datafile separator ','\nmax(a, b) = a > b ? a : b\nset title '{}'\n"
+      "set xlabel 'normalized load p̃_N (5.1)' noenhanced\nset ylabel '{}'\n{}set grid\n"
+      "set offsets graph 0.03, graph 0.03, 0, 0\nset key top left noenhanced\nplot {}\n",
+      volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a; dashed: Savitzky-Golay, 3/11)",
+      volume ? "wear volume V / L^3" : "number of particles",
+      volume ? "set logscale y\nset format y '10^{%L}'\n" : "set yrange [0:*]\n", plots);
+}
+
+// The naive baseline on a few pixels (first seed, loads spread over the axis, middle d*), against the fast
+// model on the same pixels. The naive run stops after `max_solves` solves; its time per pixel is then
+// extrapolated as (time per solve) × (the solves it needs: every candidate the fast run evaluated or bounded,
+// i.e. examined and not blocked by a recorded particle, plus one update per particle).
+nlohmann::json naive_baseline(const wear::RoughWearMapSpec& spec, std::size_t naive_pixels, std::size_t max_solves) {
+  const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
+  wear::RoughContactSeries series(spec.surface, spec.seeds.front());
+  const double nu = spec.surface.poisson;
+  wear::ShearedJunctions j{1.0, 1.0 / (2.0 * (1.0 + nu)), nu, spec.tensile_strength, spec.spot};
+  const double dstar = spec.critical_diameters[nd / 2];
+  double setup_s = 0.0, fast_s = 0.0, naive_s = 0.0, naive_est = 0.0;
+  std::size_t naive_solves = 0, examined = 0, pixels = 0, truncated = 0;
+  bool same = true;
+  const std::size_t k = std::min(naive_pixels, nl);
+  for (std::size_t i = 0; i < k; ++i) {
+    const std::size_t l = k == 1 ? nl / 2 : i * (nl - 1) / (k - 1);
+    const auto cmap = series.at_load(spec.loads[l]);
+    const auto s0 = std::chrono::steady_clock::now();
+    const wear::DetachmentModel model(cmap, j);
+    const auto t1 = std::chrono::steady_clock::now();
+    wear::DetachmentOptions fast = spec.options, slow = spec.options;
+    fast.method = wear::EnergyReleaseMethod::Fast;
+    slow.method = wear::EnergyReleaseMethod::Naive;
+    slow.max_solves = max_solves;
+    const auto rf = model.detach(dstar, fast);
+    const auto t2 = std::chrono::steady_clock::now();
+    const auto rn = model.detach(dstar, slow);
+    const auto t3 = std::chrono::steady_clock::now();
+    setup_s += std::chrono::duration<double>(t1 - s0).count();
+    fast_s += std::chrono::duration<double>(t2 - t1).count();
+    const double ns = std::chrono::duration<double>(t3 - t2).count();
+    naive_s += ns;
+    naive_solves += rn.solves;
+    examined += rf.examined - rf.blocked;
+    if (rn.truncated) {
+      ++truncated;
+      naive_est += ns / static_cast<double>(std::max<std::size_t>(rn.solves, 1)) *
+                   static_cast<double>(rf.examined - rf.blocked + rf.particles.size());
+    } else {
+      naive_est += ns;
+      same = same && rf.particles.size() == rn.particles.size();
+    }
+    ++pixels;
+  }
+  return {{"pixels", pixels},
+          {"critical_diameter", dstar},
+          {"setup_seconds_per_pixel", setup_s / double(pixels)},
+          {"fast_seconds_per_pixel", fast_s / double(pixels)},
+          {"naive_seconds_per_pixel", naive_est / double(pixels)},
+          {"naive_measured_seconds", naive_s},
+          {"naive_truncated_pixels", truncated},
+          {"ratio", naive_est / fast_s},
+          {"naive_solves", naive_solves},
+          {"naive_solves_needed", examined},
+          {"same_particle_counts", same}};
+}
+
+class WearmapRough final : public Study {
+ public:
+  std::string name() const override { return "wearmap/rough"; }
+  std::string summary() const override {
+    return "Numerical wear maps of rough contacts (ch. 5, Fig. 5.6–5.7): number of particles and wear volume over "
+           "(p̃_N, d*/L), averaged over surfaces";
+  }
+  std::string default_case_name() const override { return "wearmap"; }
+  std::string default_output_dir() const override { return "out/wearmap"; }
+  Schema schema() const override;
+  std::vector<std::string> prepare(Config& cfg) override;
+  void run(const Config& cfg, RunContext& context) override;
+
+ private:
+  wear::RoughWearMapSpec spec_;  // the resolved [wearmap.rough]
+  std::size_t naive_pixels_ = 0, naive_max_solves_ = 0;
+};
+
+Schema WearmapRough::schema() const {
+  const std::string k = "wearmap.rough.";
+  return {
+      {k + "n", "integer", "16 … 4096", "1", "512", "grid points per side (§5.3: 512)", "--n"},
+      {k + "seeds", "integer", "1 … 1000", "1", "5", "random surfaces to average, seeds 1…S", "--seeds"},
+      {k + "hurst", "number", "(0, 1]", "1", "0.8", "Hurst exponent H", "--hurst"},
+      {k + "q_l", "number", "≥ 1", "1", "8", "q_l in units of 2π/L (= q_r)", "--ql"},
+      {k + "q_s", "number", "[q_l, n/2]", "1", "n/8", "q_s in units of 2π/L", "--qs"},
+      {k + "loads", "range", "[MIN, MAX] within (0, 1)", "1", "[0.01, 0.3]",
+       "normalized loads p̃_N (5.1), evenly spaced", "--loads"},
+      {k + "n_loads", "integer", "1 … 1000", "1", "20", "points along p̃_N", "--n-loads"},
+      {k + "dstar_over_l", "range", "[MIN, MAX], each > 0", "1", "[0.01, 0.2]",
+       "critical diameters d*/L (4.35), geometric", "--dstar-over-l"},
+      {k + "n_dstar", "integer", "1 … 1000", "1", "20", "points along d*/L", "--n-dstar"},
+      {k + "nu", "number", "(-1, 0.5]", "1", "0.3", "Poisson's ratio ν", "--nu"},
+      {k + "tensile_strength", "number", "> 0", "1", "1", "σ_m/σ_j of the crack criterion (4.25)",
+       "--tensile-strength"},
+      {k + "spot", "number", "[0, 1]", "1", "0.05",
+       "crack sites within this fraction of each micro-contact's peak edge stress (1: every edge past σ_m)", "--spot"},
+      {k + "invalid_diameter", "number", "(0, 1]", "1", "0.25",
+       "pixels whose mean largest particle is ≥ this × L are invalid", "--invalid-diameter"},
+      {k + "energy_balance", "choice", "cumulative | per_particle", "", "cumulative",
+       "cumulative balance, or each particle pays for itself", "--per-particle", "per_particle"},
+      {k + "method", "choice", "fast | naive", "", "fast",
+       "energy release: fast, or one full solve per candidate (the slow baseline)", "--naive", "naive"},
+      {k + "naive_pixels", "integer", "0 … 1000", "1", "0",
+       "also time the naive baseline against the fast model on K pixels of the first seed (middle d*)",
+       "--naive-pixels"},
+      {k + "naive_max_solves", "integer", "≥ 0", "1", "0",
+       "stop each naive pixel after this many solves and extrapolate its time (0: run it through)",
+       "--naive-max-solves"},
+  };
+}
+
+std::vector<std::string> WearmapRough::prepare(Config& cfg) {
+  const std::string k = "wearmap.rough.";
+  const auto count = [&](const char* key, std::size_t fallback, double lo, double hi) {
+    return static_cast<std::size_t>(cfg.integer_or(k + key, long(fallback), Range::closed(lo, hi)));
+  };
+  auto& surface = spec_.surface;
+  surface.n = count("n", 512, 16, 4096);
+  const std::size_t seeds = count("seeds", 5, 1, 1000);
+  surface.hurst = cfg.number_or(k + "hurst", 0.8, Range::open_closed(0.0, 1.0));
+  surface.k_l = cfg.number_or(k + "q_l", 8.0, Range::at_least(1.0));
+  surface.k_s = cfg.number_or(k + "q_s", static_cast<double>(surface.n) / 8.0, Range::at_least(1.0));
+  if (!(surface.k_l <= surface.k_s && surface.k_s <= static_cast<double>(surface.n) / 2.0)) {
+    const std::string key = k + (cfg.has(k + "q_s") ? "q_s" : "q_l");
+    throw cfg.error(key,
+                    fmt::format("not allowed with q_l = {}, q_s = {} and n = {}", surface.k_l, surface.k_s, surface.n),
+                    fmt::format("1 ≤ q_l ≤ q_s ≤ n/2 = {} (in 2π/L; q_s defaults to n/8)", surface.n / 2));
+  }
+  const auto loads = read_range(cfg, k + "loads", {0.01, 0.3}, Range::open(0.0, 1.0), "p̃_N (5.1)");
+  const std::size_t n_loads = count("n_loads", 20, 1, 1000);
+  const auto dstar = read_range(cfg, k + "dstar_over_l", {0.01, 0.2}, Range::positive(), "d*/L (4.35)");
+  const std::size_t n_dstar = count("n_dstar", 20, 1, 1000);
+  surface.poisson = cfg.number_or(k + "nu", 0.3, Range::open_closed(-1.0, 0.5));
+  spec_.tensile_strength = cfg.number_or(k + "tensile_strength", 1.0, Range::positive());
+  spec_.spot = cfg.number_or(k + "spot", 0.05, Range::closed(0.0, 1.0));
+  spec_.invalid_diameter = cfg.number_or(k + "invalid_diameter", 0.25, Range::open_closed(0.0, 1.0));
+  const bool per_particle =
+      cfg.choice_or(k + "energy_balance", "cumulative", {"cumulative", "per_particle"}) == "per_particle";
+  const bool naive = cfg.choice_or(k + "method", "fast", {"fast", "naive"}) == "naive";
+  naive_pixels_ = count("naive_pixels", 0, 0, 1000);
+  naive_max_solves_ = static_cast<std::size_t>(cfg.integer_or(k + "naive_max_solves", 0, Range::non_negative()));
+  cfg.reject_unknown_keys();
+
+  spec_.seeds.clear();
+  for (std::size_t s = 1; s <= seeds; ++s) spec_.seeds.push_back(s);
+  spec_.loads = linear(loads, n_loads);
+  spec_.critical_diameters = geometric(dstar, n_dstar);
+  spec_.options.cumulative = !per_particle;
+  spec_.options.method = naive ? wear::EnergyReleaseMethod::Naive : wear::EnergyReleaseMethod::Fast;
+  wear::validate(spec_);
+  // The resolved values, defaults included, for summary.json and the HDF5 files.
+  for (const auto& [key, value] :
+       {std::pair<const char*, std::string>{"n", fmt::format("{}", surface.n)}, {"seeds", fmt::format("{}", seeds)},
+        {"hurst", toml_number(surface.hurst)}, {"q_l", toml_number(surface.k_l)}, {"q_s", toml_number(surface.k_s)},
+        {"loads", toml_range(loads)}, {"n_loads", fmt::format("{}", n_loads)}, {"dstar_over_l", toml_range(dstar)},
+        {"n_dstar", fmt::format("{}", n_dstar)}, {"nu", toml_number(surface.poisson)},
+        {"tensile_strength", toml_number(spec_.tensile_strength)}, {"spot", toml_number(spec_.spot)},
+        {"invalid_diameter", toml_number(spec_.invalid_diameter)},
+        {"energy_balance", per_particle ? "\"per_particle\"" : "\"cumulative\""},
+        {"method", naive ? "\"naive\"" : "\"fast\""}, {"naive_pixels", fmt::format("{}", naive_pixels_)},
+        {"naive_max_solves", fmt::format("{}", naive_max_solves_)}})
+    record(cfg, k + key, value);
+  return {};
+}
+
+void WearmapRough::run(const Config& cfg, RunContext& context) {
+  const wear::RoughWearMapSpec& spec = spec_;
+  const fs::path& out = context.output_dir();
+  const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
+  const double contacts = static_cast<double>(spec.seeds.size() * nl);
+  Progress bar = context.show_progress() ? Progress("wearmap rough", contacts, "contacts") : Progress::silent(contacts);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto map = wear::rough_wear_map(spec, [&](std::size_t done, std::size_t) { bar.update(double(done)); });
+  bar.finish();
+  const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const nlohmann::json baseline =
+      naive_pixels_ > 0 ? naive_baseline(spec, naive_pixels_, naive_max_solves_) : nlohmann::json();
+
+  const fs::path h5 = out / "wearmap_rough.h5", xmf = out / "wearmap_rough.xdmf", csv = out / "wearmap_rough.csv",
+                 pcsv = out / "wearmap_rough_particles.csv", ccsv = out / "wearmap_rough_curves.csv",
+                 kcsv = out / "wearmap_rough_peaks.csv";
+  std::vector<double> load, dstar, cm, cs, vm, vs, lm, fr, valid;
+  for (const auto& p : map.pixels) {
+    load.push_back(p.load), dstar.push_back(p.critical_diameter), cm.push_back(p.count_mean);
+    cs.push_back(p.count_sd), vm.push_back(p.volume_mean), vs.push_back(p.volume_sd);
+    lm.push_back(p.largest_mean), fr.push_back(p.contact_fraction), valid.push_back(p.valid ? 1.0 : 0.0);
+  }
+  const std::vector<std::string> names = {"p_N_tilde", "dstar_over_L", "count_mean", "count_sd", "volume_mean",
+                                          "volume_sd", "largest_diameter_mean", "contact_fraction", "valid"};
+  const std::vector<std::span<const double>> columns = {load, dstar, cm, cs, vm, vs, lm, fr, valid};
+  std::vector<double> ps, pl, pd, px, py, pdia;
+  for (const auto& p : map.particles) {
+    ps.push_back(double(p.seed)), pl.push_back(spec.loads[p.load_index]);
+    pd.push_back(spec.critical_diameters[p.dstar_index]), px.push_back(p.x), py.push_back(p.y);
+    pdia.push_back(p.diameter);
+  }
+  const std::vector<std::string> pnames = {"seed", "p_N_tilde", "dstar_over_L", "x_over_L", "y_over_L",
+                                           "diameter_over_L"};
+  const std::vector<std::span<const double>> pcols = {ps, pl, pd, px, py, pdia};
+  // Fig. 5.7: each curve's maximum read off its smoothed version (§5.2).
+  std::vector<wear::CurveMaximum> peaks;
+  std::vector<double> peak_dstar, peak_load, peak_count, peak_raw, peak_found;
+  for (std::size_t d = 0; d < nd; ++d) {
+    peaks.push_back(wear::curve_maximum(map, d));
+    const auto& c = peaks.back();
+    double raw = 0.0;
+    for (std::size_t l = 0; l < nl; ++l)
+      if (map.pixel(l, d).valid) raw = std::max(raw, map.pixel(l, d).count_mean);
+    peak_dstar.push_back(spec.critical_diameters[d]);
+    peak_load.push_back(c.found ? c.load : std::nan(""));
+    peak_count.push_back(c.found ? c.count : std::nan(""));
+    peak_raw.push_back(c.found ? raw : std::nan(""));
+    peak_found.push_back(c.found ? 1.0 : 0.0);
+  }
+  const std::vector<std::string> peak_names = {"dstar_over_L", "p_N_tilde_at_max", "count_max_smoothed",
+                                               "count_max_raw", "found"};
+  const std::vector<std::span<const double>> peak_cols = {peak_dstar, peak_load, peak_count, peak_raw, peak_found};
+  const std::string peak_note =
+      fmt::format("Fig. 5.7: maximum of each curve (number of particles against p_N_tilde) over its valid pixels, on "
+                  "the curve smoothed by a Savitzky-Golay filter of degree {} on {} points (thesis §5.2: 3 on 11); "
+                  "count_max_raw: the unsmoothed maximum; found = 0 where no pixel is valid",
+                  peaks.front().degree, peaks.front().window);
+  XdmfSidecar sidecar(Grid2D(nl, nd, static_cast<double>(nl), static_cast<double>(nd)));
+  {
+    H5Writer w(h5);
+    w.write_series("/axes/p_N_tilde", spec.loads);
+    w.write_table("/curve_maxima", peak_names, peak_cols);
+    w.set_attribute("/curve_maxima", "description", peak_note);
+    w.write_series("/axes/dstar_over_L", spec.critical_diameters);
+    w.write_table("/pixels", names, columns);
+    w.write_table("/particles", pnames, pcols);
+    const Grid2D g(nl, nd, 1.0, 1.0);
+    auto field = [&](const std::vector<double>& v, const std::string& path) {
+      RealField f(g);
+      for (std::size_t k = 0; k < v.size(); ++k) f[k] = v[k];
+      w.write_field(path, f);
+    };
+    field(cm, "/maps/count_mean"), field(cs, "/maps/count_sd"), field(vm, "/maps/volume_mean");
+    field(vs, "/maps/volume_sd"), field(valid, "/maps/valid");
+    w.set_attribute("/", "description", "numerical wear maps of rough contacts (thesis ch. 5, Fig. 5.6); rows p_N_tilde, "
+                                        "columns dstar_over_L; lengths in units of L, volumes in L^3");
+    w.set_attribute("/", "hurst", spec.surface.hurst);
+    w.set_attribute("/", "q_l", spec.surface.k_l);
+    w.set_attribute("/", "q_s", spec.surface.k_s);
+    w.set_attribute("/", "n", double(spec.surface.n));
+    w.set_attribute("/", "seeds", double(spec.seeds.size()));
+    w.set_attribute("/", "poisson", spec.surface.poisson);
+    w.set_attribute("/", "tensile_strength_over_sigma_j", spec.tensile_strength);
+    w.set_attribute("/", "energy_balance", spec.options.cumulative ? "cumulative" : "per particle");
+    w.set_attribute("/", "case_toml", cfg.to_toml());
+    // ParaView: the maps on the (p̃_N, d*/L) pixel grid in index space, pixel
+    // (l, d) at X = l, Y = d as in the PNGs (the axes' values are in /axes).
+    sidecar.add(w, {{"/maps/count_mean", "count_mean"}, {"/maps/count_sd", "count_sd"},
+                    {"/maps/volume_mean", "volume_mean"}, {"/maps/volume_sd", "volume_sd"}, {"/maps/valid", "valid"}});
+    w.commit();
+  }
+  sidecar.write(xmf, h5);
+  // Every column is a ratio, a count or a length / L, a volume / L^3: dimensionless.
+  const auto plain = [](const std::vector<std::string>& n) { return std::vector<std::string>(n.size(), "1"); };
+  write_csv(csv, names, columns, plain(names),
+            {"wearscale wearmap rough: mean and sample sd over seeds; valid = 0 where the mean "
+             "largest particle exceeds the invalid diameter (crossed in Fig. 5.6)"});
+  write_csv(pcsv, pnames, pcols, plain(pnames), {"every detached particle of every seed and pixel; lengths / L"});
+  {
+    std::vector<std::string> cn = {"p_N_tilde"};
+    std::vector<std::vector<double>> cv(1 + 6 * nd, std::vector<double>(nl));
+    for (std::size_t l = 0; l < nl; ++l) cv[0][l] = spec.loads[l];
+    for (std::size_t d = 0; d < nd; ++d) {
+      const std::string tag = fmt::format("{:.4g}", spec.critical_diameters[d]);
+      for (const char* c : {"count_", "count_sd_", "volume_", "volume_sd_", "valid_", "count_smoothed_"})
+        cn.push_back(c + tag);
+      for (std::size_t l = 0; l < nl; ++l) {
+        const auto& p = map.pixel(l, d);
+        cv[1 + 6 * d][l] = p.count_mean, cv[2 + 6 * d][l] = p.count_sd, cv[3 + 6 * d][l] = p.volume_mean;
+        cv[4 + 6 * d][l] = p.volume_sd, cv[5 + 6 * d][l] = p.valid ? 1.0 : 0.0;
+        cv[6 + 6 * d][l] = peaks[d].smoothed[l];
+      }
+    }
+    std::vector<std::span<const double>> spans(cv.begin(), cv.end());
+    write_csv(ccsv, cn, spans, plain(cn),
+              {"Fig. 5.7: per d*/L, mean and sd of the number of particles and wear volume / L^3, and the number "
+               "of particles smoothed as in §5.2 (wearmap_rough_peaks.csv: the maximum of each curve)"});
+    write_csv(kcsv, peak_names, peak_cols, plain(peak_names), {peak_note});
+  }
+  for (const auto& f : {h5, xmf, csv, pcsv, ccsv, kcsv}) context.add_file(f);
+  // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
+  const std::pair<std::string, std::string> plots[] = {
+      {map_script(OutputSet::readable(csv), 3, "Number of particles (Fig. 5.6a)", false, spec.loads,
+                  spec.critical_diameters),
+       "count"},
+      {map_script(OutputSet::readable(csv), 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads,
+                  spec.critical_diameters),
+       "volume"},
+      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, false), "curves_count"},
+      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, true), "curves_volume"}};
+  for (const auto& [script, name] : plots)
+    if (auto p = coupling::render_plot(script, out / ("wearmap_rough_" + name + ".png"), 1000, 760))
+      context.add_file(*p);
+
+  std::size_t invalid = 0;
+  double max_count = 0.0;
+  for (const auto& p : map.pixels) {
+    invalid += p.valid ? 0 : 1;
+    max_count = std::max(max_count, p.count_mean);
+  }
+  const double pixels = static_cast<double>(nl * nd);
+  context.report("pixels", pixels, "1", "map pixels (p̃_N × d*/L)");
+  context.report("invalid_fraction", double(invalid) / pixels, "1", "share of pixels with particles ≥ the invalid size");
+  context.report("max_count", max_count, "1", "largest mean number of particles on the map");
+  double max_smoothed = 0.0;
+  for (const auto& c : peaks)
+    if (c.found) max_smoothed = std::max(max_smoothed, c.count);
+  context.report("max_count_smoothed", max_smoothed, "1",
+                 "largest maximum of the Fig. 5.7 curves read on their smoothed version (§5.2)");
+  context.report("seconds", total_seconds, "s", "wall time of the map (all seeds)");
+  context.report("seconds_per_pixel", total_seconds / (pixels * double(spec.seeds.size())), "s",
+                 "wall time per pixel and seed");
+  context.report("contact_seconds", map.contact_seconds, "s", "BEM contact solves");
+  context.report("model_setup_seconds", map.setup_seconds, "s", "crack stresses, candidates, u of the full loading");
+  context.report("detach_seconds", map.detach_seconds, "s", "detachment procedure over all pixels and seeds");
+  context.report("candidates", double(map.candidates), "1", "candidate particles summed over seeds and loads");
+  context.report("energy_evaluations", double(map.energy_evaluations), "1", "ΔE_el (5.3) evaluated in full");
+  if (!baseline.is_null()) {
+    context.report("naive_ratio", baseline["ratio"].get<double>(), "1",
+                   "naive (one solve per candidate) over fast time per pixel");
+    context.report("naive_seconds_per_pixel", baseline["naive_seconds_per_pixel"].get<double>(), "s",
+                   "naive baseline (extrapolated on truncated pixels)");
+    context.report("fast_seconds_per_pixel", baseline["fast_seconds_per_pixel"].get<double>(), "s",
+                   "fast, same pixels (the shared set-up apart)");
+    context.report("setup_seconds_per_pixel", baseline["setup_seconds_per_pixel"].get<double>(), "s",
+                   "candidates, crack stresses and u of the full loading, shared by both");
+    context.note("baseline", baseline);
+  }
+  // The sample points of the axes.
+  context.note("axes", {{"p_N_tilde", spec.loads}, {"dstar_over_L", spec.critical_diameters}});
+}
+
+}  // namespace
+}  // namespace wearscale::studies
+
+WEARSCALE_STUDY(WearmapRough)

@@ -1,0 +1,61 @@
+// Every key a study's driver reads is in its schema: for each study, an
+// unknown key makes the driver list the keys it read in that table, and each
+// of them must be in docs/keys.md, which the KeysDoc test keeps equal to what
+// the schemas generate.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const ScratchDir work_scratch("wearscale_study_schemas_");
+const fs::path work = work_scratch.path();
+
+struct Probe {
+  std::string table, args;  // the table probed, and a command whose other keys are valid
+};
+
+// "keys read in [TABLE]: a, b, c (did you mean ...)" → {a, b, c}
+std::vector<std::string> keys_read(const std::string& err, const std::string& table) {
+  const std::string head = "keys read in [" + table + "]: ";
+  const auto at = err.find(head);
+  if (at == std::string::npos) return {};
+  std::string list = err.substr(at + head.size());
+  list = list.substr(0, std::min(list.find(" ("), list.find('\n')));
+  std::vector<std::string> out;
+  std::stringstream ss(list);
+  for (std::string k; std::getline(ss, k, ',');) out.push_back(k.substr(k.find_first_not_of(' ')));
+  return out;
+}
+}  // namespace
+
+TEST(StudySchemas, ListEveryKeyTheirDriversRead) {
+  const std::string keys_md = slurp(fs::path(WEARSCALE_SOURCE_DIR) / "docs" / "keys.md");
+  const Probe probes[] = {
+      {"dem", "dem patch-test"},
+      {"dem.patch_test", "dem patch-test"},
+      {"dem.junction", "dem junction --material SiO2 --D 20e-9 --d0 6e-9"},
+      {"dem.rough_shear", "dem rough-shear --material SiO2 --d0 3e-9"},
+      {"dem.trapped_particles", "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 6e-9"},
+      {"wearmap.analytic2d", "wearmap analytic2d"},
+      {"wearmap.analytic3d", "wearmap analytic3d"},
+      {"wearmap.rough", "wearmap rough"},
+      {"surface.generate", "surface generate --n 16 --size 1e-3 --hurst 0.8 --kl 1 --ks 4 --sa 1e-6"},
+      {"contact", "contact --set contact.grid=16 --set contact.size=1e-3 --set contact.sphere.radius=1e-2 "
+                  "--e-star 1e9 --pressure 1e6"},
+  };
+  for (const auto& p : probes) {
+    const auto r = run_cli(p.args + " --set " + p.table + ".zz_not_a_key=1 --out out", work);
+    EXPECT_EQ(r.status, 2) << p.table << ": " << r.err;
+    const auto keys = keys_read(r.err, p.table);
+    EXPECT_FALSE(keys.empty()) << p.table << ": " << r.err;
+    for (const auto& k : keys) EXPECT_THAT(keys_md, HasSubstr("`" + p.table + "." + k + "`")) << "not in its schema";
+  }
+  EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";
+}
