@@ -281,7 +281,7 @@ class ContactStudy final : public Study {
   Schema schema() const override;
   // Under mpirun (P > 1) the case is read and checked on every rank before any
   // work (contact_slab.hpp says what is refused); serial runs read it in run().
-  std::vector<std::string> prepare(const Config& config) override {
+  std::vector<std::string> prepare(Config& config) override {
     if (mpi::size() > 1) slab_ = read_slab_case(config);
     return {};
   }
