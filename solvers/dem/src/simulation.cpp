@@ -33,6 +33,7 @@ Simulation::Simulation(Particles particles, Box box, std::unique_ptr<ContactLaw>
   for (int a = 0; a < 3; ++a)
     if (box_.periodic[static_cast<std::size_t>(a)] && !(box_.hi[a] > box_.lo[a]))
       throw InputError(fmt::format("DEM box: periodic axis {} has hi ≤ lo", "xyz"[a]));
+  neighbors_.set_history_of_touching_pairs_only(settings_.history_of_touching_pairs_only);
 }
 
 int Simulation::add_wall(std::vector<std::size_t> members, WallMotion motion) {
@@ -87,7 +88,6 @@ void Simulation::rebuild() {
   auto& p = particles_;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (int a = 0; a < 3; ++a) p.image[i][static_cast<std::size_t>(a)] -= box_.wrap(a, p.position[i][a]);
-  neighbors_.set_history_of_touching_pairs_only(settings_.history_of_touching_pairs_only);
   neighbors_.build(p, box_, reach(), settings_.skin, law_->history_size());
   prepare_pairs();
   since_build_ = 0;
