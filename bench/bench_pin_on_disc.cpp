@@ -7,7 +7,7 @@
 #include <omp.h>
 
 #include "wearscale/core/fft.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 

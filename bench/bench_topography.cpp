@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/bem/harmonic_fill.hpp"
-#include "wearscale/bem/topography_io.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 using namespace wearscale;
 
@@ -77,8 +77,8 @@ BENCHMARK(BM_ReadSdfAscii)->Arg(1024)->Unit(benchmark::kMillisecond);
 
 // ParaView's view of a field (an HDF5 virtual dataset, one mapping per row)
 // against writing the field alone: n × n doubles, compressed as wearscale writes them.
-#include "wearscale/core/hdf5_file.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace {
 void write_field(benchmark::State& state, bool view) {

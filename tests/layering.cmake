@@ -1,18 +1,21 @@
 # Fails if a layer includes a header of a layer it must not depend on
 # (docs/architecture.md, docs/architecture-runner.md): core includes nothing above it; materials
-# only core; the solvers (bem, dem, md, wear, tribometer) neither coupling nor
-# studies, and no case reader (core/config.hpp: solvers take plain structs;
-# the [md] keys are read in coupling/shear_test_keys.cpp); coupling not
-# studies. Every library folder is covered.
-set(above_core "materials|bem|dem|md|wear|tribometer|coupling|studies")
+# only core; the solvers (bem, dem, md, wear, tribometer) neither io (cases,
+# HDF5, CSV: solvers take plain structs; the [md] keys are read in
+# coupling/shear_test_keys.cpp) nor coupling nor studies; io not coupling nor
+# studies; coupling not studies. Every library folder is covered.
+# With -DLINKS=<file> (tests/CMakeLists.txt: each layer's link closure) it also
+# fails if core, materials or a solver links HDF5 or toml++.
+set(above_core "materials|bem|dem|md|wear|tribometer|io|coupling|studies")
 set(rules
   "core|wearscale/(${above_core})/"
-  "materials|wearscale/(bem|dem|md|wear|tribometer|coupling|studies)/"
-  "solvers/bem|wearscale/(coupling|studies)/|wearscale/core/config\\.hpp"
-  "solvers/dem|wearscale/(coupling|studies)/|wearscale/core/config\\.hpp"
-  "solvers/wear|wearscale/(coupling|studies)/|wearscale/core/config\\.hpp"
-  "solvers/tribometer|wearscale/(coupling|studies)/|wearscale/core/config\\.hpp"
-  "solvers/md|wearscale/(coupling|studies)/|wearscale/core/config\\.hpp"
+  "materials|wearscale/(bem|dem|md|wear|tribometer|io|coupling|studies)/"
+  "solvers/bem|wearscale/(io|coupling|studies)/"
+  "solvers/dem|wearscale/(io|coupling|studies)/"
+  "solvers/wear|wearscale/(io|coupling|studies)/"
+  "solvers/tribometer|wearscale/(io|coupling|studies)/"
+  "solvers/md|wearscale/(io|coupling|studies)/"
+  "io|wearscale/(coupling|studies)/"
   "coupling|wearscale/studies/")
 set(violations "")
 foreach(rule IN LISTS rules)
@@ -31,6 +34,26 @@ foreach(rule IN LISTS rules)
     endif()
   endforeach()
 endforeach()
+if(DEFINED LINKS)
+  if(NOT EXISTS ${LINKS})
+    message(FATAL_ERROR "layering: no link closures in ${LINKS} (reconfigure the build)")
+  endif()
+  file(STRINGS ${LINKS} closures)
+  set(checked 0)
+  foreach(line IN LISTS closures)
+    if(line MATCHES "^(core|materials|bem|dem|md|wear|tribometer): (.*)$")
+      math(EXPR checked "${checked} + 1")
+      set(layer ${CMAKE_MATCH_1})
+      string(TOLOWER "${CMAKE_MATCH_2}" links)
+      if(links MATCHES "(toml|hdf5)[^ ]*")
+        string(APPEND violations "wearscale_${layer} links ${CMAKE_MATCH_0} (only io and above may)\n")
+      endif()
+    endif()
+  endforeach()
+  if(NOT checked EQUAL 7)
+    message(FATAL_ERROR "layering: ${LINKS} lists ${checked} of the 7 layers below io")
+  endif()
+endif()
 if(violations)
   message(FATAL_ERROR "layering violations (see docs/architecture.md):\n${violations}")
 endif()

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "wearscale/core/version.hpp"
+#include "wearscale/io/library_versions.hpp"
 
 namespace wearscale::app {
 

@@ -67,24 +67,6 @@ void MaterialLibrary::add(Material m) {
   by_name_.insert_or_assign(name, std::move(m));
 }
 
-void MaterialLibrary::define_from(const Config& root) {
-  const Config defs = root.section("materials.define");
-  for (const auto& name : root.keys("materials.define")) {
-    const Config c = defs.section(name);
-    Material m;
-    m.name = name;
-    m.young = c.number("young", Range::positive(), units::pressure);
-    m.poisson = c.number("poisson", Range::open_closed(-1.0, 0.5));
-    m.density = c.number("density", Range::positive(), units::density);
-    m.surface_energy = c.number("surface_energy", Range::positive(), units::surface_energy);
-    m.tensile_strength = c.number("tensile_strength", Range::positive(), units::pressure);
-    m.shear_strength = c.number("shear_strength", Range::positive(), units::pressure);
-    if (c.has("restitution")) m.restitution = c.number("restitution", Range::open_closed(0.0, 1.0));
-    m.source = c.string_or("source", "defined in " + root.source());
-    add(std::move(m));
-  }
-}
-
 const Material& MaterialLibrary::get(const std::string& name) const {
   if (auto it = by_name_.find(name); it != by_name_.end()) return it->second;
   throw InputError(fmt::format("unknown material '{}'; known materials: {} (define others in [materials.define.<name>])",

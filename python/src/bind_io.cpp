@@ -5,7 +5,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::python {
 

@@ -4,12 +4,13 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/io/shipped_data.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 #include "wearscale/materials/junction_model.hpp"
 #include "wearscale/materials/material.hpp"
-#include "wearscale/materials/shipped_data.hpp"
 #include "wearscale/materials/strength_law.hpp"
 #include "wearscale/materials/strength_table.hpp"
-#include "wearscale/core/errors.hpp"
 
 namespace wearscale::python {
 

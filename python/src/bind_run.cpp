@@ -7,9 +7,9 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/io/config.hpp"
 #include "wearscale/studies/runner.hpp"
 
 namespace wearscale::python {

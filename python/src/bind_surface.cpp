@@ -11,8 +11,8 @@
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/bem/topography.hpp"
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 namespace wearscale::python {
 

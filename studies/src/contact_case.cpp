@@ -4,10 +4,10 @@
 
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/roughness.hpp"
-#include "wearscale/core/csv.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/units.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::studies {
 

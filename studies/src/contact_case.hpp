@@ -6,8 +6,8 @@
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
-#include "wearscale/core/config.hpp"
 #include "wearscale/coupling/run_context.hpp"
+#include "wearscale/io/config.hpp"
 
 namespace wearscale::studies {
 

@@ -33,14 +33,14 @@
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/subsurface_stress.hpp"
 #include "wearscale/bem/surface_generator.hpp"
-#include "wearscale/bem/topography_io.hpp"
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/topography_io.hpp"
+#include "wearscale/io/xdmf.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {

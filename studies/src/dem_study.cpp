@@ -12,11 +12,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
 #include "wearscale/dem/patch_test.hpp"
@@ -24,8 +23,10 @@
 #include "wearscale/dem/sheared_junction.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/trapped_particles.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/material_definitions.hpp"
 #include "wearscale/materials/material.hpp"
-#include "wearscale/coupling/plots.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {
@@ -180,7 +181,7 @@ CohesiveMaterial dem_material(const Config& root) {
     m.scaling_exponent = s;
   } else {
     materials::MaterialLibrary library;
-    library.define_from(root);
+    define_materials_from(library, root);
     if (!library.contains(name)) {
       std::string known = "table-6.4";
       for (const auto& n : library.names()) known += ", " + n;

@@ -15,12 +15,8 @@
 #include <fmt/ranges.h>
 
 #include "wearscale/core/atomic_file.hpp"
-#include "wearscale/core/checkpoint.hpp"
-#include "wearscale/core/config.hpp"
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
@@ -31,6 +27,10 @@
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/utf8.hpp"
 #include "wearscale/core/worker_pool.hpp"
+#include "wearscale/io/checkpoint.hpp"
+#include "wearscale/io/config.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {

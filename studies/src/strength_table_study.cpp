@@ -16,6 +16,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/coupling/shear_test_keys.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
 #include "wearscale/studies/study.hpp"
@@ -120,7 +121,7 @@ Schema StrengthTableStudy::schema() const {
       {"md.potential", "path", "", "", preset, "interatomic potential file (relative to the case file)", ""},
       {"md.cutoff", "number", "≥ 0", "m", preset, "Vashishta cutoff (SiO2 only)", ""},
       {"md.cache", "boolean", "true | false", "", "true", "read identical runs from the result cache", ""},
-      {"md.cache_dir", "string", "", "", "$WEARSCALE_CACHE, else ~/.cache/wearscale/lammps", "result cache folder",
+      {"md.cache_dir", "string", "", "", "$WEARSCALE_CACHE/lammps, else ~/.cache/wearscale/lammps", "result cache folder",
        ""},
       {"md.quench.temperatures", "list", "> 0", "K", preset, "SiO2 melt-quench: temperature schedule", ""},
       {"md.quench.hold_time", "number", "> 0", "s", preset, "SiO2 melt-quench: time held at each temperature", ""},

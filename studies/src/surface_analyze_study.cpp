@@ -18,10 +18,10 @@
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/spectral_modes.hpp"
 #include "wearscale/bem/topography.hpp"
-#include "wearscale/bem/topography_io.hpp"
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {

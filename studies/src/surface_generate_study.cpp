@@ -18,9 +18,9 @@
 #include "surface_sides.hpp"
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/surface_generator.hpp"
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {

@@ -4,8 +4,8 @@
 // metres (1e-4) or with a unit ("100 um").
 #include <string>
 
-#include "wearscale/bem/topography_io.hpp"
-#include "wearscale/core/config.hpp"
+#include "wearscale/io/config.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 namespace wearscale::studies {
 

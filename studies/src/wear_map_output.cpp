@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/output_set.hpp"
-#include "wearscale/wear/wear_map_io.hpp"
+#include "wearscale/io/wear_map_io.hpp"
 
 namespace wearscale::studies {
 

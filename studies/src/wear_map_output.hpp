@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/coupling/run_context.hpp"
+#include "wearscale/io/config.hpp"
 #include "wearscale/wear/wear_map.hpp"
 
 namespace wearscale::studies {

@@ -12,13 +12,13 @@
 #include <fmt/format.h>
 
 #include "wear_map_output.hpp"
-#include "wearscale/core/csv.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/progress.hpp"
-#include "wearscale/core/xdmf.hpp"
 #include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 #include "wearscale/studies/study.hpp"
 #include "wearscale/wear/rough_wear_map.hpp"
 #include "wearscale/wear/wear_curves.hpp"

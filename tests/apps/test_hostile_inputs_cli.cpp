@@ -20,7 +20,7 @@
 
 #include "cli_runner.hpp"
 #include "h5_fixture.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 #include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;

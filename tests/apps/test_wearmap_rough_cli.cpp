@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 #include "xdmf_check.hpp"
 #include "scratch_dir.hpp"
 

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "wearscale/core/atomic_file.hpp"
-#include "wearscale/core/csv.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 #include "scratch_dir.hpp"
 
 using namespace wearscale;

@@ -2,9 +2,9 @@
 // (moved from tests/md with the reader: the md library reads no case).
 #include <gtest/gtest.h>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/coupling/shear_test_keys.hpp"
+#include "wearscale/io/config.hpp"
 
 using namespace wearscale;
 using namespace wearscale::md;

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/checkpoint.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 using namespace wearscale;
 

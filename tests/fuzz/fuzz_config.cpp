@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/config.hpp"
 
 using namespace wearscale;
 

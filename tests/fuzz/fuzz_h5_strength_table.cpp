@@ -8,7 +8,8 @@
 
 #include "strength_table_checks.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 
 using namespace wearscale;
 

@@ -7,9 +7,9 @@
 #include <string_view>
 
 #include "topography_checks.hpp"
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 using namespace wearscale;
 

@@ -7,6 +7,7 @@
 
 #include "strength_table_checks.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 
 using namespace wearscale;
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/config.hpp"
 #include "wearscale/studies/runner.hpp"
 
 using namespace wearscale;

@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "topography_checks.hpp"
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 using namespace wearscale;
 

@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 using namespace wearscale;
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/field.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 namespace fuzz {
 

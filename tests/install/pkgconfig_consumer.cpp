@@ -10,9 +10,9 @@
 #include "wearscale/bem/hertz.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/version.hpp"
+#include "wearscale/io/config.hpp"
 
 int main() {
   using namespace wearscale;

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/materials/junction_model.hpp"
 #include "wearscale/materials/material.hpp"
-#include "wearscale/materials/shipped_data.hpp"
 
 using namespace wearscale;
 using namespace wearscale::materials;

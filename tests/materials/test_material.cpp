@@ -51,39 +51,3 @@ TEST(Material, CriticalSizeOfAFlatCircularJunctionFollows435) {
   const double d = critical_size(m, 9e9, JunctionGeometry::FlatCircular);
   EXPECT_NEAR(d, 12.0 * M_PI * 1.5 * m.shear_modulus() / ((2.0 - 0.17) * 81e18), 1e-20);
 }
-
-TEST(MaterialLibrary, CaseDefinedMaterialsAreReadWithUnitsAndChecked) {
-  auto cfg = Config::from_string(R"(
-[materials.define.Al2O3]
-young = "400 GPa"
-poisson = 0.22
-density = "3.95 g/cm^3"
-surface_energy = "1 J/m^2"
-tensile_strength = "30 GPa"
-shear_strength = "20 GPa"
-)", "alumina.toml");
-  MaterialLibrary lib;
-  lib.define_from(cfg);
-  EXPECT_DOUBLE_EQ(lib.get("Al2O3").young, 400e9);
-  EXPECT_NEAR(lib.get("Al2O3").density, 3950.0, 1e-9);
-  EXPECT_FALSE(lib.get("Al2O3").restitution.has_value());
-  EXPECT_EQ(lib.get("Si").young, 150e9);
-  EXPECT_NO_THROW(cfg.reject_unknown_keys());
-}
-
-TEST(MaterialLibrary, BadDefinitionsAndUnknownNamesAreBadInput) {
-  auto cfg = Config::from_string("[materials.define.X]\nyoung = -1\n", "x.toml");
-  MaterialLibrary lib;
-  try {
-    lib.define_from(cfg);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("materials.define.X.young"));
-  }
-  try {
-    lib.get("Cu");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("Si, SiO2"));
-  }
-}

@@ -16,7 +16,7 @@
 
 #include "cli_runner.hpp"
 #include "scratch_dir.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;

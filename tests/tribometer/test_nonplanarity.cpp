@@ -8,7 +8,7 @@
 #include <cmath>
 #include <map>
 
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 #include "thesis_pin_on_disc.hpp"

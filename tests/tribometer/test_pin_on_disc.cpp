@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "wearscale/core/errors.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"

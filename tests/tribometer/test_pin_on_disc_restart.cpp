@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/checkpoint.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 #include "thesis_pin_on_disc.hpp"

@@ -5,7 +5,7 @@
 // unless a test sets otherwise.
 #include <limits>
 
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 
 namespace wearscale::tribometer::test_support {

@@ -5,11 +5,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "wearscale/io/material_definitions.hpp"
+
 namespace wearscale::coupling {
 
 materials::MaterialLibrary material_library(const Config& root) {
   materials::MaterialLibrary library;
-  library.define_from(root);
+  define_materials_from(library, root);
   return library;
 }
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/config.hpp"
 #include "wearscale/materials/material.hpp"
 #include "wearscale/materials/strength_law.hpp"
 

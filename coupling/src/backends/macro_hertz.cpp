@@ -3,9 +3,9 @@
 // The closed form is the reference the BEM pin-on-disc model starts from.
 #include <vector>
 
-#include "wearscale/coupling/scale.hpp"
 #include "wearscale/bem/hertz.hpp"
-#include "wearscale/core/csv.hpp"
+#include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/csv.hpp"
 
 namespace wearscale::coupling {
 

@@ -4,9 +4,10 @@
 #include <map>
 
 #include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 #include "wearscale/materials/strength_law.hpp"
 
 namespace wearscale::coupling {

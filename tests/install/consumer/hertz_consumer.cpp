@@ -9,7 +9,7 @@
 #include "wearscale/bem/hertz.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 
 int main() {
   using namespace wearscale;

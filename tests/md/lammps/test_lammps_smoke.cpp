@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include "wearscale/io/strength_table_file.hpp"
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
 #include "scratch_dir.hpp"

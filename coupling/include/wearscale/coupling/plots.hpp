@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
+#include "wearscale/io/config.hpp"
 
 namespace wearscale::coupling {
 

@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "wearscale/core/checkpoint.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/checkpoint.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::coupling {
 

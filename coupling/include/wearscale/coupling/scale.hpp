@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/registry.hpp"
 #include "wearscale/coupling/exchange.hpp"
 #include "wearscale/coupling/run_context.hpp"
+#include "wearscale/io/config.hpp"
 
 namespace wearscale::coupling {
 

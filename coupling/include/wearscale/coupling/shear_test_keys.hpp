@@ -20,7 +20,7 @@
 //   cache = true                    cache_dir = "~/.cache/wearscale/lammps"
 //   [md.quench]                     # SiO2: temperatures = [5000, …, 300], hold_time,
 //                                   # cooling_rate = "166 K/ps", final_cooling_rate, timestep
-#include "wearscale/core/config.hpp"
+#include "wearscale/io/config.hpp"
 #include "wearscale/md/shear_test.hpp"
 
 namespace wearscale::coupling {

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
 
 namespace wearscale::materials {
 
@@ -44,15 +43,12 @@ double geometric_factor(JunctionGeometry geometry, double poisson);
 /// d* = c γ G / σ_j²   (4.35), (6.65), (8.3)
 double critical_size(const Material& m, double junction_strength, JunctionGeometry geometry);
 
-/// Built-in materials plus those a case defines. Lookups of unknown names are
+/// Built-in materials plus those a case defines (io/material_definitions.hpp). Lookups of unknown names are
 /// InputError listing the known ones.
 class MaterialLibrary {
  public:
   /// Si and SiO2.
   MaterialLibrary();
-  /// Adds every [materials.define.<name>] table of `root` (all keys read and
-  /// range-checked; a user material may override a built-in one by name).
-  void define_from(const Config& root);
   void add(Material m);
   const Material& get(const std::string& name) const;
   bool contains(const std::string& name) const { return by_name_.count(name) != 0; }

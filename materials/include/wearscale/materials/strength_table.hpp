@@ -3,7 +3,7 @@
 // maximum (peak) and dynamic (sliding) shear strength σ_max(p), σ_dyn(p)
 // (§9.3.1, Fig. 9.17–9.18), with the provenance of its numbers.
 //
-// File format (CSV, UTF-8):
+// Read and written by io/strength_table_file.hpp. File format (CSV, UTF-8):
 //   # key: value                 provenance lines (source, material, units,
 //   # key: value                 LAMMPS version, potential, size, seeds, …)
 //   pressure_GPa,sigma_max_GPa,sigma_dyn_GPa
@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "wearscale/core/hdf5_file.hpp"
+#include <functional>
 
 namespace wearscale::materials {
 
@@ -35,20 +35,9 @@ struct StrengthTable {
   std::string info(const std::string& key) const;
 };
 
-/// Reads a .csv/.txt or .h5 table. InputError naming the file and line for a
-/// missing column, non-monotone pressure, NaN, or a negative strength.
-StrengthTable read_strength_table(const std::filesystem::path& file);
-/// The CSV format above from its text; `origin` names it in messages.
-StrengthTable parse_strength_table_csv(std::string_view text, const std::string& origin);
-/// The same from an open HDF5 file (/strength/{pressure,sigma_max,sigma_dyn},
-/// each with a pressure "unit" attribute; provenance attributes optional).
-StrengthTable parse_strength_table_h5(const H5Reader& file);
-
-/// Writes the table (CSV or HDF5 by extension), atomically. The `material`
-/// is stored as the provenance key "material".
-void write_strength_table(const std::filesystem::path& file, const StrengthTable& table);
-
 /// Checks the invariants above; InputError naming `table.origin`.
 void validate(const StrengthTable& table);
+/// The same, `where_row(r)` naming row r in messages ("file:line" when read).
+void validate(const StrengthTable& table, const std::function<std::string(std::size_t)>& where_row);
 
 }  // namespace wearscale::materials

@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "wearscale/core/config.hpp"
+#include "wearscale/io/config.hpp"
 
 namespace wearscale::studies {
 

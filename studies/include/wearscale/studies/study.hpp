@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/config.hpp"
 #include "wearscale/coupling/run_context.hpp"
+#include "wearscale/io/config.hpp"
 
 namespace wearscale::studies {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/core/checkpoint_state.hpp"
 #include "wearscale/dem/box.hpp"
 #include "wearscale/dem/cell_grid.hpp"
 #include "wearscale/dem/particles.hpp"

@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/core/checkpoint_state.hpp"
 #include "wearscale/dem/vec3.hpp"
 
 namespace wearscale::dem {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/core/checkpoint_state.hpp"
 #include "wearscale/dem/box.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
 #include "wearscale/dem/contact_law.hpp"

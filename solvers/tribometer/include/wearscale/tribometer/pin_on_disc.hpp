@@ -22,7 +22,8 @@
 #include <vector>
 
 #include "wearscale/bem/normal_contact.hpp"
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/core/checkpoint_state.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/materials/junction_model.hpp"
 
 namespace wearscale::tribometer {

@@ -28,7 +28,7 @@
 
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/field.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::bem {
 

@@ -1,4 +1,4 @@
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 #include <hdf5.h>
 

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "wearscale/bem/topography_io.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 namespace wearscale::bem::formats {
 

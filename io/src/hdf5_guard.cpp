@@ -1,5 +1,5 @@
 #include "hdf5_lock.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 #include <fcntl.h>
 #include <signal.h>

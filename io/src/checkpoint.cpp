@@ -1,4 +1,4 @@
-#include "wearscale/core/checkpoint.hpp"
+#include "wearscale/io/checkpoint.hpp"
 
 #include <chrono>
 
@@ -7,11 +7,11 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/sha256.hpp"
 #include "wearscale/core/utc_time.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale {
 
@@ -111,38 +111,6 @@ std::string group_of(const std::string& owner) {
 }
 
 }  // namespace
-
-// ------------------------------------------------------------------ state ---
-
-void CheckpointState::put(const std::string& name, std::span<const double> values) {
-  arrays_[name].assign(values.begin(), values.end());
-}
-void CheckpointState::put(const std::string& name, double value) { arrays_[name] = {value}; }
-void CheckpointState::put_text(const std::string& name, std::string text) { texts_[name] = std::move(text); }
-
-bool CheckpointState::has(const std::string& name) const {
-  return arrays_.count(name) != 0 || texts_.count(name) != 0;
-}
-
-const std::vector<double>& CheckpointState::array(const std::string& name) const {
-  const auto it = arrays_.find(name);
-  if (it == arrays_.end())
-    throw InputError(fmt::format("{}: no entry '{}' (written by another version of wearscale?)", origin, name));
-  return it->second;
-}
-
-double CheckpointState::scalar(const std::string& name) const {
-  const auto& a = array(name);
-  if (a.size() != 1) throw InputError(fmt::format("{}: entry '{}' holds {} values, expected one", origin, name, a.size()));
-  return a[0];
-}
-
-const std::string& CheckpointState::text(const std::string& name) const {
-  const auto it = texts_.find(name);
-  if (it == texts_.end())
-    throw InputError(fmt::format("{}: no entry '{}' (written by another version of wearscale?)", origin, name));
-  return it->second;
-}
 
 // ------------------------------------------------------------ checkpointer ---
 

@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 
 #include "topography_formats.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::bem::formats {
 

@@ -15,10 +15,10 @@
 #include <numeric>
 
 #include "h5_fixture.hpp"
-#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/version.hpp"
+#include "wearscale/io/checkpoint.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 using namespace wearscale;
 namespace fs = std::filesystem;

@@ -1,7 +1,7 @@
 // The entry points for topography files: recognising the format from the
 // content, then applying the caller's choices (sizes, missing points) to
 // what the format's reader found. Writing surfaces (HDF5 + XDMF).
-#include "wearscale/bem/topography_io.hpp"
+#include "wearscale/io/topography_io.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -16,11 +16,11 @@
 #include "topography_formats.hpp"
 #include "wearscale/bem/harmonic_fill.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/text_file.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::bem {
 

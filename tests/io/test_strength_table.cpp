@@ -9,7 +9,8 @@
 
 #include "h5_fixture.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 #include "scratch_dir.hpp"
 
 using namespace wearscale;

@@ -1,4 +1,4 @@
-#include "wearscale/materials/shipped_data.hpp"
+#include "wearscale/io/shipped_data.hpp"
 
 #include <dlfcn.h>
 
@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 
 namespace wearscale::materials {
 

@@ -1,4 +1,4 @@
-#include "wearscale/wear/wear_map_io.hpp"
+#include "wearscale/io/wear_map_io.hpp"
 
 #include <span>
 #include <string>
@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "wearscale/core/csv.hpp"
-#include "wearscale/core/hdf5_file.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/csv.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::wear {
 

@@ -1,5 +1,5 @@
-#include "wearscale/core/config.hpp"
 #include "wearscale/core/edit_distance.hpp"
+#include "wearscale/io/config.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 // another format is refused (InputError), never resumed from.
 //
 // A solver that wants to be resumable saves what it needs into a
-// CheckpointState (arrays of doubles are stored bit for bit) and restores
-// from one; its backend calls at_step() after each step.
+// CheckpointState (core/checkpoint_state.hpp: arrays of doubles, stored bit
+// for bit) and restores from one; its backend calls at_step() after each step.
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -24,8 +24,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "wearscale/core/config.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/core/checkpoint_state.hpp"
+#include "wearscale/io/config.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale {
 
@@ -34,32 +35,6 @@ namespace wearscale {
 struct CheckpointPolicy {
   double interval = 600.0;  ///< wall-clock seconds between checkpoints; 0: never by time
   long every_steps = 0;     ///< solver steps between checkpoints; 0: never by steps
-};
-
-/// The saved state of one owner: named arrays of doubles (bit-exact) and texts.
-class CheckpointState {
- public:
-  long step = 0;  ///< the owner's step count when saved
-
-  void put(const std::string& name, std::span<const double> values);
-  void put(const std::string& name, double value);
-  void put_text(const std::string& name, std::string text);
-
-  bool has(const std::string& name) const;
-  /// InputError naming the entry if the checkpoint lacks it (a file of another version).
-  const std::vector<double>& array(const std::string& name) const;
-  /// An array of exactly one value.
-  double scalar(const std::string& name) const;
-  const std::string& text(const std::string& name) const;
-
-  const std::map<std::string, std::vector<double>>& arrays() const { return arrays_; }
-  const std::map<std::string, std::string>& texts() const { return texts_; }
-  /// Where it was read from (for messages).
-  std::string origin = "checkpoint";
-
- private:
-  std::map<std::string, std::vector<double>> arrays_;
-  std::map<std::string, std::string> texts_;
 };
 
 class Checkpointer {

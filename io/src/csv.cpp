@@ -1,4 +1,4 @@
-#include "wearscale/core/csv.hpp"
+#include "wearscale/io/csv.hpp"
 
 #include <cctype>
 #include <stdexcept>

@@ -19,9 +19,9 @@
 #include "h5_fixture.hpp"
 #include "input_error_of.hpp"
 #include "wearscale/core/atomic_file.hpp"
-#include "wearscale/core/checkpoint.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
+#include "wearscale/io/checkpoint.hpp"
 #include "scratch_dir.hpp"
 
 using namespace wearscale;

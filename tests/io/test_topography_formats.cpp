@@ -22,8 +22,8 @@
 
 #include <fmt/format.h>
 
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "scratch_dir.hpp"
 
 using namespace wearscale;

@@ -14,9 +14,9 @@
 
 #include <fmt/format.h>
 
-#include "wearscale/bem/topography_io.hpp"
 #include "wearscale/core/errors.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "xdmf_check.hpp"
 #include "scratch_dir.hpp"
 

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "wearscale/core/field.hpp"
-#include "wearscale/core/hdf5_file.hpp"
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 #include "xdmf_check.hpp"
 
 using namespace wearscale;

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "wearscale/core/config.hpp"
+#include "wearscale/io/config.hpp"
 
 using namespace wearscale;
 using ::testing::AllOf;

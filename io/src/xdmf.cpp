@@ -1,11 +1,11 @@
-#include "wearscale/core/xdmf.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "wearscale/core/atomic_file.hpp"
-#include "wearscale/core/hdf5_file.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale {
 
