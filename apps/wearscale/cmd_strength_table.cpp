@@ -12,7 +12,7 @@ Command add_strength_table(CLI::App& app) {
   return add_study_command(
       app, "strength-table", "strength-table",
       "Shear strengths sigma_max(p), sigma_dyn(p) of Si or SiO2 from the MD shear test of §9.3.1 (LAMMPS), written "
-      "as a strength table into the output folder. Identical inputs are read from the cache ($WEARSCALE_CACHE, else "
+      "as a strength table into the output folder. Identical inputs are read from the cache ($WEARSCALE_CACHE/lammps, else "
       "~/.cache/wearscale/lammps) instead of running lmp again.",
       "md.shear_velocity=\"10 m/s\"");
 }

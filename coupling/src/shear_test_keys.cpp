@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/core/cache_folder.hpp"
 #include "wearscale/md/result_cache.hpp"
 
 namespace wearscale::coupling {

@@ -26,6 +26,7 @@
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/cache_folder.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/worker_pool.hpp"
@@ -152,16 +153,6 @@ class JunctionRuns {
   std::map<std::string, std::shared_future<JunctionStrengthResult>> runs_;
 };
 
-fs::path default_cache_dir() {
-  if (const char* env = std::getenv("WEARSCALE_CACHE"); env != nullptr && *env != '\0')
-    return md::expand_home(env) / "dem";
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0')
-    return fs::path(xdg) / "wearscale" / "dem";
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
-    return fs::path(home) / ".cache" / "wearscale" / "dem";
-  return fs::temp_directory_path() / "wearscale-cache" / "dem";
-}
-
 // --- The backend --------------------------------------------------------------
 
 struct Interface {
@@ -261,7 +252,7 @@ class NanoDem final : public Scale {
     }
 
     cache_ = c.boolean_or("cache", true);
-    cache_dir_ = c.has("cache_dir") ? md::expand_home(c.string("cache_dir")) : default_cache_dir();
+    cache_dir_ = c.has("cache_dir") ? expand_home(c.string("cache_dir")) : cache_folder("dem");
     const long threads = std::max(1, omp_get_max_threads());
     jobs_ = static_cast<int>(c.integer_or("jobs", threads, Range::closed(1, 256)));
   }

@@ -17,23 +17,6 @@ namespace wearscale::md {
 
 namespace fs = std::filesystem;
 
-fs::path expand_home(const std::string& path) {
-  if (path == "~" || path.rfind("~/", 0) == 0) {
-    const char* home = std::getenv("HOME");
-    if (home != nullptr && *home != '\0') return fs::path(home) / path.substr(path.size() > 1 ? 2 : 1);
-  }
-  return path;
-}
-
-fs::path default_cache_dir() {
-  if (const char* env = std::getenv("WEARSCALE_CACHE"); env != nullptr && *env != '\0') return expand_home(env);
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0')
-    return fs::path(xdg) / "wearscale" / "lammps";
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
-    return fs::path(home) / ".cache" / "wearscale" / "lammps";
-  return fs::temp_directory_path() / "wearscale-cache" / "lammps";
-}
-
 std::string cache_key(const std::vector<std::string_view>& parts) {
   Sha256 h;
   h.field("wearscale-md-cache-v1");

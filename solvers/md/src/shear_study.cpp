@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/core/cache_folder.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/progress.hpp"
@@ -159,7 +160,7 @@ ShearStudy run_shear_study(const ShearTestSpec& spec) {
   ShearStudy study;
   study.spec = spec;
   study.lmp = find_lmp(spec.lmp);
-  const fs::path cache_dir = spec.cache_dir.empty() ? default_cache_dir() : spec.cache_dir;
+  const fs::path cache_dir = spec.cache_dir.empty() ? cache_folder("lammps") : spec.cache_dir;
   study.lammps_version = lammps_version(study.lmp, cache_dir);
   study.potential_source = find_potential_file(spec.potential);
   std::string potential_text = read_text_file(study.potential_source);

@@ -7,8 +7,8 @@
 // folder that is renamed to its key when it succeeded, so a failed or killed
 // run never leaves an entry.
 //
-// Location: $WEARSCALE_CACHE if set, else ~/.cache/wearscale/lammps
-// ($XDG_CACHE_HOME/wearscale/lammps when that is set).
+// Location: cache_folder("lammps") (core/cache_folder.hpp:
+// $WEARSCALE_CACHE/lammps, else ~/.cache/wearscale/lammps).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,10 +17,6 @@
 
 namespace wearscale::md {
 
-/// The default cache folder (see above).
-std::filesystem::path default_cache_dir();
-/// "~/x" → "$HOME/x"; other paths unchanged.
-std::filesystem::path expand_home(const std::string& path);
 
 /// SHA-256 of the parts, each length-prefixed: the cache key.
 std::string cache_key(const std::vector<std::string_view>& parts);

@@ -60,7 +60,7 @@ struct ShearTestSpec {
   std::string lmp;                   ///< lmp executable; empty = search PATH
   int ranks = 1;                     ///< MPI ranks (mpirun) when > 1
   bool use_cache = true;             ///< reuse results of identical inputs
-  std::filesystem::path cache_dir;   ///< empty = default_cache_dir()
+  std::filesystem::path cache_dir;   ///< empty = cache_folder("lammps")
 
   /// Cells of the lattice along x (= y) and z.
   long lateral_cells() const;
