@@ -74,7 +74,7 @@ inline void add_outer(SymTensor& w, const Vec3& d, const Vec3& f) {
 
 // Pairs gathered at a time: the batch's arrays (20 doubles a pair) stay in
 // the first-level cache.
-inline constexpr std::size_t batch_pairs = 64;
+inline constexpr std::size_t batch_pairs = 128;
 // The largest history a law may declare as its fixed stride.
 inline constexpr std::size_t max_fixed_history = 4;
 
