@@ -26,6 +26,14 @@
 #else
 #define WEARSCALE_PAIR_KERNEL
 #endif
+// The batch's lanes are independent (each pair its own history and outputs).
+#if defined(__clang__)
+#define WEARSCALE_INDEPENDENT_LANES _Pragma("clang loop vectorize(enable)")
+#elif defined(__GNUC__)
+#define WEARSCALE_INDEPENDENT_LANES _Pragma("GCC ivdep")
+#else
+#define WEARSCALE_INDEPENDENT_LANES
+#endif
 
 namespace wearscale::dem {
 
@@ -104,7 +112,7 @@ WEARSCALE_PAIR_KERNEL void batch_forces(const Law& law, Batch& b, std::size_t k0
   const std::size_t h = Stride > 0 ? Stride : stride;
   const double* before = history + h * k0;
   double* after = Stride > 0 ? b.history : history + h * k0;
-#pragma GCC ivdep
+WEARSCALE_INDEPENDENT_LANES
   for (std::size_t l = 0; l < m; ++l) {
     const PairState s{{b.dx[l], b.dy[l], b.dz[l]}, {b.vx[l], b.vy[l], b.vz[l]}, {b.wx[l], b.wy[l], b.wz[l]},
                       b.ri[l], b.rj[l], b.mi[l], b.mj[l]};
