@@ -1,7 +1,9 @@
 // DEM throughput on the reference work of bench/dem (README there): the
 // dense HCP block with the linear spring-dashpot law with history, and the
 // same block with the thesis' cohesive law. Reports particle-steps per
-// second (items/s) and per CPU-second, and the neighbour pairs.
+// CPU-second and per wall-second (and as items/s), the neighbour pairs, the
+// peak resident set (of the whole process so far: run one benchmark per
+// process for a size's own figure) and it per particle.
 //
 //   OMP_NUM_THREADS=1 build/bench/bench_dem --benchmark_filter=Hooke
 //   OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive build/bench/bench_dem --benchmark_filter=Hooke/20
@@ -9,6 +11,7 @@
 // cores shared with other jobs keeps a waiting thread from taking the core
 // the other one needs; docs/dem.md, Speed.)
 #include <benchmark/benchmark.h>
+#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <fstream>
@@ -32,13 +35,15 @@ double peak_rss_mib() {
   return 0.0;
 }
 
-void report(benchmark::State& state, const Simulation& sim, long steps, double cpu) {
+void report(benchmark::State& state, const Simulation& sim, long steps, double cpu, double wall) {
   const double work = static_cast<double>(sim.particles().size()) * static_cast<double>(steps);
   state.SetItemsProcessed(static_cast<std::int64_t>(work));
   state.counters["N"] = static_cast<double>(sim.particles().size());
   state.counters["pairs"] = static_cast<double>(sim.neighbor_list().pairs());
   state.counters["Mpsteps_per_cpu_s"] = work / cpu / 1e6;
+  state.counters["Mpsteps_per_wall_s"] = work / wall / 1e6;
   state.counters["peak_RSS_MiB"] = peak_rss_mib();
+  state.counters["peak_RSS_B_per_particle"] = peak_rss_mib() * 1048576.0 / static_cast<double>(sim.particles().size());
 }
 
 // Runs state.range(1) steps per iteration after a warm-up (first build,
@@ -46,15 +51,17 @@ void report(benchmark::State& state, const Simulation& sim, long steps, double c
 void time_steps(benchmark::State& state, Simulation& sim) {
   const long steps = state.range(1);
   sim.run(10);
-  double cpu = 0.0;
+  double cpu = 0.0, wall = 0.0;
   long done = 0;
   for (auto _ : state) {
     const double c0 = cpu_seconds();
+    const auto w0 = std::chrono::steady_clock::now();
     sim.run(steps);
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     cpu += cpu_seconds() - c0;
     done += steps;
   }
-  report(state, sim, done, cpu);
+  report(state, sim, done, cpu, wall);
 }
 
 // The deck's block: N = 4 n³, rebuild every 10 steps without a check.

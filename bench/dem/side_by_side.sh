@@ -5,7 +5,9 @@
 #   bench/dem/side_by_side.sh [build/bench/bench_dem] [rounds]
 # Skips an engine that is not installed, with a message. Prints the load
 # average beside each figure (on shared cores the CPU-time figures are the
-# ones to read).
+# ones to read), and wearscale's Hooke block on two threads (wall clock,
+# OMP_WAIT_POLICY=passive: waiting threads sleep, see docs/dem.md) against
+# one: that speed-up means something only on a quiet machine (load < 1).
 set -u
 bench=${1:-build/bench/bench_dem}
 rounds=${2:-2}
@@ -23,24 +25,33 @@ engine() {  # name n steps cmd...
   awk -v n=$((4 * n * n * n)) -v s="$steps" -v name="$name" -v load="$(load)" \
     '{ printf "%-28s %6.2f M particle-steps per CPU-second  (load %s)\n", name, n * s / $1 / 1e6, load }' "$work/time"
 }
-ours() {  # filter
-  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$1" 2>/dev/null |
-    awk -v load="$(load)" '/Mpsteps_per_cpu_s/ { for (i = 1; i <= NF; ++i) if ($i ~ /^Mpsteps_per_cpu_s=/) {
-      split($i, a, "="); printf "wearscale %-18s %6.2f M particle-steps per CPU-second  (load %s)\n", $1, a[2], load } }'
+ours() {  # filter [threads]: one line per benchmark, CPU- and wall-second figures and bytes per particle
+  OMP_NUM_THREADS=${2:-1} OMP_WAIT_POLICY=passive "$bench" --benchmark_filter="$1" 2>/dev/null |
+    awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = 0
+      for (i = 1; i <= NF; ++i) { split($i, a, "=")
+        if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
+        if (a[1] == "peak_RSS_B_per_particle") b = a[2] }
+      printf "wearscale %-18s %dT %6.2f M particle-steps per CPU-second, %6.2f per wall-second, %4.0f B/particle  (load %s)\n",
+        $1, t, c, w, b, load }'
 }
 for r in $(seq "$rounds"); do
   echo "== round $r"
   for size in "20 1000 Hooke/20|Cohesive/20" "40 500 Hooke/40|Cohesive/40"; do
     set -- $size
     ours "$3"
+    ours "Hooke/$1" 2
     engine "LAMMPS gran/hooke/history n=$1" "$1" "$2" lmp -in "$decks/in.dem_anchor.lammps" -var n "$1" -var nsteps "$2" -var model hooke
     engine "LIGGGHTS hooke/history n=$1" "$1" "$2" liggghts -in "$decks/in.dem_anchor.liggghts" -var n "$1" -var nsteps "$2"
   done
 done | tee "$work/all"
-echo "== ratios (wearscale Hooke / engine, per round)"
+echo "== ratios (per round; wearscale one thread against the engine's CPU-time figure)"
 awk 'function v() { match($0, /[0-9.]+ M particle/); return substr($0, RSTART, RLENGTH - 11) + 0 }
-     /^wearscale Hooke\/20/ { w20 = v() } /^wearscale Hooke\/40/ { w40 = v() }
-     /^LAMMPS.*n=20.*M particle/ { printf "32 000:  wearscale / LAMMPS   = %.2f\n", w20 / v() }
-     /^LAMMPS.*n=40.*M particle/ { printf "256 000: wearscale / LAMMPS   = %.2f\n", w40 / v() }
-     /^LIGGGHTS.*n=20.*M particle/ { printf "32 000:  wearscale / LIGGGHTS = %.2f\n", w20 / v() }
-     /^LIGGGHTS.*n=40.*M particle/ { printf "256 000: wearscale / LIGGGHTS = %.2f\n", w40 / v() }' "$work/all"
+     function wall() { match($0, /[0-9.]+ per wall/); return substr($0, RSTART, RLENGTH - 9) + 0 }
+     /^wearscale Hooke\/20.* 1T/ { w20 = v(); s20 = wall() } /^wearscale Hooke\/40.* 1T/ { w40 = v(); s40 = wall() }
+     /^wearscale Cohesive\/20.* 1T/ { c20 = v() } /^wearscale Cohesive\/40.* 1T/ { c40 = v() }
+     /^wearscale Hooke\/20.* 2T/ { printf "32 000:  2 threads / 1 thread (wall)   = %.2f\n", wall() / s20 }
+     /^wearscale Hooke\/40.* 2T/ { printf "256 000: 2 threads / 1 thread (wall)   = %.2f\n", wall() / s40 }
+     /^LAMMPS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w20 / v(), c20 / v() }
+     /^LAMMPS.*n=40.*M particle/ { printf "256 000: wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w40 / v(), c40 / v() }
+     /^LIGGGHTS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LIGGGHTS  = %.2f\n", w20 / v() }
+     /^LIGGGHTS.*n=40.*M particle/ { printf "256 000: wearscale Hooke / LIGGGHTS  = %.2f\n", w40 / v() }' "$work/all"

@@ -172,74 +172,142 @@ void CohesiveLaw::prepare(const Particles& p, const NeighborList& list) {
   const auto& off = list.offsets();
   const auto& nb = list.neighbors();
   const std::size_t n = p.size();
-  pairs_.resize(list.pairs());
+  uniform_ = true;
+  for (std::size_t i = 1; i < n && uniform_; ++i)
+    uniform_ = p.material[i] == p.material[0] && p.radius[i] == p.radius[0] && p.mass[i] == p.mass[0];
+  if (uniform_) {
+    // cohesive_pair() of the same inputs: the bits every pair would get.
+    if (n > 0) uniform_pair_ = pair(p, 0, 0);
+    for (auto* v : {&k_n_, &k_t_, &delta_e_, &delta_f_, &f_mt_, &c_n_, &c_t_}) std::vector<double>().swap(*v);
+    return;
+  }
+  for (auto* v : {&k_n_, &k_t_, &delta_e_, &delta_f_, &f_mt_, &c_n_, &c_t_}) v->resize(list.pairs());
 #pragma omp parallel for schedule(static) if (n >= 4096)
   for (std::size_t i = 0; i < n; ++i)
-    for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) pairs_[k] = pair(p, i, nb[k]);
+    for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) {
+      const CohesivePair q = pair(p, i, nb[k]);
+      k_n_[k] = q.k_n;
+      k_t_[k] = q.k_t;
+      delta_e_[k] = q.delta_e;
+      delta_f_[k] = q.delta_f;
+      f_mt_[k] = q.f_mt;
+      c_n_[k] = q.c_n;
+      c_t_[k] = q.c_t;
+    }
 }
 
-// The cohesive force of §6.1: (6.2)-(6.5).
-inline PairForce CohesiveLaw::contact(std::size_t k, const PairState& s, double* hist, double dt,
-                                      bool advance) const {
-  const CohesivePair& p = pairs_[k];
-  PairForce out{};
-  const double r2 = dot(s.d, s.d);
-  const double contact = s.ri + s.rj;
-  const double range = cohesion ? contact + p.delta_f : contact;
-  if (r2 >= range * range) {
-    hist[0] = hist[1] = hist[2] = 0.0;
-    out.active = false;
-    return out;
-  }
-  const double r = std::sqrt(r2);
-  const Vec3 n = s.d * (1.0 / r);
-  const double delta_n = r - contact;
-  const double f_n = cohesion ? normal_force(p, delta_n) : p.k_n * std::min(delta_n, 0.0);
-  const Vec3 vrel = s.vi - s.vj + cross(s.ri * s.wi + s.rj * s.wj, n);
-  const double v_n = dot(vrel, n);
-  out.force = (f_n - p.c_n * v_n) * n;  // (6.2), normal part; positive f_n pulls i toward j
-  if (tangential && p.k_t > 0.0) {
+CohesivePair CohesiveLaw::listed_pair(std::size_t k) const {
+  if (uniform_) return uniform_pair_;
+  return {k_n_[k], k_t_[k], delta_e_[k], delta_f_[k], f_mt_[k], c_n_[k], c_t_[k]};
+}
+
+namespace {
+
+// The law's pair force for one loop, with its switches and the layout of its
+// parameters fixed (dispatched once per force evaluation, not per pair), and
+// everything it reads held by value or as plain arrays, so that the
+// vectorised loop loads nothing it could not hoist.
+template <bool Uniform, bool Cohesion, bool Tangential>
+struct CohesiveKernel {
+  static constexpr int history_doubles = CohesiveLaw::history_doubles;
+  CohesivePair uniform;  // Uniform: every pair's parameters
+  const double *k_n, *k_t, *delta_e, *delta_f, *f_mt, *c_n, *c_t;  // else per listed pair
+
+  // The cohesive force of §6.1: (6.2)-(6.5). Straight-line arithmetic for the
+  // vectorised pair loop: every branch of (6.3) and of the cap is computed and
+  // the one that applies selected, the same bits as branching.
+  PairForce contact(std::size_t k, const PairState& s, const double* hist, double* updated, double dt,
+                    bool advance) const {
+    const CohesivePair p =
+        Uniform ? uniform : CohesivePair{k_n[k], k_t[k], delta_e[k], delta_f[k], f_mt[k], c_n[k], c_t[k]};
+    PairForce out;
+    const double r2 = dot(s.d, s.d);
+    const double contact = s.ri + s.rj;
+    const double cohesive_range = contact + p.delta_f;
+    const double range = Cohesion ? cohesive_range : contact;
+    const bool in_range = !(r2 >= range * range);
+    const double r = std::sqrt(r2);
+    const Vec3 n = s.d * (1.0 / r);
+    const double delta_n = r - contact;
+    // (6.3): Hookean to δ_e, linear softening to δ_f, nothing beyond.
+    const double softening = -p.k_n * p.delta_e / (p.delta_f - p.delta_e) * (delta_n - p.delta_f);
+    const double hookean = p.k_n * delta_n;
+    const double cohesive_f_n = delta_n <= p.delta_e ? hookean : (delta_n <= p.delta_f ? softening : 0.0);
+    const double repulsive_f_n = p.k_n * std::min(delta_n, 0.0);
+    const double f_n = Cohesion ? cohesive_f_n : repulsive_f_n;
+    const Vec3 vrel = s.v + cross(s.w, n);
+    const double v_n = dot(vrel, n);
+    const Vec3 f_normal = (f_n - p.c_n * v_n) * n;  // (6.2), normal part; positive f_n pulls i toward j
     // The sliding distance integrates the contact's tangential velocity and
     // is turned into the current tangent plane; the total tangential force,
     // spring and damping, is capped by F'_m,T (6.4)-(6.5), the spring
     // stretched back to match, as in the thesis' LAMMPS pair style
     // gran/cohesive/history (built on gran/hooke/history).
+    const bool with_tangential = Tangential && p.k_t > 0.0;
     const Vec3 v_t = vrel - v_n * n;
     Vec3 xi{hist[0], hist[1], hist[2]};
     if (advance) xi += v_t * dt;
     const bool sliding = dot(xi, xi) != 0.0;
     if (advance) xi -= dot(xi, n) * n;
     Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
-    const double cap = tangential_cap(p, delta_n);  // (6.4)-(6.5)
+    const double cap = std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.4)-(6.5)
     const double f2 = dot(f_t, f_t);
-    if (f2 > cap * cap) {
-      if (sliding) {
-        const double ratio = cap / std::sqrt(f2);
-        const Vec3 lag = v_t * (p.c_t / p.k_t);
-        xi = ratio * (xi + lag) - lag;
-        f_t *= ratio;
-      } else {
-        f_t = {};
-      }
-    }
-    if (advance) {
-      hist[0] = xi.x;
-      hist[1] = xi.y;
-      hist[2] = xi.z;
-    }
-    out.force += f_t;
-    out.tangential = f_t;
+    const bool capped = f2 > cap * cap;
+    const double ratio = cap / std::sqrt(f2);
+    const Vec3 lag = v_t * (p.c_t / p.k_t);
+    const Vec3 stretched = ratio * (xi + lag) - lag;
+    const Vec3 scaled = f_t * ratio;
+    const bool rescale = capped && sliding, drop = capped && !sliding;
+    xi.x = rescale ? stretched.x : xi.x;
+    xi.y = rescale ? stretched.y : xi.y;
+    xi.z = rescale ? stretched.z : xi.z;
+    f_t.x = drop ? 0.0 : (rescale ? scaled.x : f_t.x);
+    f_t.y = drop ? 0.0 : (rescale ? scaled.y : f_t.y);
+    f_t.z = drop ? 0.0 : (rescale ? scaled.z : f_t.z);
+    // Out of reach: no force, the history cleared; the history moves only in
+    // the step's evaluation.
+    const bool store = with_tangential && advance;
+    updated[0] = select(in_range, select(store, xi.x, hist[0]), 0.0);
+    updated[1] = select(in_range, select(store, xi.y, hist[1]), 0.0);
+    updated[2] = select(in_range, select(store, xi.z, hist[2]), 0.0);
+    const Vec3 total = f_normal + f_t;
+    out.force.x = with_tangential ? total.x : f_normal.x;
+    out.force.y = with_tangential ? total.y : f_normal.y;
+    out.force.z = with_tangential ? total.z : f_normal.z;
+    out.tangential.x = with_tangential ? f_t.x : 0.0;
+    out.tangential.y = with_tangential ? f_t.y : 0.0;
+    out.tangential.z = with_tangential ? f_t.z : 0.0;
+    out.normal = {n.x, n.y, n.z};
+    out.active = in_range;
+    return out;
   }
-  out.normal = n;
-  out.active = true;
-  return out;
-}
+};
 
-void CohesiveLaw::add_pair_forces(PairLoop& loop) const { run_pair_loop(*this, loop); }
+template <bool Cohesion, bool Tangential>
+void run_cohesive_loop(bool uniform, const CohesivePair& u, const double* const* a, PairLoop& loop) {
+  if (uniform)
+    run_pair_loop(CohesiveKernel<true, Cohesion, Tangential>{u, a[0], a[1], a[2], a[3], a[4], a[5], a[6]}, loop);
+  else
+    run_pair_loop(CohesiveKernel<false, Cohesion, Tangential>{u, a[0], a[1], a[2], a[3], a[4], a[5], a[6]}, loop);
+}
+}  // namespace
+
+void CohesiveLaw::add_pair_forces(PairLoop& loop) const {
+  const double* const arrays[] = {k_n_.data(),  k_t_.data(), delta_e_.data(), delta_f_.data(),
+                                  f_mt_.data(), c_n_.data(), c_t_.data()};
+  if (cohesion && tangential)
+    run_cohesive_loop<true, true>(uniform_, uniform_pair_, arrays, loop);
+  else if (cohesion)
+    run_cohesive_loop<true, false>(uniform_, uniform_pair_, arrays, loop);
+  else if (tangential)
+    run_cohesive_loop<false, true>(uniform_, uniform_pair_, arrays, loop);
+  else
+    run_cohesive_loop<false, false>(uniform_, uniform_pair_, arrays, loop);
+}
 
 void CohesiveLaw::add_pair_energy(const Particles&, std::size_t, std::size_t, std::size_t k, double delta,
                                   const double* h, double& e) const {
-  const auto& pp = pairs_[k];
+  const CohesivePair pp = listed_pair(k);
   if (cohesion) {
     e += normal_energy(pp, delta);
   } else if (delta < 0.0) {

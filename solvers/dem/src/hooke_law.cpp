@@ -12,25 +12,25 @@
 namespace wearscale::dem {
 
 // LAMMPS pair gran/hooke/history, term by term (so that the benchmark does
-// the same work and the same arithmetic as the reference decks).
-inline PairForce HookeLaw::contact(std::size_t, const PairState& s, double* hist, double dt, bool advance) const {
-  PairForce out{};
+// the same work and the same arithmetic as the reference decks). Written as
+// straight-line arithmetic for the vectorised pair loop: both sides of each
+// branch of LAMMPS are computed and the taken one selected, which gives the
+// same bits as branching (no operation is reordered or fused).
+inline PairForce HookeLaw::contact(std::size_t, const PairState& s, const double* hist, double* updated, double dt,
+                                   bool advance) const {
+  PairForce out;
   const double r2 = dot(s.d, s.d);
   const double radsum = s.ri + s.rj;
-  if (r2 >= radsum * radsum) {
-    hist[0] = hist[1] = hist[2] = 0.0;
-    out.active = false;
-    return out;
-  }
+  const bool touching = !(r2 >= radsum * radsum);
   const Vec3 del = -s.d;  // x_i − x_j
   const double r = std::sqrt(r2);
   const double rinv = 1.0 / r;
   const double rsqinv = rinv * rinv;
-  const Vec3 vr = s.vi - s.vj;
+  const Vec3 vr = s.v;
   const double vnnr = dot(vr, del);
   const Vec3 vn = del * (vnnr * rsqinv);
   const Vec3 vt = vr - vn;
-  const Vec3 wr = (s.ri * s.wi + s.rj * s.wj) * rinv;
+  const Vec3 wr = s.w * rinv;
   const double meff = s.mi * s.mj / (s.mi + s.mj);
   const double damp = meff * gamma_n * vnnr * rsqinv;
   const double ccel = k_n * (radsum - r) * rinv - damp;
@@ -43,23 +43,28 @@ inline PairForce HookeLaw::contact(std::size_t, const PairState& s, double* hist
   Vec3 fs = -(k_t * shear + damp_t * vtr);
   const double fs2 = dot(fs, fs);
   const double fn = friction * std::fabs(ccel * r);
-  if (fs2 > fn * fn) {  // Coulomb cap; square roots only when it bites
-    if (sheared) {
-      const double ratio = fn / std::sqrt(fs2);
-      const Vec3 dv = vtr * (damp_t / k_t);
-      shear = ratio * (shear + dv) - dv;
-      fs *= ratio;
-    } else {
-      fs = {};
-    }
-  }
-  hist[0] = shear.x;
-  hist[1] = shear.y;
-  hist[2] = shear.z;
+  // Coulomb cap: above it the force is scaled to the cap and the spring
+  // stretched back to match (none of this is used when it does not bite).
+  const bool capped = fs2 > fn * fn;
+  const double ratio = fn / std::sqrt(fs2);
+  const Vec3 dv = vtr * (damp_t / k_t);
+  const Vec3 stretched = ratio * (shear + dv) - dv;
+  const Vec3 scaled = fs * ratio;
+  const bool rescale = capped && sheared, drop = capped && !sheared;
+  shear.x = rescale ? stretched.x : shear.x;
+  shear.y = rescale ? stretched.y : shear.y;
+  shear.z = rescale ? stretched.z : shear.z;
+  fs.x = drop ? 0.0 : (rescale ? scaled.x : fs.x);
+  fs.y = drop ? 0.0 : (rescale ? scaled.y : fs.y);
+  fs.z = drop ? 0.0 : (rescale ? scaled.z : fs.z);
+  // A pair out of contact has no force and forgets its history.
+  updated[0] = touching ? shear.x : 0.0;
+  updated[1] = touching ? shear.y : 0.0;
+  updated[2] = touching ? shear.z : 0.0;
   out.force = del * ccel + fs;
   out.tangential = fs;
   out.normal = s.d * rinv;
-  out.active = true;
+  out.active = touching;
   return out;
 }
 

@@ -105,13 +105,20 @@ class CohesiveLaw final : public ContactLaw {
   void add_pair_energy(const Particles& p, std::size_t i, std::size_t j, std::size_t k, double delta,
                      const double* history, double& energy) const override;
 
-  /// The pair force (6.2)-(6.5) of listed pair k (pair_loop.hpp inlines it).
-  PairForce contact(std::size_t k, const PairState& s, double* hist, double dt, bool advance) const;
-
+  /// History doubles a pair keeps (the pair loop's fixed stride).
+  static constexpr int history_doubles = 3;
+  int history_size() const override { return history_doubles; }
  private:
+  CohesivePair listed_pair(std::size_t k) const;
+
   std::vector<CohesiveMaterial> materials_;
   std::vector<CohesiveMaterial> mixed_;
-  std::vector<CohesivePair> pairs_;  // per listed pair, from prepare()
+  // The listed pairs' parameters from prepare(): one set when every particle
+  // has the same material, radius and mass, else one per listed pair as
+  // structure of arrays (the vectorised pair loop reads them contiguously).
+  bool uniform_ = false;
+  CohesivePair uniform_pair_;
+  std::vector<double> k_n_, k_t_, delta_e_, delta_f_, f_mt_, c_n_, c_t_;
 };
 
 }  // namespace wearscale::dem

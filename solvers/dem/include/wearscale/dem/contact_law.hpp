@@ -7,7 +7,9 @@
 // The pair loop is not a virtual call per pair: add_pair_forces() is called
 // once per force evaluation and runs pair_loop.hpp's loop instantiated on
 // the concrete law, whose pair force the compiler inlines.
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,15 +25,31 @@ class NeighborList;
 struct PairLoop;
 
 /// What a law sees of one pair: i, its neighbour j (at the image in the
-/// list) and their kinematics.
+/// list) and their kinematics. The pair loop gathers these for a batch of
+/// pairs and calls the law's
+///   PairForce contact(k, state, const double* history, double* updated, dt, advance)
+/// on each lane of a vectorised loop (history: the pair's doubles before the
+/// step, updated: where to write them, every one of them). A contact() should
+/// be straight-line arithmetic: every value computed, the one that applies
+/// selected (`c ? a : b`), no early return — which is what lets the
+/// compiler vectorise it, with the same bits as branching.
 struct PairState {
   Vec3 d;  ///< x_j − x_i (the listed image of j)
-  Vec3 vi, vj, wi, wj;
+  Vec3 v;  ///< v_i − v_j
+  Vec3 w;  ///< r_i ω_i + r_j ω_j
   double ri, rj, mi, mj;
 };
 
 /// What a law returns for one pair: the force on i (j gets its opposite) and
 /// its tangential part, which makes the torques r_i n × F_T and r_j n × F_T.
+/// c ? a : b as a blend of bits, never as a branch: a select that feeds a
+/// store stays a select (the compiler turns nested `?:` into branches around
+/// the store, which stops the vectoriser). Exact: one of a, b, bit for bit.
+inline double select(bool c, double a, double b) {
+  const std::uint64_t mask = std::uint64_t{0} - static_cast<std::uint64_t>(c);
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
 struct PairForce {
   Vec3 force;
   Vec3 tangential;

@@ -29,8 +29,12 @@ class HookeLaw final : public ContactLaw {
   void add_pair_energy(const Particles& p, std::size_t i, std::size_t j, std::size_t k, double delta,
                      const double* history, double& energy) const override;
 
+  /// History doubles a pair keeps (the pair loop's fixed stride).
+  static constexpr int history_doubles = 3;
+  int history_size() const override { return history_doubles; }
   /// The pair force (pair_loop.hpp inlines it).
-  PairForce contact(std::size_t k, const PairState& s, double* hist, double dt, bool advance) const;
+  PairForce contact(std::size_t k, const PairState& s, const double* history, double* updated, double dt,
+                    bool advance) const;
 };
 
 }  // namespace wearscale::dem

@@ -3,7 +3,9 @@
 // law (in the law's own .cpp, from its add_pair_forces()), so that the law's
 // pair force is inlined into a tight loop: no virtual call, no variant visit
 // and no bounds check per pair. Simulation fills a PairLoop once per force
-// evaluation.
+// evaluation. The pairs go through in batches: their kinematics gathered as
+// structure of arrays, the law's force over the batch in one vectorised
+// loop, then the sums in list order (the same bits as one pair at a time).
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -14,6 +16,24 @@
 
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/vec3.hpp"
+
+// The batch kernel is also compiled for AVX-512 and AVX2 and picked at load
+// time by the CPU (GCC's target_clones; the library's baseline is x86-64-v2).
+// With -ffp-contract=off (solvers/dem/CMakeLists.txt) no multiply-add is
+// fused, so every lane computes the baseline's bits.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define WEARSCALE_PAIR_KERNEL __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define WEARSCALE_PAIR_KERNEL
+#endif
+// The batch's lanes are independent (each pair its own history and outputs).
+#if defined(__clang__)
+#define WEARSCALE_INDEPENDENT_LANES _Pragma("clang loop vectorize(enable)")
+#elif defined(__GNUC__)
+#define WEARSCALE_INDEPENDENT_LANES _Pragma("GCC ivdep")
+#else
+#define WEARSCALE_INDEPENDENT_LANES
+#endif
 
 namespace wearscale::dem {
 
@@ -60,10 +80,64 @@ inline void add_outer(SymTensor& w, const Vec3& d, const Vec3& f) {
   w[5] += 0.25 * (d.y * f.z + d.z * f.y);
 }
 
-// `law.contact(k, state, history, dt, advance)` is the law's pair force.
-template <class Law, bool Virial>
-void pair_loop(const Law& law, PairLoop& a) {
-  const std::size_t n = a.n;
+// Pairs gathered at a time: the batch's arrays (20 doubles a pair) stay in
+// the first-level cache.
+inline constexpr std::size_t batch_pairs = 128;
+// The largest history a law may declare as its fixed stride.
+inline constexpr std::size_t max_fixed_history = 4;
+
+// One batch of consecutive pairs of the list as structure of arrays: the
+// gathered kinematics (PairState), and the force on i and the torque arm
+// n × F_T the law's vectorised loop writes.
+struct alignas(64) Batch {
+  double dx[batch_pairs], dy[batch_pairs], dz[batch_pairs];
+  double vx[batch_pairs], vy[batch_pairs], vz[batch_pairs];
+  double wx[batch_pairs], wy[batch_pairs], wz[batch_pairs];
+  double ri[batch_pairs], rj[batch_pairs], mi[batch_pairs], mj[batch_pairs];
+  double fx[batch_pairs], fy[batch_pairs], fz[batch_pairs];
+  double ax[batch_pairs], ay[batch_pairs], az[batch_pairs];
+  std::uint8_t active[batch_pairs];
+  double history[batch_pairs * max_fixed_history];  // the updated histories (fixed strides)
+};
+
+// The law on `m` gathered pairs from list pair k0 on, one lane a pair.
+// `Stride` doubles of history a pair: the law reads a pair's history from
+// the list and writes the updated one into the batch, copied back after the
+// loop (distinct arrays: every store is unconditional, which vectorises).
+// Stride 0: the list's runtime history_size, updated in place.
+template <class Law, std::size_t Stride, bool Advance>
+WEARSCALE_PAIR_KERNEL void batch_forces(const Law& law, Batch& b, std::size_t k0, std::size_t m, double* history,
+                                        std::size_t stride, double dt) {
+  static_assert(Stride <= max_fixed_history);
+  const std::size_t h = Stride > 0 ? Stride : stride;
+  const double* before = history + h * k0;
+  double* after = Stride > 0 ? b.history : history + h * k0;
+WEARSCALE_INDEPENDENT_LANES
+  for (std::size_t l = 0; l < m; ++l) {
+    const PairState s{{b.dx[l], b.dy[l], b.dz[l]}, {b.vx[l], b.vy[l], b.vz[l]}, {b.wx[l], b.wy[l], b.wz[l]},
+                      b.ri[l], b.rj[l], b.mi[l], b.mj[l]};
+    const PairForce pf = law.contact(k0 + l, s, before + h * l, after + h * l, dt, Advance);
+    const Vec3 arm = cross(pf.normal, pf.tangential);
+    b.fx[l] = pf.force.x;
+    b.fy[l] = pf.force.y;
+    b.fz[l] = pf.force.z;
+    b.ax[l] = arm.x;
+    b.ay[l] = arm.y;
+    b.az[l] = arm.z;
+    b.active[l] = pf.active ? 1 : 0;
+  }
+  if constexpr (Stride > 0) std::copy_n(b.history, Stride * m, history + Stride * k0);
+}
+
+// Rows [ib, ie) of the half list, batch by batch: the pairs' kinematics
+// gathered into a Batch, the law's forces in one vectorised loop over it,
+// then the sums in list order — the force on i summed locally and the
+// opposite force scattered to each j, as a row-by-row loop would, so the
+// sums are the same bits as one pair at a time.
+template <class Law, bool Virial, std::size_t Stride, bool Advance>
+void pair_rows(const Law& law, const PairLoop& a, std::size_t ib, std::size_t ie, Vec3* f, Vec3* tq,
+               SymTensor* vir) {
+  if (ib >= ie) return;
   const std::uint32_t* off = a.offset;
   const std::uint32_t* nb = a.neighbor;
   const std::uint8_t* sh = a.image;
@@ -74,44 +148,72 @@ void pair_loop(const Law& law, PairLoop& a) {
   const double* rad = a.radius;
   const double* mass = a.mass;
   const std::size_t stride = static_cast<std::size_t>(a.history_size);
-  const double dt = a.dt;
-  const bool advance = a.advance;
-
-  // One row of the half list: i's pairs, the force on i summed locally and
-  // the opposite force scattered to each j (j ≥ i).
-  auto row = [&](std::size_t i, Vec3* f, Vec3* tq, SymTensor* vir) {
-    PairState s;
-    s.vi = v[i];
-    s.wi = w[i];
-    s.ri = rad[i];
-    s.mi = mass[i];
-    const Vec3 xi = x[i];
-    Vec3 fi{}, ti{};
-    for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) {
-      const std::uint32_t j = nb[k];
-      s.d = x[j] + shift[sh[k]] - xi;
-      s.vj = v[j];
-      s.wj = w[j];
-      s.rj = rad[j];
-      s.mj = mass[j];
-      const PairForce pf = law.contact(k, s, a.history + stride * k, dt, advance);
-      if (!pf.active) continue;
-      fi += pf.force;
-      f[j] -= pf.force;
-      const Vec3 arm = cross(pf.normal, pf.tangential);
-      ti += s.ri * arm;
-      tq[j] += s.rj * arm;
-      if constexpr (Virial) {
-        add_outer(vir[i], s.d, pf.force);
-        add_outer(vir[j], s.d, pf.force);
+  Batch b;
+  std::size_t gather_row = ib, sum_row = ib;
+  Vec3 fi{}, ti{};
+  const std::size_t k_end = off[ie];
+  for (std::size_t k0 = off[ib];; k0 += batch_pairs) {
+    const std::size_t k1 = std::min(k_end, k0 + batch_pairs);
+    for (std::size_t k = k0; k < k1;) {
+      while (off[gather_row + 1] <= k) ++gather_row;
+      const std::size_t i = gather_row, end = std::min<std::size_t>(off[i + 1], k1);
+      const Vec3 xi = x[i], vi = v[i], wi = w[i];
+      const double ri = rad[i], mi = mass[i];
+      for (; k < end; ++k) {
+        const std::size_t l = k - k0, j = nb[k];
+        const Vec3 d = x[j] + shift[sh[k]] - xi;
+        const Vec3 vr = vi - v[j];
+        const Vec3 ws = ri * wi + rad[j] * w[j];
+        b.dx[l] = d.x, b.dy[l] = d.y, b.dz[l] = d.z;
+        b.vx[l] = vr.x, b.vy[l] = vr.y, b.vz[l] = vr.z;
+        b.wx[l] = ws.x, b.wy[l] = ws.y, b.wz[l] = ws.z;
+        b.ri[l] = ri, b.rj[l] = rad[j], b.mi[l] = mi, b.mj[l] = mass[j];
       }
     }
-    f[i] += fi;
-    tq[i] += ti;
+    batch_forces<Law, Stride, Advance>(law, b, k0, k1 - k0, a.history, stride, a.dt);
+    for (std::size_t k = k0; k < k1;) {
+      while (off[sum_row + 1] <= k) {  // rows ended (or empty): their own sums
+        f[sum_row] += fi;
+        tq[sum_row] += ti;
+        fi = ti = Vec3{};
+        ++sum_row;
+      }
+      const std::size_t i = sum_row, end = std::min<std::size_t>(off[i + 1], k1);
+      const double ri = rad[i];
+      for (; k < end; ++k) {
+        const std::size_t l = k - k0;
+        if (b.active[l] == 0) continue;
+        const std::size_t j = nb[k];
+        const Vec3 force{b.fx[l], b.fy[l], b.fz[l]}, arm{b.ax[l], b.ay[l], b.az[l]};
+        fi += force;
+        f[j] -= force;
+        ti += ri * arm;
+        tq[j] += b.rj[l] * arm;
+        if constexpr (Virial) {
+          const Vec3 d{b.dx[l], b.dy[l], b.dz[l]};
+          add_outer(vir[i], d, force);
+          add_outer(vir[j], d, force);
+        }
+      }
+    }
+    if (k1 == k_end) break;
+  }
+  for (; sum_row < ie; ++sum_row) {
+    f[sum_row] += fi;
+    tq[sum_row] += ti;
+    fi = ti = Vec3{};
+  }
+}
+
+template <class Law, bool Virial, std::size_t Stride, bool Advance>
+void pair_loop(const Law& law, PairLoop& a) {
+  const std::size_t n = a.n;
+  auto rows = [&](std::size_t ib, std::size_t ie, Vec3* f, Vec3* tq, SymTensor* vir) {
+    pair_rows<Law, Virial, Stride, Advance>(law, a, ib, ie, f, tq, vir);
   };
 
   if (a.threads <= 1) {
-    for (std::size_t i = 0; i < n; ++i) row(i, a.force, a.torque, a.virial);
+    rows(0, n, a.force, a.torque, a.virial);
     return;
   }
   if (a.block > 0) {
@@ -130,13 +232,14 @@ void pair_loop(const Law& law, PairLoop& a) {
 #pragma omp for schedule(static)
       for (std::size_t c = 0; c < count; ++c) {
         const std::size_t begin = (colour + 2 * c) * block, end = std::min(n, begin + block);
-        for (std::size_t i = begin; i < end; ++i) row(i, a.force, a.torque, a.virial);
+        rows(begin, end, a.force, a.torque, a.virial);
       }
     }
     return;
   }
   // A list whose pairs reach far in index (an unordered sample): per-thread
-  // buffers, then a reduction.
+  // buffers, then a reduction. Rows in chunks of 512, dealt round-robin.
+  constexpr std::size_t chunk = 512;
 #pragma omp parallel num_threads(a.threads)
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
@@ -149,8 +252,8 @@ void pair_loop(const Law& law, PairLoop& a) {
       std::fill_n(tq, n, Vec3{});
       if constexpr (Virial) std::fill_n(vir, n, SymTensor{});
     }
-#pragma omp for schedule(static, 512)
-    for (std::size_t i = 0; i < n; ++i) row(i, f, tq, vir);
+#pragma omp for schedule(static, 1)
+    for (std::size_t c = 0; c < (n + chunk - 1) / chunk; ++c) rows(c * chunk, std::min(n, (c + 1) * chunk), f, tq, vir);
   }
   const auto threads = static_cast<std::size_t>(a.threads);
 #pragma omp parallel for schedule(static) num_threads(a.threads)
@@ -161,6 +264,27 @@ void pair_loop(const Law& law, PairLoop& a) {
       if constexpr (Virial)
         for (std::size_t c = 0; c < 6; ++c) a.virial[i][c] += (*a.thread_virial)[t][i][c];
     }
+}
+
+template <class Law, bool Virial, std::size_t Stride>
+void pair_loop(const Law& law, PairLoop& a) {
+  if (a.advance)
+    pair_loop<Law, Virial, Stride, true>(law, a);
+  else
+    pair_loop<Law, Virial, Stride, false>(law, a);
+}
+
+// A law that states its history size (`static constexpr int
+// history_doubles`) gets a loop with that fixed stride, which vectorises;
+// otherwise the list's runtime stride.
+template <class Law, bool Virial>
+void pair_loop(const Law& law, PairLoop& a) {
+  if constexpr (requires { Law::history_doubles; }) {
+    static_assert(Law::history_doubles > 0 && Law::history_doubles <= static_cast<int>(max_fixed_history));
+    pair_loop<Law, Virial, static_cast<std::size_t>(Law::history_doubles)>(law, a);
+  } else {
+    pair_loop<Law, Virial, 0>(law, a);
+  }
 }
 
 }  // namespace detail
