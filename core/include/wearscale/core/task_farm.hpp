@@ -16,6 +16,7 @@
 // ends it too (the launcher's doing), so no rank waits forever.
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,11 +54,11 @@ FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)
 
 /// Some tasks of an ensemble failed (each marked in its table); thrown on
 /// every rank together once the ensemble's outputs are written, so the job
-/// ends with status 1 without an abort. `speaks` on rank 0 only.
-class TasksFailed : public NumericalError {
+/// ends with status 1 (exit_numerical_failure) without an abort. `speaks` on
+/// rank 0 only, whose message says which tasks failed and why.
+class TasksFailed : public std::runtime_error {
  public:
-  TasksFailed(const std::string& what, const std::string& detail, bool speaks)
-      : NumericalError(what, 0, "tasks", detail), speaks_(speaks) {}
+  TasksFailed(const std::string& message, bool speaks) : std::runtime_error(message), speaks_(speaks) {}
   bool speaks() const { return speaks_; }
 
  private:
