@@ -182,7 +182,6 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
 }  // namespace
 
 FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task, const FarmOptions& options) {
-  const auto start = clock::now();
   if (world_size() == 1 || !built_with_mpi()) {
     std::vector<TaskResult> results(count);
     Progress progress(options.label, static_cast<double>(count), "tasks");
@@ -196,6 +195,7 @@ FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)
     return count_outcome(std::move(results));
   }
 #ifdef WEARSCALE_MPI
+  const auto start = clock::now();
   FarmOutcome out;
   if (world_rank() == 0) {
     out = count_outcome(dispatch(count, task, options));
