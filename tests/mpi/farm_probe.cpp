@@ -7,7 +7,7 @@
 //                            the others done; every rank learns the failed
 //                            count; a task sees one rank (mpi::Alone); with
 //                            more tasks than ranks several ranks take part.
-//   farm_probe overhead COUNT   COUNT empty tasks: prints the farm's cost per task.
+//   farm_probe overhead COUNT [MS]   COUNT tasks sleeping MS ms: the farm's cost per task.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -79,13 +79,21 @@ int main(int argc, char** argv) {
     return failures == 0 ? 0 : 1;
   }
   if (mode == "overhead") {
+    // Each task sleeps MS ms (argument 3, default 0): over P ranks the ideal wall time is COUNT·MS/P.
+    const int ms = argc > 3 ? std::atoi(argv[3]) : 0;
     const auto start = std::chrono::steady_clock::now();
-    const auto outcome = mpi::farm(count, [](std::size_t k) { return std::to_string(k); });
+    const auto outcome = mpi::farm(count, [ms](std::size_t k) {
+      if (ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+      return std::to_string(k);
+    });
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (mpi::is_root())
-      std::printf("%zu empty tasks on %d ranks: %.3f s, %.3f ms per task\n", count, mpi::size(), s, 1e3 * s / count);
+    if (mpi::is_root()) {
+      const double ideal = 1e-3 * ms * static_cast<double>(count) / mpi::size();
+      std::printf("%zu tasks of %d ms on %d ranks: %.4f s (ideal %.4f s), overhead %.3f ms per task\n", count, ms,
+                  mpi::size(), s, ideal, 1e3 * (s - ideal) * mpi::size() / static_cast<double>(count));
+    }
     return outcome.failed == 0 ? 0 : 1;
   }
-  std::fprintf(stderr, "usage: farm_probe tasks COUNT | overhead COUNT\n");
+  std::fprintf(stderr, "usage: farm_probe tasks COUNT | overhead COUNT [MS]\n");
   return 2;
 }
