@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <exception>
@@ -63,14 +64,13 @@ constexpr int kTagResult = 7101;  // worker → rank 0: a result (or, first, a r
 constexpr int kTagTask = 7102;    // rank 0 → worker: the next task's index, or −1: no more
 
 // A result on the wire: index (−1: none yet), status, numerical, threads, seconds, text.
-std::vector<char> encode(long long id, const TaskResult& r) {
+std::string encode(long long id, const TaskResult& r) {
   const int ints[3] = {static_cast<int>(r.status), r.numerical ? 1 : 0, r.threads};
-  std::vector<char> buf(sizeof id + sizeof ints + sizeof r.seconds + r.text.size());
-  char* p = buf.data();
-  std::memcpy(p, &id, sizeof id), p += sizeof id;
-  std::memcpy(p, ints, sizeof ints), p += sizeof ints;
-  std::memcpy(p, &r.seconds, sizeof r.seconds), p += sizeof r.seconds;
-  std::memcpy(p, r.text.data(), r.text.size());
+  std::string buf;
+  buf.append(reinterpret_cast<const char*>(&id), sizeof id);
+  buf.append(reinterpret_cast<const char*>(ints), sizeof ints);
+  buf.append(reinterpret_cast<const char*>(&r.seconds), sizeof r.seconds);
+  buf.append(r.text);
   return buf;
 }
 
@@ -90,7 +90,7 @@ long long decode(const std::vector<char>& buf, int source, TaskResult& r) {
 }
 
 void worker(const std::function<std::string(std::size_t)>& task) {
-  std::vector<char> message = encode(-1, TaskResult{});
+  std::string message = encode(-1, TaskResult{});
   for (;;) {
     MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     long long id = -1;
@@ -102,7 +102,7 @@ void worker(const std::function<std::string(std::size_t)>& task) {
 
 // Rank 0: hands out the indices to whichever rank asks (its own thread
 // included) and collects the results. The MPI calls stay on this thread
-// (MPI_THREAD_FUNNELED); it polls for messages, sleeping 0.2 ms between polls.
+// (MPI_THREAD_FUNNELED); it polls for messages, sleeping between polls.
 std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::string(std::size_t)>& task,
                                  const FarmOptions& options) {
   std::vector<TaskResult> results(count);
@@ -134,8 +134,10 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
     std::lock_guard guard(mutex);
     local_finished = true;
   });
-  Progress progress(options.label, static_cast<double>(count), "tasks");
+  Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
+                                            : Progress::silent(static_cast<double>(count));
   int workers = world_size() - 1;
+  int idle_wait = 100;  // µs
   std::vector<char> buffer;
   for (;;) {
     if (options.stop && options.stop()) {
@@ -170,7 +172,10 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
       std::lock_guard guard(mutex);
       if (local_finished && local_error) break;  // the job ends: main aborts it
     }
-    if (flag == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    // Idle: wait longer each time (0.1 ms up to 1 ms), so that a rank whose
+    // tasks take seconds spends no core on asking; a message resets it.
+    idle_wait = flag != 0 ? 100 : std::min(2 * idle_wait, 1000);
+    if (flag == 0) std::this_thread::sleep_for(std::chrono::microseconds(idle_wait));
   }
   local.join();
   progress.finish();
@@ -182,9 +187,10 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
 }  // namespace
 
 FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task, const FarmOptions& options) {
-  if (world_size() == 1 || !built_with_mpi()) {
+  if (size() == 1 || !built_with_mpi()) {  // one rank, or alone (a task of an enclosing farm)
     std::vector<TaskResult> results(count);
-    Progress progress(options.label, static_cast<double>(count), "tasks");
+    Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
+                                              : Progress::silent(static_cast<double>(count));
     for (std::size_t k = 0; k < count; ++k) {
       if (options.stop && options.stop()) break;
       results[k] = run_one(k, task);

@@ -5,7 +5,8 @@
 //                            made; tasks 3 and 5 (if there) fail, by a
 //                            NumericalError and an InputError, marked as such,
 //                            the others done; every rank learns the failed
-//                            count; a task sees one rank (mpi::Alone); with
+//                            count; a task sees one rank (mpi::Alone), and a
+//                            farm inside it runs there; with
 //                            more tasks than ranks several ranks take part.
 //   farm_probe overhead COUNT [MS]   COUNT tasks sleeping MS ms: the farm's cost per task.
 #include <chrono>
@@ -40,6 +41,10 @@ int main(int argc, char** argv) {
     const auto outcome = mpi::farm(count, [&](std::size_t k) {
       // A task computes alone, whatever the job's size.
       if (mpi::size() != 1 || mpi::rank() != 0 || mpi::active()) throw std::logic_error("a task sees several ranks");
+      // A farm inside a task runs on this rank, in order, and gives every result.
+      const auto inner = mpi::farm(3, [](std::size_t j) { return std::to_string(j); });
+      if (inner.results.size() != 3 || inner.results[2].text != "2" || inner.results[2].rank != mpi::world_rank())
+        throw std::logic_error("a farm inside a task did not run on its rank");
       // Costs differ 10×: 1 ms to 10 ms.
       std::this_thread::sleep_for(std::chrono::milliseconds(1 + static_cast<int>((k * 7) % 10)));
       if (k == 3) throw wearscale::NumericalError("probe", 17, "x", "diverged on purpose");

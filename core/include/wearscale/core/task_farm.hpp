@@ -36,6 +36,7 @@ struct TaskResult {
 
 struct FarmOptions {
   std::string label = "tasks";     ///< the progress line's label (rank 0, on a terminal only)
+  bool show_progress = true;       ///< false: no progress line (a farm inside a run that shows its own)
   std::function<bool()> stop;      ///< no task is handed out once it returns true (SIGINT)
 };
 
@@ -48,7 +49,9 @@ struct FarmOutcome {
 
 /// Runs task(k) for every k in [0, count) over the ranks. Collective: every
 /// rank calls it with the same count and an equivalent task. `task` returns
-/// the result's text.
+/// the result's text (any bytes). Inside a task (mpi::Alone) a farm runs its
+/// tasks in order on the calling thread: an ensemble within an ensemble's
+/// task stays on the rank that runs it.
 FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task,
                  const FarmOptions& options = {});
 
