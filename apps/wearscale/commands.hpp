@@ -26,5 +26,6 @@ Command add_strength_table(CLI::App& app);
 Command add_dem(CLI::App& app);
 Command add_wearmap(CLI::App& app);
 Command add_completion(CLI::App& app);
+Command add_merge(CLI::App& app);
 
 }  // namespace wearscale::app

@@ -54,6 +54,12 @@ const std::map<std::string, std::vector<std::string>>& table() {
       {"wearmap analytic3d", {"wearscale wearmap analytic3d --interaction max --n 41 --out map3d    # Fig. 4.6"}},
       {"wearmap rough",
        {"wearscale wearmap rough --n 32 --ql 2 --seeds 1 --n-loads 2 --n-dstar 2 --out map-rough    # tiny surfaces"}},
+      {"merge",
+       {"wearscale run cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.001 "
+        "--task 1/2 --out shards    # shard 1 of 2 (a job array's task; runs 1, 3, 5)",
+        "wearscale run cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.001 "
+        "--task 2/2 --out shards    # shard 2 of 2, into the same folder",
+        "wearscale merge shards    # the sweep's table, plots and summary.json, once both are done"}},
       {"completion",
        {"source <(wearscale completion bash)", "wearscale completion zsh > _wearscale    # into a folder of $fpath"}},
   };

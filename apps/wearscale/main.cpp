@@ -29,10 +29,11 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
+#include "wearscale/core/task_farm.hpp"
 #include "wearscale/core/version.hpp"
 
 namespace {
-bool every_rank_refused = false;  // a refusal all ranks reach alike needs no abort
+bool every_rank_refused = false;  // a refusal (or failure) all ranks reach alike needs no abort
 int run(int argc, char** argv);
 }  // namespace
 
@@ -91,6 +92,7 @@ int run(int argc, char** argv) {
   add(app::add_strength_table);
   add(app::add_dem);
   add(app::add_wearmap);
+  add(app::add_merge);
   add(app::add_completion);
   app::add_examples(app);
 
@@ -122,14 +124,15 @@ int run(int argc, char** argv) {
   install_interrupt_handlers();
   app::set_invocation(argc, argv);
   const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();
-  if (mpi::size() > 1 && command != "contact" && command != "run") {
-    // Only the runner's distributed studies (the contact study, in slabs over
-    // the ranks, rank 0 writing) spread their work over ranks: P copies of
-    // another command would write the same files at once. Refused on every
-    // rank before any work.
+  if (mpi::size() > 1 && (command == "backends" || command == "version" || command == "completion" ||
+                          command == "merge")) {
+    // Only studies spread their work over ranks (the runner decides which:
+    // the contact study in slabs, the runs of a sweep over the task farm);
+    // P copies of another command would print or write the same at once.
+    // Refused on every rank before any work.
     if (mpi::is_root())
-      log::error("wearscale {}: runs on one rank only ({} ranks started; under mpirun only `contact` and `run` of "
-                 "a contact case are distributed); run it without mpirun",
+      log::error("wearscale {}: runs on one rank only ({} ranks started; under mpirun the studies' commands are "
+                 "distributed: the contact study, and the runs of any [sweep]); run it without mpirun",
                  command, mpi::size());
     every_rank_refused = true;
     return exit_bad_input;
@@ -147,6 +150,11 @@ int run(int argc, char** argv) {
     if (interrupt_requested()) {  // a failure caused by the stop, e.g. a child process killed by the same Ctrl-C
       log::error("interrupted by a signal ({})", e.what());
       return exit_interrupted;
+    }
+    if (const auto* failed = dynamic_cast<const mpi::TasksFailed*>(&e)) {  // every rank ends together
+      every_rank_refused = true;
+      if (failed->speaks()) log::error("{}", e.what());
+      return exit_numerical_failure;
     }
     if (const auto* joint = dynamic_cast<const mpi::JointRefusal*>(&e)) {  // every rank refused together
       every_rank_refused = true;

@@ -73,6 +73,7 @@ void print_sweep_table(const studies::RunSummary& summary) {
   const std::vector<std::string> preferred = {"mu_mean", "mu_final", "pin_wear", "disc_wear", "substrate_reached_at",
                                               "grooves"};
   std::vector<std::string> columns;
+  if (summary.runs.empty()) return;  // a shard with no run of its own (more shards than runs)
   const auto& first = summary.runs.front().results;
   for (const auto& c : preferred)
     for (const auto& r : summary.runs)
@@ -106,6 +107,11 @@ void add_runner_flags(CLI::App* cmd, StudyFlags& f, const std::string& example) 
                   "Continue the killed or interrupted run whose output folder is DIR from its checkpoint (same case "
                   "and --set options; a sweep reruns only its unfinished runs)")
       ->type_name("DIR");
+  cmd->add_option("--task", f.options.task,
+                  "Run only the K-th of N shards of the case's [sweep] (its runs k with k mod N = K-1) into the "
+                  "output folder, which the other shards share (a job array); `wearscale merge DIR` writes the "
+                  "sweep's table once all are done")
+      ->type_name("K/N");
   cmd->add_flag("--json", f.json, "Print one JSON object with the headline results and resolved parameters");
 }
 
@@ -141,9 +147,14 @@ int run_study(StudyFlags& f) {
   if (!f.resume.empty()) f.options.resume_dir = f.resume;
   const auto summary = studies::run_case(f.options);
   if (!mpi::is_root()) return 0;  // under mpirun rank 0 prints the job's summary
-  if (f.json) {
+  print_summary(summary, f.json);
+  return 0;
+}
+
+void print_summary(const studies::RunSummary& summary, bool json) {
+  if (json) {
     std::cout << summary.to_json().dump(2) << '\n';
-    return 0;
+    return;
   }
   if (summary.sweep_key.empty())
     print_results(summary.results);
@@ -151,7 +162,6 @@ int run_study(StudyFlags& f) {
     print_sweep_table(summary);
   // A resumed run that had completed wrote nothing: its files are kept as they were.
   for (const auto& file : summary.files) log::info("{} {}", summary.complete_before ? "kept" : "wrote", file.string());
-  return 0;
 }
 
 Command add_study_command(CLI::App& app, const std::string& command, const std::string& study,

@@ -27,12 +27,14 @@ struct StudyFlags {
   std::map<std::string, Given> keys;  ///< schema key → its alias flag and value
 };
 
-/// Adds --set, --out, --resume and --json to `cmd`; `example` is a key for --set's help.
+/// Adds --set, --out, --resume, --task and --json to `cmd`; `example` is a key for --set's help.
 void add_runner_flags(CLI::App* cmd, StudyFlags& flags, const std::string& example);
 /// Adds the command-line alias of every key of `study`'s schema that has one.
 void add_schema_flags(CLI::App* cmd, StudyFlags& flags, const std::string& study);
 /// Runs the study through the runner and prints its summary (JSON with --json).
 int run_study(StudyFlags& flags);
+/// Prints a summary as run_study does (JSON with `json`).
+void print_summary(const studies::RunSummary& summary, bool json);
 
 /// A command that runs `study`: an optional case file (the positional
 /// argument, unless a key's alias is: a flag without dashes), the schema's

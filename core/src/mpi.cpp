@@ -1,6 +1,7 @@
 #include "wearscale/core/mpi.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 #include <vector>
@@ -12,8 +13,11 @@
 namespace wearscale::mpi {
 
 namespace {
+// The job (world) as MPI_Init found it; `g_alone` while this process runs a
+// farmed task (task_farm.hpp): active(), rank() and size() then say serial.
 bool g_active = false;
 int g_rank = 0, g_size = 1;
+std::atomic<bool> g_alone{false};
 
 #ifdef WEARSCALE_MPI
 // A launcher's variables: Open MPI's mpirun, PMI (MPICH, Intel MPI) and PMIx (Slurm's srun).
@@ -58,9 +62,14 @@ Session::~Session() {
   g_size = 1;
 }
 
-bool active() { return g_active; }
-int rank() { return g_rank; }
-int size() { return g_size; }
+bool active() { return g_active && !g_alone; }
+int rank() { return g_alone ? 0 : g_rank; }
+int size() { return g_alone ? 1 : g_size; }
+int world_rank() { return g_rank; }
+int world_size() { return g_size; }
+
+Alone::Alone() : was_(g_alone.exchange(true)) {}
+Alone::~Alone() { g_alone = was_; }
 
 void abort(int code) {
 #ifdef WEARSCALE_MPI
@@ -71,13 +80,13 @@ void abort(int code) {
 
 void barrier() {
 #ifdef WEARSCALE_MPI
-  if (g_active) MPI_Barrier(MPI_COMM_WORLD);
+  if (active()) MPI_Barrier(MPI_COMM_WORLD);
 #endif
 }
 
 void sum(std::span<double> values) {
 #ifdef WEARSCALE_MPI
-  if (!g_active || g_size == 1) return;
+  if (!active() || size() == 1) return;
   // Gather every rank's values and add them in rank order on every rank: the
   // same bits whatever the reduction tree of the MPI library.
   const int n = static_cast<int>(values.size());
@@ -101,7 +110,7 @@ double sum(double local) {
 
 long long sum(long long local) {
 #ifdef WEARSCALE_MPI
-  if (g_active && g_size > 1) {
+  if (active() && size() > 1) {
     long long total = 0;
     MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
     return total;
@@ -112,7 +121,7 @@ long long sum(long long local) {
 
 double max(double local) {
 #ifdef WEARSCALE_MPI
-  if (g_active && g_size > 1) {
+  if (active() && size() > 1) {
     double m = local;
     MPI_Allreduce(&local, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
     return m;
@@ -123,7 +132,7 @@ double max(double local) {
 
 void gather(std::span<const double> local, std::span<double> all) {
 #ifdef WEARSCALE_MPI
-  if (g_active && g_size > 1) {
+  if (active() && size() > 1) {
     const int n = static_cast<int>(local.size());
     std::vector<int> counts(static_cast<std::size_t>(g_size)), offsets(static_cast<std::size_t>(g_size));
     MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -32,7 +33,7 @@ std::string host_name() {
 // The holder a lock file describes: "pid: 123\nhost: h\nstarted: …\ncommand: …\n".
 struct Holder {
   long pid = 0;
-  std::string host, started, command;
+  std::string host, started, command, ensemble;
 };
 
 Holder read_holder(int fd) {
@@ -52,6 +53,7 @@ Holder read_holder(int fd) {
     if (key == "host") h.host = value;
     if (key == "started") h.started = value;
     if (key == "command") h.command = value;
+    if (key == "ensemble") h.ensemble = value;
   }
   return h;
 }
@@ -80,9 +82,16 @@ bool same_file(int fd, const fs::path& path) {
                                 what.string(), describe(holder)));
 }
 
+[[noreturn]] void refuse_other_ensemble(const fs::path& what, const Holder& holder) {
+  throw OutputError(fmt::format("{} is being written by the shards of another ensemble ({}); a shard (--task K/N) "
+                                "shares a folder only with the shards of the same case, sweep and options; give "
+                                "another output folder",
+                                what.string(), describe(holder)));
+}
+
 }  // namespace
 
-OutputLock OutputLock::folder(const fs::path& dir, const std::string& command, Mode mode) {
+OutputLock OutputLock::folder(const fs::path& dir, const std::string& command, Mode mode, const std::string& ensemble) {
   fs::path top;  // the outermost folder that does not exist yet
   std::error_code ec;
   for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
@@ -90,24 +99,32 @@ OutputLock OutputLock::folder(const fs::path& dir, const std::string& command, M
     if (p == p.parent_path()) break;
   }
   create_output_folder(dir);
-  OutputLock lock(dir / kFolderLockName, dir, command, mode);
+  OutputLock lock(dir / kFolderLockName, dir, command, mode, ensemble);
   if (!top.empty()) lock.created_ = dir, lock.created_top_ = top;
   return lock;
 }
 
-OutputLock OutputLock::file(const fs::path& path, const std::string& command, Mode mode) {
+OutputLock OutputLock::file(const fs::path& path, const std::string& command) {
   if (!path.parent_path().empty()) create_output_folder(path.parent_path());
-  return OutputLock(path.parent_path() / ("." + path.filename().string() + ".lock"), path, command, mode);
+  return OutputLock(path.parent_path() / ("." + path.filename().string() + ".lock"), path, command, Mode::Exclusive, {});
 }
 
-OutputLock::OutputLock(fs::path lock_file, fs::path what, const std::string& command, Mode mode)
-    : file_(std::move(lock_file)) {
-  (void)mode;  // Exclusive: the only mode so far (see the header for shards of an ensemble)
+OutputLock::OutputLock(fs::path lock_file, fs::path what, const std::string& command, Mode mode,
+                       const std::string& ensemble)
+    : file_(std::move(lock_file)), shared_(mode == Mode::Shared) {
+  if (shared_ && (ensemble.empty() || ensemble.find('\n') != std::string::npos))
+    throw std::invalid_argument("OutputLock: a shared lock needs an ensemble id of one line");
   for (int attempt = 0; attempt < 100; ++attempt) {
     const int fd = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0)
       throw OutputError(fmt::format("{}: cannot write into it: {}", what.string(), std::strerror(errno)));
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    int locked = ::flock(fd, (shared_ ? LOCK_SH : LOCK_EX) | LOCK_NB);
+    // A shard that starts as another one writes its id (a moment's exclusive lock): try again briefly.
+    for (int wait = 0; shared_ && locked != 0 && errno == EWOULDBLOCK && wait < 50; ++wait) {
+      ::usleep(2000);
+      locked = ::flock(fd, LOCK_SH | LOCK_NB);
+    }
+    if (locked != 0) {
       const int error = errno;
       const Holder holder = read_holder(fd);
       if (error == EWOULDBLOCK) {
@@ -119,7 +136,7 @@ OutputLock::OutputLock(fs::path lock_file, fs::path what, const std::string& com
         throw OutputError(fmt::format("{}: cannot lock it: {}", what.string(), std::strerror(error)));
       }
       // No flock on this file system: the pid written there is the lock.
-      if (alive_here(holder)) {
+      if (alive_here(holder) && !(shared_ && holder.ensemble == ensemble)) {
         ::close(fd);
         refuse(what, holder);
       }
@@ -128,17 +145,40 @@ OutputLock::OutputLock(fs::path lock_file, fs::path what, const std::string& com
       ::close(fd);  // the previous holder removed it between our open and flock: take the new one
       continue;
     }
-    const std::string content = fmt::format("pid: {}\nhost: {}\nstarted: {}\ncommand: {}\n", ::getpid(), host_name(),
-                                            utc_now(), command);
-    try {
-      if (::ftruncate(fd, 0) != 0)
-        throw OutputError(fmt::format("cannot write {}: {}", file_.string(), std::strerror(errno)));
-      write_all(fd, content.data(), content.size(), file_);
-    } catch (const OutputError& e) {
-      ::unlink(file_.c_str());
-      ::close(fd);
-      throw OutputError(fmt::format("{}: cannot write into it ({})", what.string(), e.what()));
+    std::string content = fmt::format("pid: {}\nhost: {}\nstarted: {}\ncommand: {}\n", ::getpid(), host_name(),
+                                      utc_now(), command);
+    if (shared_) content += fmt::format("ensemble: {}\n", ensemble);
+    const auto write_content = [&] {
+      try {
+        if (::ftruncate(fd, 0) != 0)
+          throw OutputError(fmt::format("cannot write {}: {}", file_.string(), std::strerror(errno)));
+        write_all(fd, content.data(), content.size(), file_);
+      } catch (const OutputError& e) {
+        ::unlink(file_.c_str());
+        ::close(fd);
+        throw OutputError(fmt::format("{}: cannot write into it ({})", what.string(), e.what()));
+      }
+    };
+    if (shared_ && ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      // Other shards hold it: the file names their ensemble. Shards that
+      // started together may find it without one (or a killed run's): each
+      // writes its own, and reads back which one stands.
+      Holder holder = read_holder(fd);
+      if (holder.ensemble.empty()) {
+        write_content();
+        holder = read_holder(fd);
+      }
+      if (holder.ensemble != ensemble) {
+        ::close(fd);
+        refuse_other_ensemble(what, holder);
+      }
+      fd_ = fd;
+      return;
     }
+    // Alone on it (exclusive, or the first shard): say who holds it, then (a
+    // shard) let the other shards of the ensemble in.
+    write_content();
+    if (shared_) ::flock(fd, LOCK_SH | LOCK_NB);  // a conversion: never refused to the holder alone
     fd_ = fd;
     return;
   }
@@ -147,7 +187,7 @@ OutputLock::OutputLock(fs::path lock_file, fs::path what, const std::string& com
 
 OutputLock::OutputLock(OutputLock&& other) noexcept
     : file_(std::move(other.file_)), created_(std::move(other.created_)), created_top_(std::move(other.created_top_)),
-      fd_(other.fd_) {
+      fd_(other.fd_), shared_(other.shared_) {
   other.fd_ = -1;
 }
 
@@ -158,6 +198,7 @@ OutputLock& OutputLock::operator=(OutputLock&& other) noexcept {
     created_ = std::move(other.created_);
     created_top_ = std::move(other.created_top_);
     fd_ = other.fd_;
+    shared_ = other.shared_;
     other.fd_ = -1;
   }
   return *this;
@@ -167,6 +208,12 @@ OutputLock::~OutputLock() { release(); }
 
 void OutputLock::release() noexcept {
   if (fd_ < 0) return;
+  // A shard leaves the file to the other shards still holding it.
+  if (shared_ && ::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    return;
+  }
   ::unlink(file_.c_str());  // while still holding it: a process waiting on the old file retries on a new one
   ::close(fd_);
   fd_ = -1;

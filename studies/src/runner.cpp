@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <charconv>
 #include <atomic>
 #include <exception>
 #include <fstream>
@@ -23,6 +24,8 @@
 #include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/core/sha256.hpp"
+#include "wearscale/core/task_farm.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/utf8.hpp"
@@ -352,71 +355,86 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   return plan;
 }
 
-RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config& probe, int threads) {
-  SweepPlan plan = plan_sweep(parse, options, probe);
+// A shard of an ensemble (--task K/N): the runs k with k mod N = K − 1.
+struct Shard {
+  std::size_t index = 1, of = 1;  // K, N
+  std::string text() const { return fmt::format("{}/{}", index, of); }
+  bool owns(std::size_t k) const { return k % of == index - 1; }
+};
+
+std::optional<Shard> parse_shard(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const auto bad = [&] {
+    return InputError(fmt::format("--task '{}': not a shard; allowed: K/N with 1 <= K <= N <= 1000000 (the K-th of N "
+                                  "shards of the case's ensemble), e.g. --task 2/8",
+                                  is_utf8(text) ? text : std::string("?")));
+  };
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw bad();
+  const auto number = [&](std::string_view s) {
+    std::size_t v = 0;
+    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || v < 1 || v > 1000000) throw bad();
+    return v;
+  };
+  const std::string_view all(text);
+  Shard shard{number(all.substr(0, slash)), number(all.substr(slash + 1))};
+  if (shard.index > shard.of) throw bad();
+  return shard;
+}
+
+// A run's summary as it travels from the rank that ran it to rank 0, and back from its summary.json.
+nlohmann::json run_message(const RunSummary& s) {
+  std::vector<std::string> files;
+  for (const auto& f : s.files) files.push_back(f.string());
+  return {{"results", s.results}, {"notes", s.notes}, {"files", files}, {"complete_before", s.complete_before}};
+}
+
+void take_run_message(RunSummary& s, const nlohmann::json& j) {
+  s.results = j.at("results");
+  s.notes = j.at("notes");
+  s.files.clear();
+  for (const auto& f : j.at("files")) s.files.emplace_back(f.get<std::string>());
+  s.complete_before = j.at("complete_before").get<bool>();
+}
+
+// What the sweep's summary says of the whole: its parts, provenance and parameters.
+void describe_sweep(SweepPlan& plan, const RunOptions& options) {
+  RunSummary& sweep = plan.sweep;
+  sweep.scales = plan.runs.front().summary.scales;
+  sweep.provenance = provenance_of(sweep, options);
+  sweep.parameters = plan.runs.front().summary.parameters;
+  sweep.parameters["sweep"] = {{"key", sweep.sweep_key}, {"values", plan.values}};
+  if (!plan.series_key.empty())
+    sweep.parameters["sweep"]["series"] = {{"key", plan.series_key}, {"values", plan.series}};
+}
+
+// The id shared by the shards of one ensemble: the case that determines the
+// results, with its sweep (not [run] or [output]: a resume may change those).
+std::string ensemble_id(const SweepPlan& plan) {
+  Sha256 h;
+  h.field(case_fingerprint(plan.sweep.parameters));
+  h.field(plan.sweep.parameters["sweep"].dump());
+  h.field(plan.sweep.study);
+  return h.hex();
+}
+
+std::string manifest_name(const Shard& shard) { return fmt::format("task-{}-of-{}.json", shard.index, shard.of); }
+
+// The sweep tables (one per series value: the swept value, then every
+// headline figure of the runs), the study's sweep plots and summary.json.
+// `failures` (one per run, "" if it ran) marks the runs that failed: a
+// column `failed` and the list in summary.json; no plots then.
+void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string>& failures) {
   RunSummary& sweep = plan.sweep;
   std::vector<PreparedRun>& runs = plan.runs;
   const std::string& key = sweep.sweep_key;
-  const std::vector<std::string>& values = plan.values;            // the swept key's values
-  const std::vector<std::string>& run_value = sweep.sweep_values;  // ... of each run
+  const std::vector<std::string>& values = plan.values;
+  const std::vector<std::string>& run_value = sweep.sweep_values;
   const std::vector<std::string>& run_series = plan.run_series;
   const std::string& series_key = plan.series_key;
-  const std::vector<std::string>& series = plan.series;
   const std::string& table_name = plan.table_name;
-  const bool parallel = plan.parallel;
-  // Resuming, every checkpoint is read (and its FFT plans imported) before any run makes a plan.
-  const std::string command = command_line(options, threads);
-  const OutputLock lock = OutputLock::folder(sweep.output_dir, command);
-  if (options.resume_dir) {
-    for (auto& r : runs) find_resume_point(r);
-    const auto finished = std::count_if(runs.begin(), runs.end(), [](const PreparedRun& r) { return r.complete; });
-    log::info("resuming the sweep in {}: {} of {} runs complete", sweep.output_dir.string(), finished, runs.size());
-  } else {
-    for (const auto& r : runs) check_fresh_start(r);
-  }
-  FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
-  sweep.scales = runs.front().summary.scales;
-  sweep.provenance = provenance_of(sweep, options);
-  sweep.parameters = runs.front().summary.parameters;
-  sweep.parameters["sweep"] = {{"key", key}, {"values", values}};
-  if (!series_key.empty()) sweep.parameters["sweep"]["series"] = {{"key", series_key}, {"values", series}};
-
-  // The thread budget (-j) shared out: runs side by side, the rest inside each run.
-  const unsigned budget = static_cast<unsigned>(threads);
-  const unsigned workers = parallel ? std::min<unsigned>(budget, static_cast<unsigned>(runs.size())) : 1u;
-  const int per_run = static_cast<int>(std::max(1u, budget / workers));
-  if (workers > 1) FFTPlanCache::global().set_threads(per_run);
-  log::info("sweep over {}: {} runs on {} worker(s) × {} thread(s) → {}", key, runs.size(), workers, per_run,
-            sweep.output_dir.string());
-  std::vector<std::exception_ptr> errors(runs.size());
-  std::size_t done = 0;
-  std::mutex progress_mutex;
-  Progress progress("sweep", static_cast<double>(runs.size()), "runs");
-  WorkerOptions pool;
-  pool.workers = workers;
-  pool.omp_threads = workers > 1 ? per_run : 0;
-  pool.caller_omp_too = true;
-  pool.stop = [] { return interrupt_requested(); };
-  run_on_workers(runs.size(), pool, [&](std::size_t k) {
-    try {
-      execute(runs[k], options, false, &command);
-    } catch (...) {
-      errors[k] = std::current_exception();
-    }
-    std::lock_guard guard(progress_mutex);
-    progress.update(static_cast<double>(++done));
-  });
-  progress.finish();
-  try {
-    throw_if_interrupted("sweep");  // also when the signal came between runs
-    for (auto& e : errors)
-      if (e) std::rethrow_exception(e);
-  } catch (const Interrupted& e) {
-    rethrow_interrupted(e, command, sweep.output_dir);
-  }
-
-  // The sweep tables (one per series value): the swept value, then every
-  // headline figure of the runs.
+  const bool any_failed = std::any_of(failures.begin(), failures.end(), [](const std::string& f) { return !f.empty(); });
   OutputSet outputs(sweep.output_dir, "summary.json");
   std::vector<std::string> names, result_units;
   for (const auto& r : runs)
@@ -427,6 +445,10 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
         const std::string unit = v.contains("unit") ? v["unit"].get<std::string>() : "";
         result_units.push_back(unit.empty() ? "1" : unit);
       }
+  if (any_failed) {
+    names.push_back("failed");
+    result_units.push_back("1");
+  }
   // The swept values as numbers in SI, if they all are and share one dimension (else the tables keep the text).
   std::vector<double> numeric;
   std::optional<units::Dimension> swept_dimension;
@@ -446,7 +468,10 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     for (std::size_t k = first; k < first + values.size(); ++k)
       for (std::size_t c = 0; c < names.size(); ++c) {
         const auto& res = runs[k].summary.results;
-        columns[c].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
+        if (any_failed && c + 1 == names.size())
+          columns[c].push_back(failures[k].empty() ? 0.0 : 1.0);
+        else
+          columns[c].push_back(res.contains(names[c]) ? res[names[c]]["value"].get<double>() : std::nan(""));
       }
     std::vector<std::span<const double>> spans;
     if (numeric_values) spans.emplace_back(numeric);
@@ -458,6 +483,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     std::vector<std::string> comments{
         fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
     if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
+    if (any_failed) comments.push_back("failed = 1: the run failed (summary.json lists why); its figures are nan");
     if (numeric_values) {
       std::vector<std::string> header{key}, header_units{swept_dimension->to_string()};
       header.insert(header.end(), names.begin(), names.end());
@@ -484,9 +510,182 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     view.folders.push_back(runs[k].summary.output_dir);
     view.labels.push_back(label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k])));
   }
-  for (auto& f : runs.front().study->finish_sweep(view)) sweep.files.push_back(std::move(f));
+  if (any_failed)
+    log::warn("{}: no sweep plots (some runs failed)", sweep.output_dir.string());
+  else
+    for (auto& f : runs.front().study->finish_sweep(view)) sweep.files.push_back(std::move(f));
   sweep.files.push_back(sweep.output_dir / "summary.json");
-  outputs.commit(sweep.to_json());
+  nlohmann::json summary = sweep.to_json();
+  if (any_failed) {
+    summary["failed"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      if (!failures[k].empty())
+        summary["failed"].push_back({{"run", k + 1}, {"value", run_value[k]},
+                                     {"output_dir", runs[k].summary.output_dir.string()}, {"error", failures[k]}});
+  }
+  outputs.commit(summary);
+}
+
+// The runs of a sweep, or of one shard of it. Without mpirun: side by side on
+// threads within the -j budget (the first failure ends the sweep, as a single
+// run's does). Under mpirun: over the ranks by the task farm (a failed run is
+// marked in the table). A shard writes no shared file but its manifest; the
+// whole sweep (one job, any number of ranks) writes the tables and summary.
+RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config& probe, int threads,
+                     const std::optional<Shard>& shard) {
+  std::optional<SweepPlan> planned;
+  mpi::refuse_together([&] {
+    const mpi::Alone alone;  // each run of a sweep runs on one rank (a task of the farm): so is it prepared
+    planned = plan_sweep(parse, options, probe);
+    describe_sweep(*planned, options);
+  });
+  SweepPlan& plan = *planned;
+  RunSummary& sweep = plan.sweep;
+  std::vector<PreparedRun>& runs = plan.runs;
+  const std::string& key = sweep.sweep_key;
+  const bool farmed = mpi::size() > 1;
+  std::vector<std::size_t> mine;  // the runs this job runs
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (!shard || shard->owns(k)) mine.push_back(k);
+  // Resuming, every checkpoint is read (and its FFT plans imported) before any run makes a plan.
+  const std::string command = command_line(options, threads);
+  const std::string ensemble = ensemble_id(plan);
+  std::optional<OutputLock> lock;
+  mpi::refuse_together([&] {  // the folder and what is in it: rank 0's
+    if (!mpi::is_root()) return;
+    lock.emplace(shard ? OutputLock::folder(sweep.output_dir, command, OutputLock::Mode::Shared, ensemble)
+                       : OutputLock::folder(sweep.output_dir, command));
+    if (options.resume_dir) {
+      for (const auto k : mine) find_resume_point(runs[k]);
+      const auto finished = std::count_if(mine.begin(), mine.end(), [&](std::size_t k) { return runs[k].complete; });
+      log::info("resuming the sweep in {}: {} of {} runs complete", sweep.output_dir.string(), finished, mine.size());
+    } else {
+      for (const auto k : mine) check_fresh_start(runs[k]);
+    }
+    if (shard) {
+      std::vector<std::size_t> owned;
+      for (const auto k : mine) owned.push_back(k + 1);
+      const nlohmann::json manifest = {
+          {"ensemble", ensemble},
+          {"task", shard->index},
+          {"of", shard->of},
+          {"runs", owned},
+          {"study", sweep.study},
+          {"case_file", options.case_file.string()},
+          {"case_file_absolute",
+           options.case_file.empty() ? std::string() : std::filesystem::absolute(options.case_file).string()},
+          {"case_text", options.case_text ? *options.case_text
+                        : options.case_file.empty()
+                            ? std::string()
+                            : read_text_file(options.case_file, "case file", std::uintmax_t{1} << 26)},
+          {"flags", options.flags},
+          {"overrides", options.overrides},
+          {"command", command}};
+      write_file_atomically(sweep.output_dir / manifest_name(*shard), manifest.dump(2) + "\n", Commit::Now);
+    }
+  });
+  FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
+  std::vector<std::string> failures(runs.size());
+  const std::string what = shard ? fmt::format("shard {} of the sweep", shard->text()) : std::string("sweep");
+
+  if (farmed) {
+    log::info("{} over {}: {} runs on {} MPI ranks × {} thread(s) → {}", what, key, mine.size(), mpi::size(),
+              thread_budget(), sweep.output_dir.string());
+    mpi::FarmOptions farm_options;
+    farm_options.label = what;
+    farm_options.stop = [] { return interrupt_requested(); };
+    const auto outcome = mpi::farm(
+        mine.size(),
+        [&](std::size_t t) {
+          PreparedRun& run = runs[mine[t]];
+          if (options.resume_dir && !run.checkpoints) find_resume_point(run);  // rank 0 found them all above
+          execute(run, options, false, &command);
+          return run_message(run.summary).dump();
+        },
+        farm_options);
+    if (outcome.not_run > 0) {  // stopped by a signal: checkpoints saved, resume continues
+      const Interrupted e(fmt::format("{} stopped by a signal: {} of {} runs not finished", what, outcome.not_run,
+                                      mine.size()));
+      rethrow_interrupted(e, command, sweep.output_dir);
+    }
+    if (!mpi::is_root()) {
+      if (outcome.failed > 0) throw mpi::TasksFailed("", false);
+      return sweep;
+    }
+    for (std::size_t t = 0; t < mine.size(); ++t) {
+      const auto& r = outcome.results[t];
+      if (r.status == mpi::TaskResult::Status::Done)
+        take_run_message(runs[mine[t]].summary, nlohmann::json::parse(r.text));
+      else
+        failures[mine[t]] = fmt::format("{} (rank {})", r.text, r.rank);
+    }
+  } else {
+    // The thread budget (-j) shared out: runs side by side, the rest inside each run.
+    const unsigned budget = static_cast<unsigned>(threads);
+    const unsigned workers = plan.parallel ? std::min<unsigned>(budget, static_cast<unsigned>(std::max<std::size_t>(1, mine.size()))) : 1u;
+    const int per_run = static_cast<int>(std::max(1u, budget / workers));
+    if (workers > 1) FFTPlanCache::global().set_threads(per_run);
+    log::info("{} over {}: {} runs on {} worker(s) × {} thread(s) → {}", what, key, mine.size(), workers, per_run,
+              sweep.output_dir.string());
+    std::vector<std::exception_ptr> errors(mine.size());
+    std::size_t done = 0;
+    std::mutex progress_mutex;
+    Progress progress(what, static_cast<double>(mine.size()), "runs");
+    WorkerOptions pool;
+    pool.workers = workers;
+    pool.omp_threads = workers > 1 ? per_run : 0;
+    pool.caller_omp_too = true;
+    pool.stop = [] { return interrupt_requested(); };
+    run_on_workers(mine.size(), pool, [&](std::size_t t) {
+      try {
+        execute(runs[mine[t]], options, false, &command);
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+      std::lock_guard guard(progress_mutex);
+      progress.update(static_cast<double>(++done));
+    });
+    progress.finish();
+    try {
+      throw_if_interrupted("sweep");  // also when the signal came between runs
+      for (auto& e : errors)
+        if (e) std::rethrow_exception(e);
+    } catch (const Interrupted& e) {
+      rethrow_interrupted(e, command, sweep.output_dir);
+    }
+  }
+
+  if (shard) {  // its own runs only; `wearscale merge` writes the tables once every shard is done
+    RunSummary part = sweep;
+    part.sweep_values.clear();
+    part.series_values.clear();
+    part.files = {sweep.output_dir / manifest_name(*shard)};
+    for (const auto k : mine) {
+      part.runs.push_back(runs[k].summary);
+      part.sweep_values.push_back(sweep.sweep_values[k]);
+      if (!plan.series_key.empty()) part.series_values.push_back(sweep.series_values[k]);
+    }
+    std::vector<std::string> failed;
+    for (const auto k : mine)
+      if (!failures[k].empty()) failed.push_back(fmt::format("run {} ({}={}): {}", k + 1, key, sweep.sweep_values[k], failures[k]));
+    if (!failed.empty())
+      throw mpi::TasksFailed(fmt::format("{}: {} of its {} runs failed: {}; rerun them with: {} --resume {}", what,
+                                         failed.size(), mine.size(), fmt::join(failed, "; "), command,
+                                         sweep.output_dir.string()),
+                             true);
+    log::info("shard {} done; once every shard is: wearscale merge {}", shard->text(), sweep.output_dir.string());
+    return part;
+  }
+  publish_sweep(plan, probe, failures);
+  std::vector<std::string> failed;
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (!failures[k].empty()) failed.push_back(fmt::format("run {} ({}={}): {}", k + 1, key, sweep.sweep_values[k], failures[k]));
+  if (!failed.empty())
+    throw mpi::TasksFailed(fmt::format("{}: {} of {} runs failed, marked in the table (failed = 1): {}; rerun them "
+                                       "with: {} --resume {}",
+                                       what, failed.size(), runs.size(), fmt::join(failed, "; "), command,
+                                       sweep.output_dir.string()),
+                           true);
   return sweep;
 }
 
@@ -510,13 +709,10 @@ RunSummary run_distributed(const RunOptions& options) {
                  : options.case_file.empty() ? Config::from_string("", "<command line>")
                                              : Config::load(options.case_file);
     for (const auto& o : options.overrides) cfg.override_value(o);
-    if (cfg.has("sweep"))
-      throw cfg.error("sweep.key", fmt::format("a sweep is not distributed over MPI ranks ({} ranks started)", mpi::size()),
-                      "no [sweep] under mpirun; a sweep without mpirun");
     run.emplace(prepare(std::move(cfg), options.output_dir, options));
     if (!run->study->distributed())
-      throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun only the contact "
-                                   "study is distributed); run it without mpirun",
+      throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
+                                   "study is distributed, and the runs of any [sweep]); run it without mpirun",
                                    run->summary.study, mpi::size()));
   });
   mpi::refuse_together([&] {  // the folder: rank 0's alone
@@ -538,19 +734,30 @@ RunSummary run_distributed(const RunOptions& options) {
 }  // namespace
 
 RunSummary run_case(const RunOptions& options_in) {
-  if (mpi::size() > 1) return run_distributed(options_in);
-  require_utf8_paths(options_in);
   RunOptions options = options_in;
-  if (options.resume_dir)
-    options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   const int threads = thread_budget();
   const CaseLoader parse = [&] {
     if (options.case_text) return Config::from_string(*options.case_text, options.case_file.string());
     return options.case_file.empty() ? Config::from_string("", "<command line>") : Config::load(options.case_file);
   };
-  Config probe = load(parse, options);
-  if (probe.has("sweep")) return run_sweep(parse, options, probe, threads);
-  PreparedRun run = prepare(std::move(probe), options.output_dir, options);  // a single run: the file is parsed once
+  // Under mpirun every rank reads the case; a refusal is every rank's (status 2, said once).
+  std::optional<Config> probe;
+  std::optional<Shard> shard;
+  mpi::refuse_together([&] {
+    require_utf8_paths(options_in);
+    shard = parse_shard(options.task);
+    probe = load(parse, options);
+    const bool sweep = probe->has("sweep");
+    if (shard && !sweep)
+      throw InputError(fmt::format("--task {}: the case is one run, not an ensemble; --task K/N shards the runs of a "
+                                   "[sweep] (give the case a [sweep], or run it without --task)",
+                                   shard->text()));
+    if (options.resume_dir && (sweep || mpi::size() == 1))
+      options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
+  });
+  if (probe->has("sweep")) return run_sweep(parse, options, *probe, threads, shard);
+  if (mpi::size() > 1) return run_distributed(options_in);
+  PreparedRun run = prepare(std::move(*probe), options.output_dir, options);  // a single run: the file is parsed once
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
   if (options.resume_dir)
@@ -566,6 +773,95 @@ RunSummary run_case(const RunOptions& options_in) {
     rethrow_interrupted(e, command, run.summary.output_dir);
   }
   return run.summary;
+}
+
+RunSummary merge_shards(const std::filesystem::path& dir, const std::string& command) {
+  require_utf8_path(dir, "merge");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw InputError(fmt::format("merge {}: not a folder; allowed: the output folder of an ensemble's shards "
+                                 "(wearscale run CASE --task K/N --out DIR)",
+                                 dir.string()));
+  // The shards' manifests: task-K-of-N.json.
+  std::vector<nlohmann::json> manifests;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("task-") || !name.ends_with(".json") || name.find("-of-") == std::string::npos) continue;
+    try {
+      manifests.push_back(nlohmann::json::parse(read_text_file(entry.path(), "shard manifest", std::uintmax_t{1} << 26)));
+      const auto& m = manifests.back();
+      (void)m.at("ensemble").get<std::string>(), (void)m.at("task").get<std::size_t>(), (void)m.at("of").get<std::size_t>();
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(fmt::format("{}: not a shard manifest of wearscale ({})", entry.path().string(), e.what()));
+    }
+  }
+  if (manifests.empty())
+    throw InputError(fmt::format("merge {}: no shard has run into this folder (no task-K-of-N.json); allowed: the "
+                                 "output folder of an ensemble's shards (wearscale run CASE --task K/N --out DIR)",
+                                 dir.string()));
+  std::sort(manifests.begin(), manifests.end(), [](const auto& a, const auto& b) {
+    return std::pair(a["of"].template get<std::size_t>(), a["task"].template get<std::size_t>()) <
+           std::pair(b["of"].template get<std::size_t>(), b["task"].template get<std::size_t>());
+  });
+  const nlohmann::json& first = manifests.front();
+  for (const auto& m : manifests)
+    if (m["ensemble"] != first["ensemble"])
+      throw InputError(fmt::format("merge {}: shards {}/{} and {}/{} ran different cases (ensemble ids differ); a "
+                                   "folder holds the shards of one ensemble",
+                                   dir.string(), first["task"].get<std::size_t>(), first["of"].get<std::size_t>(),
+                                   m["task"].get<std::size_t>(), m["of"].get<std::size_t>()));
+  // The case as the shards ran it: the case file if it is still where it was, else the text they recorded.
+  RunOptions options;
+  options.study = first.value("study", "");
+  options.case_file = first.value("case_file", "");
+  options.flags = first.value("flags", std::vector<std::pair<std::string, std::string>>{});
+  options.overrides = first.value("overrides", std::vector<std::string>{});
+  options.output_dir = dir;
+  options.command = command;
+  const std::filesystem::path absolute = first.value("case_file_absolute", "");
+  const std::string text = first.value("case_text", "");
+  const CaseLoader parse = [&] {
+    if (!options.case_file.empty() && std::filesystem::exists(options.case_file)) return Config::load(options.case_file);
+    if (!absolute.empty() && std::filesystem::exists(absolute)) return Config::load(absolute);
+    return Config::from_string(text, options.case_file.empty() ? "<command line>" : options.case_file.string());
+  };
+  Config probe = load(parse, options);
+  if (!probe.has("sweep"))
+    throw InputError(fmt::format("merge {}: the shards' case has no [sweep] any more", dir.string()));
+  SweepPlan plan = plan_sweep(parse, options, probe);
+  describe_sweep(plan, options);
+  if (ensemble_id(plan) != first["ensemble"].get<std::string>())
+    throw InputError(fmt::format("merge {}: the case ({}) is not the one the shards ran (it changed since); merge "
+                                 "with the case they ran, or run the ensemble again",
+                                 dir.string(), options.case_file.empty() ? "the command's keys" : options.case_file.string()));
+  const OutputLock lock = OutputLock::folder(dir, command);  // refused while a shard still runs
+  std::vector<std::string> missing;
+  for (std::size_t k = 0; k < plan.runs.size(); ++k) {
+    find_resume_point(plan.runs[k]);
+    if (plan.runs[k].complete) continue;
+    std::vector<std::string> owed;  // the shards that ran (or should have run) it
+    std::vector<std::size_t> counts;
+    for (const auto& m : manifests) {
+      const auto of = m["of"].get<std::size_t>();
+      if (std::find(counts.begin(), counts.end(), of) == counts.end()) counts.push_back(of);
+    }
+    for (const auto of : counts) {
+      const Shard s{k % of + 1, of};
+      const bool ran = std::any_of(manifests.begin(), manifests.end(), [&](const auto& m) {
+        return m["of"].template get<std::size_t>() == of && m["task"].template get<std::size_t>() == s.index;
+      });
+      owed.push_back(fmt::format("shard {} {}", s.text(), ran ? "did not finish it" : "has not run"));
+    }
+    missing.push_back(fmt::format("task {} ({}: {})", k + 1, plan.runs[k].summary.output_dir.filename().string(),
+                                  fmt::join(owed, ", ")));
+  }
+  if (!missing.empty())
+    throw InputError(fmt::format("merge {}: {} of {} tasks are not complete: {}; run what is left (any shard count) "
+                                 "with --resume {}, then merge again",
+                                 dir.string(), missing.size(), plan.runs.size(), fmt::join(missing, "; "), dir.string()));
+  publish_sweep(plan, probe, std::vector<std::string>(plan.runs.size()));
+  log::info("merged {} runs of {} shard(s) into {}", plan.runs.size(), manifests.size(), dir.string());
+  return plan.sweep;
 }
 
 std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options) {

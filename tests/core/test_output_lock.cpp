@@ -95,3 +95,45 @@ TEST(OutputLock, OneOutputFileIsLockedBesideItAndFoldersThatCannotBeWrittenAreRe
   EXPECT_THROW(OutputLock::folder(dir / "plain", "test"), OutputError);  // a file where the folder should be
   fs::remove_all(dir.parent_path());
 }
+
+// Shards of one ensemble (--task K/N) share a folder; another ensemble's
+// shards and an exclusive writer are refused while any shard holds it, and a
+// shard is refused while an exclusive writer holds it. (flock conflicts
+// between open files, so one process can play several shards.)
+TEST(OutputLock, ShardsOfOneEnsembleShareAFolderAndNobodyElse) {
+  const auto dir = scratch("shards");
+  {
+    const OutputLock a = OutputLock::folder(dir, "wearscale run s.toml --task 1/2", OutputLock::Mode::Shared, "E1");
+    const OutputLock b = OutputLock::folder(dir, "wearscale run s.toml --task 2/2", OutputLock::Mode::Shared, "E1");
+    try {
+      OutputLock::folder(dir, "wearscale run s.toml");
+      ADD_FAILURE() << "an exclusive lock was granted beside shards";
+    } catch (const OutputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("is being written by process"));
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("--task 1/2"));  // the first shard's command
+    }
+    try {
+      OutputLock::folder(dir, "wearscale run t.toml --task 1/3", OutputLock::Mode::Shared, "E2");
+      ADD_FAILURE() << "a shard of another ensemble was admitted";
+    } catch (const OutputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("shards of another ensemble"));
+    }
+    {
+      const OutputLock c = OutputLock::folder(dir, "wearscale run s.toml --task 1/5", OutputLock::Mode::Shared, "E1");
+    }  // a shard that leaves while others hold the folder leaves the lock file to them
+    EXPECT_TRUE(fs::exists(dir / OutputLock::kFolderLockName));
+  }
+  EXPECT_FALSE(fs::exists(dir / OutputLock::kFolderLockName));  // the last shard removed it
+  {
+    const OutputLock whole = OutputLock::folder(dir, "wearscale merge shards");
+    try {
+      OutputLock::folder(dir, "wearscale run s.toml --task 1/2", OutputLock::Mode::Shared, "E1");
+      ADD_FAILURE() << "a shard was admitted beside an exclusive writer";
+    } catch (const OutputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("wearscale merge shards"));
+    }
+  }
+  // A killed run's lock file (no holder) does not keep a shard out.
+  std::ofstream(dir / OutputLock::kFolderLockName) << "pid: 1\nhost: gone\ncommand: wearscale run old.toml\n";
+  const OutputLock again = OutputLock::folder(dir, "wearscale run s.toml --task 2/2", OutputLock::Mode::Shared, "E3");
+}

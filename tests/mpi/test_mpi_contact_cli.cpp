@@ -134,7 +134,6 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
        "contact.friction"},
       {"--set contact.surface=rough.h5", "contact.surface"},
       {"--set contact.grid=7", "contact.grid"},
-      {"--set sweep.key=contact.grid --set 'sweep.values=[128, 256]'", "sweep"},
       {"--resume elsewhere", "--resume"}};
   int k = 0;
   for (const auto& [set, key] : cases) {

@@ -34,6 +34,25 @@ int rank();
 int size();
 inline bool is_root() { return rank() == 0; }
 
+/// The job as launched, whatever Alone says: for the task farm, and abort().
+int world_rank();
+int world_size();
+
+/// While one lives, this process computes on its own (a task of the farm,
+/// core/task_farm.hpp): active() is false, rank() 0 and size() 1, so a study
+/// run as a task takes its serial path and makes no collective call. The
+/// farm itself talks to the other ranks through world_rank()/world_size().
+class Alone {
+ public:
+  Alone();
+  ~Alone();
+  Alone(const Alone&) = delete;
+  Alone& operator=(const Alone&) = delete;
+
+ private:
+  bool was_;
+};
+
 /// Ends every rank of the job with `code` (MPI_Abort); std::exit(code) when serial.
 [[noreturn]] void abort(int code);
 /// Waits for every rank.

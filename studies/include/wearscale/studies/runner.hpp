@@ -8,6 +8,17 @@
 // second key and its values) repeats the sweep once per series value, one
 // table and one curve each.
 //
+// Ensembles scale out (#21). Under `mpirun -np P` (or srun) the runs of a
+// sweep go over the ranks by the task farm (core/task_farm.hpp): dynamic
+// scheduling, rank 0 alone writes the sweep's table and summary, each run
+// writes its own folder; the results are those of a run without mpirun. A
+// run that fails with bad input or a numerical failure is marked in the table
+// (column `failed`, summary.json `failed`) and the job ends with status 1
+// once the table is written. `task = "K/N"` (`--task K/N`, a job array) runs
+// only the runs k with k mod N = K−1 into the same folder (a shared folder
+// lock, no shared file written; each shard leaves task-K-of-N.json);
+// merge_shards() then writes the table and summary a whole run would have.
+//
 // Long runs checkpoint ([run] checkpoint_interval, checkpoint_steps) into
 // checkpoint.h5 in their output folder; `resume_dir` continues a killed or
 // interrupted run from it (a sweep: only its unfinished runs), with results
@@ -38,6 +49,7 @@ struct RunOptions {
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set (messages name "--set KEY=VALUE")
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
   std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
+  std::string task;  ///< --task K/N: only the K-th of N shards of the case's ensemble (its [sweep]); "": all
 };
 
 struct RunSummary {
@@ -68,6 +80,13 @@ struct RunSummary {
 /// The outputs of a run appear together, with its summary.json last
 /// (OutputSet); a sweep shares the thread budget (-j) among its runs.
 RunSummary run_case(const RunOptions& options);
+
+/// `wearscale merge DIR`: the sweep table and summary.json of the ensemble
+/// whose shards (`--task K/N`) ran into DIR, the same files a run of the whole
+/// ensemble writes. InputError, nothing written, when a run is not complete
+/// (naming the missing runs and the shards that owe them), when DIR holds no
+/// shards, or when the case changed since; OutputError while a shard still runs.
+RunSummary merge_shards(const std::filesystem::path& dir, const std::string& command);
 
 /// Parses the case afresh (a sweep applies each value to its own copy).
 using CaseLoader = std::function<Config()>;

@@ -1,0 +1,71 @@
+#pragma once
+// A task farm over the ranks of an MPI job: the independent tasks of an
+// ensemble (the runs of a sweep) handed out one at a time, so tasks that
+// differ 10× in cost balance over the ranks. Rank 0 hands out the indices
+// (dynamically, the next to whichever rank asks) and also computes on a
+// thread of its own; every rank runs a task on its own (mpi::Alone: the
+// task's study sees one rank and makes no collective call) with the threads
+// the rank is given (-j, OMP_NUM_THREADS); a task's result (a short text,
+// e.g. the run's summary as JSON) comes back to rank 0, which alone writes the
+// ensemble's shared outputs. Serial (one rank, or a build without MPI): the
+// tasks run in order in the calling thread.
+//
+// A task that throws an InputError (an OutputError too) or a NumericalError
+// fails that task, which is marked and reported, not the job; any other
+// exception ends the job (mpi::abort through main), and a rank that dies
+// ends it too (the launcher's doing), so no rank waits forever.
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "wearscale/core/errors.hpp"
+
+namespace wearscale::mpi {
+
+struct TaskResult {
+  enum class Status { Done, Failed, NotRun };
+  Status status = Status::NotRun;  ///< NotRun: the farm stopped (SIGINT) before it
+  std::string text;                ///< Done: what the task returned; Failed: the error message
+  bool numerical = false;          ///< Failed by a NumericalError (else by an InputError)
+  int rank = 0;                    ///< the rank that ran it
+  int threads = 1;                 ///< the OpenMP threads it ran with
+  double seconds = 0.0;            ///< its wall time
+};
+
+struct FarmOptions {
+  std::string label = "tasks";     ///< the progress line's label (rank 0, on a terminal only)
+  bool show_progress = true;       ///< false: no progress line (a farm inside a run that shows its own)
+  std::function<bool()> stop;      ///< no task is handed out once it returns true (SIGINT)
+};
+
+/// What a farm did, on every rank (rank 0's figures, shared with all).
+struct FarmOutcome {
+  std::vector<TaskResult> results;  ///< rank 0: one per task, in task order; other ranks: empty
+  long long failed = 0;             ///< tasks that failed (every rank)
+  long long not_run = 0;            ///< tasks not started because the farm stopped (every rank)
+};
+
+/// Runs task(k) for every k in [0, count) over the ranks. Collective: every
+/// rank calls it with the same count and an equivalent task. `task` returns
+/// the result's text (any bytes). Inside a task (mpi::Alone) a farm runs its
+/// tasks in order on the calling thread: an ensemble within an ensemble's
+/// task stays on the rank that runs it.
+FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task,
+                 const FarmOptions& options = {});
+
+/// Some tasks of an ensemble failed (each marked in its table); thrown on
+/// every rank together once the ensemble's outputs are written, so the job
+/// ends with status 1 (exit_numerical_failure) without an abort. `speaks` on
+/// rank 0 only, whose message says which tasks failed and why.
+class TasksFailed : public std::runtime_error {
+ public:
+  TasksFailed(const std::string& message, bool speaks) : std::runtime_error(message), speaks_(speaks) {}
+  bool speaks() const { return speaks_; }
+
+ private:
+  bool speaks_;
+};
+
+}  // namespace wearscale::mpi

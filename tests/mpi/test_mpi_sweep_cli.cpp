@@ -1,0 +1,148 @@
+// `mpirun -np P wearscale run SWEEP`: the runs of a sweep over the ranks (the
+// task farm), against the same sweep run without mpirun: every output equal
+// (tables, summaries, HDF5 datasets bit for bit; fft_planning = "estimate")
+// at P = 1, 3, 7 (7 > the 4 runs); a killed rank ends the job and a resume
+// under another P finishes it; a run that fails is marked in the table, the
+// job ends with status 1, said once. Runs mpirun itself (label "mpi").
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "same_outputs.hpp"
+#include "scratch_dir.hpp"
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+namespace {
+const ScratchDir work_scratch("wearscale_mpi_sweep_cli_");
+const fs::path work = work_scratch.path();
+
+// The oxide-thickness sweep of the pin-on-disc case, reduced: 32² cells, a short slide, four thicknesses.
+const std::string sweep_args =
+    "run sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.05 --set run.fft_planning=estimate -q";
+
+void write_case() {
+  if (fs::exists(work / "sweep.toml")) return;
+  fs::create_directories(work);
+  std::ofstream(work / "sweep.toml") << slurp(fs::path(WEARSCALE_SOURCE_DIR) / "cases/pin_on_disc_si_oxide.toml")
+                                     << "\n[sweep]\nkey = \"materials.layer.thickness\"\nvalues = [0, 1e-6, 3e-6, "
+                                        "\"inf\"]\ntable = \"friction_vs_thickness.csv\"\n";
+}
+
+// `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank.
+CliResult run(int ranks, const std::string& args) {
+  write_case();
+  const std::string launcher =
+      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
+  const auto out = work / "cli.stdout", err = work / "cli.stderr";
+  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + launcher + "'" +
+                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+// The sweep without mpirun, once for every test here.
+const fs::path& serial_reference() {
+  static const fs::path dir = [] {
+    const auto r = run(0, sweep_args + " --out serial");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return work / "serial";
+  }();
+  return dir;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(MpiSweepCli, OneThreeAndSevenRanksGiveTheSerialOutputs) {
+  const auto& serial = serial_reference();
+  ASSERT_TRUE(fs::exists(serial / "friction_vs_thickness.csv"));
+  for (int ranks : {1, 3, 7}) {
+    const std::string dir = "np" + std::to_string(ranks);
+    const auto r = run(ranks, sweep_args + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    same_outputs::expect_same_outputs(serial, work / dir);
+  }
+}
+
+TEST(MpiSweepCli, AFailedRunIsMarkedInTheTableAndTheJobEndsWithStatus1) {
+  // A contact sweep over the iteration limit: 3 iterations cannot converge (a
+  // numerical failure of that run alone), 200 can.
+  const auto r = run(3, "contact '" WEARSCALE_SOURCE_DIR "/cases/rough_contact.toml' --set contact.grid=128 "
+                        "--set contact.max_iterations=200 --set sweep.key=contact.max_iterations --set 'sweep.values=[3, 200]' -q --out failing");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(count("\n" + r.err, "\nerror: "), 1u) << r.err;  // said once, by rank 0
+  EXPECT_THAT(r.err, HasSubstr("1 of 2 runs failed"));
+  EXPECT_THAT(r.err, HasSubstr("no convergence"));
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("MPI_ABORT")));
+  const auto table = slurp(work / "failing" / "sweep.csv");
+  EXPECT_THAT(table, HasSubstr(",failed"));
+  const auto summary = nlohmann::json::parse(slurp(work / "failing" / "summary.json"));
+  ASSERT_EQ(summary["failed"].size(), 1u);
+  EXPECT_EQ(summary["failed"][0]["run"], 1);
+  EXPECT_TRUE(fs::exists(work / "failing" / "max_iterations=200" / "summary.json"));
+  EXPECT_FALSE(fs::exists(work / "failing" / "max_iterations=3" / "summary.json"));
+}
+
+TEST(MpiSweepCli, AKilledRankEndsTheJobAndAResumeUnderAnotherCountFinishesIt) {
+  // Runs six times longer (about 1 s each), so that the kill falls while runs are under way.
+  const std::string args = sweep_args + " --set scale.macro.distance=0.3";
+  ASSERT_EQ(run(0, args + " --out uninterrupted").status, 0);
+  // Three ranks; one worker is killed (SIGKILL) once the first run has finished.
+  const std::string cmd = "cd '" + work.string() + "' && exec env CI=true OMP_NUM_THREADS=1 " WEARSCALE_MPIRUN
+                          " -np 3 '" + std::string(WEARSCALE_CLI) + "' " + args +
+                          " --out killed >killed.out 2>killed.err";
+  const pid_t job = ::fork();
+  if (job == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ASSERT_GT(job, 0);
+  bool killed = false;
+  for (int wait = 0; wait < 600 && !killed; ++wait) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    bool some_done = false;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(work / "killed", ec))
+      some_done = some_done || fs::exists(e.path() / "summary.json");
+    if (!some_done) continue;
+    // A worker rank: the wearscale process whose OMPI_COMM_WORLD_RANK is not 0.
+    const std::string find = "for p in $(pgrep -f -- '--out killed'); do "
+                              "tr '\\0' '\\n' </proc/$p/environ | grep -qx 'OMPI_COMM_WORLD_RANK=[12]' && echo $p; done";
+    FILE* pipe = ::popen(find.c_str(), "r");
+    char line[64] = {};
+    const bool got = pipe != nullptr && std::fgets(line, sizeof line, pipe) != nullptr;
+    if (pipe != nullptr) ::pclose(pipe);
+    if (got && std::atoi(line) > 0) killed = ::kill(std::atoi(line), SIGKILL) == 0;
+  }
+  int status = 0;
+  ::waitpid(job, &status, 0);
+  ASSERT_TRUE(killed) << "no worker rank was found to kill";
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << "the job went on without its rank";
+  EXPECT_FALSE(fs::exists(work / "killed" / "summary.json"));
+  std::size_t finished = 0;
+  for (const auto& e : fs::directory_iterator(work / "killed"))
+    finished += fs::exists(e.path() / "summary.json") ? 1 : 0;
+  EXPECT_GE(finished, 1u);
+  EXPECT_LT(finished, 4u) << "every run had finished before the kill: nothing was left to resume";
+  // Resumed on two ranks: the runs that had finished are kept, the others run again.
+  const auto r = run(2, args + " --resume killed");
+  ASSERT_EQ(r.status, 0) << r.err;
+  same_outputs::expect_same_outputs(work / "uninterrupted", work / "killed");
+}
