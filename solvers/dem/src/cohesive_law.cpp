@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/dem/coulomb_cap.hpp"
 #include "wearscale/dem/neighbor_list.hpp"
 #include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/dem/particles.hpp"
@@ -251,19 +252,7 @@ struct CohesiveKernel {
     if (advance) xi -= dot(xi, n) * n;
     Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
     const double cap = std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.4)-(6.5)
-    const double f2 = dot(f_t, f_t);
-    const bool capped = f2 > cap * cap;
-    const double ratio = cap / std::sqrt(f2);
-    const Vec3 lag = v_t * (p.c_t / p.k_t);
-    const Vec3 stretched = ratio * (xi + lag) - lag;
-    const Vec3 scaled = f_t * ratio;
-    const bool rescale = capped && sliding, drop = capped && !sliding;
-    xi.x = rescale ? stretched.x : xi.x;
-    xi.y = rescale ? stretched.y : xi.y;
-    xi.z = rescale ? stretched.z : xi.z;
-    f_t.x = drop ? 0.0 : (rescale ? scaled.x : f_t.x);
-    f_t.y = drop ? 0.0 : (rescale ? scaled.y : f_t.y);
-    f_t.z = drop ? 0.0 : (rescale ? scaled.z : f_t.z);
+    cap_tangential(f_t, xi, v_t * (p.c_t / p.k_t), cap, sliding);
     // Out of reach: no force, the history cleared; the history moves only in
     // the step's evaluation.
     const bool store = with_tangential && advance;

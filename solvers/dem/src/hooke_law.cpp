@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "wearscale/dem/cohesive_law.hpp"
+#include "wearscale/dem/coulomb_cap.hpp"
 #include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/particles.hpp"
@@ -41,22 +42,8 @@ inline PairForce HookeLaw::contact(std::size_t, const PairState& s, const double
   if (advance) shear -= del * (dot(shear, del) * rsqinv);
   const double damp_t = meff * gamma_t;
   Vec3 fs = -(k_t * shear + damp_t * vtr);
-  const double fs2 = dot(fs, fs);
   const double fn = friction * std::fabs(ccel * r);
-  // Coulomb cap: above it the force is scaled to the cap and the spring
-  // stretched back to match (none of this is used when it does not bite).
-  const bool capped = fs2 > fn * fn;
-  const double ratio = fn / std::sqrt(fs2);
-  const Vec3 dv = vtr * (damp_t / k_t);
-  const Vec3 stretched = ratio * (shear + dv) - dv;
-  const Vec3 scaled = fs * ratio;
-  const bool rescale = capped && sheared, drop = capped && !sheared;
-  shear.x = rescale ? stretched.x : shear.x;
-  shear.y = rescale ? stretched.y : shear.y;
-  shear.z = rescale ? stretched.z : shear.z;
-  fs.x = drop ? 0.0 : (rescale ? scaled.x : fs.x);
-  fs.y = drop ? 0.0 : (rescale ? scaled.y : fs.y);
-  fs.z = drop ? 0.0 : (rescale ? scaled.z : fs.z);
+  cap_tangential(fs, shear, vtr * (damp_t / k_t), fn, sheared);  // Coulomb cap
   // A pair out of contact has no force and forgets its history.
   updated[0] = touching ? shear.x : 0.0;
   updated[1] = touching ? shear.y : 0.0;
