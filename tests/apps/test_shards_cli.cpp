@@ -7,12 +7,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "oxide_sweep_case.hpp"
 #include "same_outputs.hpp"
 #include "scratch_dir.hpp"
 
@@ -28,12 +28,7 @@ const std::string sweep_args =
     "run sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.05 --set run.fft_planning=estimate -q -j 1";
 
 CliResult run(const std::string& args) {
-  if (!fs::exists(work / "sweep.toml")) {
-    fs::create_directories(work);
-    std::ofstream(work / "sweep.toml") << slurp(fs::path(WEARSCALE_SOURCE_DIR) / "cases/pin_on_disc_si_oxide.toml")
-                                       << "\n[sweep]\nkey = \"materials.layer.thickness\"\nvalues = [0, 5e-7, 1e-6, "
-                                          "3e-6, \"inf\"]\ntable = \"friction_vs_thickness.csv\"\n";
-  }
+  write_oxide_sweep_case(work, "0, 5e-7, 1e-6, 3e-6, \"inf\"");
   return run_cli(args, work, "OMP_NUM_THREADS=1");
 }
 

@@ -12,13 +12,13 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "oxide_sweep_case.hpp"
 #include "same_outputs.hpp"
 #include "scratch_dir.hpp"
 
@@ -33,17 +33,9 @@ const fs::path work = work_scratch.path();
 const std::string sweep_args =
     "run sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.05 --set run.fft_planning=estimate -q";
 
-void write_case() {
-  if (fs::exists(work / "sweep.toml")) return;
-  fs::create_directories(work);
-  std::ofstream(work / "sweep.toml") << slurp(fs::path(WEARSCALE_SOURCE_DIR) / "cases/pin_on_disc_si_oxide.toml")
-                                     << "\n[sweep]\nkey = \"materials.layer.thickness\"\nvalues = [0, 1e-6, 3e-6, "
-                                        "\"inf\"]\ntable = \"friction_vs_thickness.csv\"\n";
-}
-
 // `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank.
 CliResult run(int ranks, const std::string& args) {
-  write_case();
+  write_oxide_sweep_case(work, "0, 1e-6, 3e-6, \"inf\"");
   const std::string launcher =
       ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
   const auto out = work / "cli.stdout", err = work / "cli.stderr";
