@@ -695,7 +695,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
 // every rank with status 2, nothing written); then rank 0 runs the study into
 // its folder as a single run does and the other ranks make the same
 // collective calls (Study::run_other_rank), writing nothing.
-RunSummary run_distributed(const RunOptions& options) {
+RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
   std::optional<PreparedRun> run;
   std::optional<OutputLock> lock;
   const std::string command = command_line(options, thread_budget());
@@ -705,10 +705,8 @@ RunSummary run_distributed(const RunOptions& options) {
       throw InputError(fmt::format("--resume {}: a run on {} MPI ranks writes no checkpoints and is not resumed; run "
                                    "it again, or resume a run made without mpirun without mpirun",
                                    options.resume_dir->string(), mpi::size()));
-    Config cfg = options.case_text ? Config::from_string(*options.case_text, options.case_file.string())
-                 : options.case_file.empty() ? Config::from_string("", "<command line>")
-                                             : Config::load(options.case_file);
-    for (const auto& o : options.overrides) cfg.override_value(o);
+    // The case as a single run reads it: the file, the command's flags (--n, --grid, ...) and every --set.
+    Config cfg = load(parse, options);
     run.emplace(prepare(std::move(cfg), options.output_dir, options));
     if (!run->study->distributed())
       throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
@@ -756,7 +754,7 @@ RunSummary run_case(const RunOptions& options_in) {
       options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   });
   if (probe->has("sweep")) return run_sweep(parse, options, *probe, threads, shard);
-  if (mpi::size() > 1) return run_distributed(options_in);
+  if (mpi::size() > 1) return run_distributed(parse, options_in);
   PreparedRun run = prepare(std::move(*probe), options.output_dir, options);  // a single run: the file is parsed once
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);

@@ -114,6 +114,19 @@ TEST(MpiContactCli, TwoAndThreeRanksGiveTheSerialSummaryAndFiles) {
   }
 }
 
+TEST(MpiContactCli, TheCommandsFlagsCountUnderMpirunAsWithout) {
+  // --pressure is the flag of contact.mean_pressure: half the case's load, under mpirun as without it.
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --pressure 0.015 --json";
+  const auto serial = run(0, args + " -q --out serial_flag");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto s = nlohmann::json::parse(serial.out);
+  const auto slab = run(2, args + " --out slab_flag");
+  ASSERT_EQ(slab.status, 0) << slab.err;
+  const auto p = nlohmann::json::parse(slab.out);
+  EXPECT_DOUBLE_EQ(p["parameters"]["contact"]["mean_pressure"].get<double>(), 0.015) << slab.out;
+  expect_same_results(s, p, 2);
+}
+
 TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   const std::string args = "contact " + rough_case +
                            " --set contact.grid=160 --set contact.sphere.radius=2 --set contact.rough.hprime_rms=0.2 "
