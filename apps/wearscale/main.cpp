@@ -10,6 +10,7 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -74,7 +75,7 @@ int run(int argc, char** argv) {
   int threads = 0;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr; no progress bar");
   app.add_flag("-v,--verbose", verbose, "Debug messages on stderr");
-  app.add_option("-j,--threads", threads, "OpenMP and FFTW threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.add_option("-j,--threads", threads, "OpenMP and FFTW threads (default: all cores; under mpirun, the cores shared among the ranks of a node)")->check(CLI::Range(1, 1024));
   app.set_version_flag("--version", "wearscale " + version(), "Print the version of wearscale and exit");
   // Before the subcommands, which inherit it: every command's help at once (for help2man, the man page).
   app.set_help_all_flag("--help-all", "Print the help of every command and exit");
@@ -117,6 +118,8 @@ int run(int argc, char** argv) {
   }
 
   log::set_level(quiet ? log::Level::Quiet : verbose ? log::Level::Verbose : log::Level::Normal);
+  // Under mpirun, a rank's share of its node's cores unless -j or OMP_NUM_THREADS says.
+  if (threads == 0 && std::getenv("OMP_NUM_THREADS") == nullptr) threads = mpi::default_threads_per_rank();
   if (threads > 0) {
     omp_set_num_threads(threads);
     FFTPlanCache::global().set_threads(threads);

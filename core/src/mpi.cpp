@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <omp.h>
+
 #ifdef WEARSCALE_MPI
 #include <mpi.h>
 #endif
@@ -16,7 +18,7 @@ namespace {
 // The job (world) as MPI_Init found it; `g_alone` while this process runs a
 // farmed task (task_farm.hpp): active(), rank() and size() then say serial.
 bool g_active = false;
-int g_rank = 0, g_size = 1;
+int g_rank = 0, g_size = 1, g_node_size = 1;
 std::atomic<bool> g_alone{false};
 
 #ifdef WEARSCALE_MPI
@@ -46,6 +48,10 @@ Session::Session(int& argc, char**& argv) {
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
   MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
   MPI_Comm_size(MPI_COMM_WORLD, &g_size);
+  MPI_Comm node;  // the ranks that share this node's memory (and cores)
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, g_rank, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &g_node_size);
+  MPI_Comm_free(&node);
   g_active = true;
 #else
   (void)argc;
@@ -60,6 +66,7 @@ Session::~Session() {
   g_active = false;
   g_rank = 0;
   g_size = 1;
+  g_node_size = 1;
 }
 
 bool active() { return g_active && !g_alone; }
@@ -67,6 +74,12 @@ int rank() { return g_alone ? 0 : g_rank; }
 int size() { return g_alone ? 1 : g_size; }
 int world_rank() { return g_rank; }
 int world_size() { return g_size; }
+int node_size() { return g_node_size; }
+
+int default_threads_per_rank() {
+  if (g_size <= 1) return 0;
+  return std::max(1, omp_get_num_procs() / std::max(1, g_node_size));
+}
 
 Alone::Alone() : was_(g_alone.exchange(true)) {}
 Alone::~Alone() { g_alone = was_; }

@@ -37,6 +37,15 @@ inline bool is_root() { return rank() == 0; }
 /// The job as launched, whatever Alone says: for the task farm, and abort().
 int world_rank();
 int world_size();
+/// The ranks of the job on this node (this one included; 1 when serial).
+int node_size();
+
+/// The OpenMP threads a rank takes when neither -j nor OMP_NUM_THREADS says:
+/// the cores this process may run on shared among the ranks of its node (at
+/// least 1), so P ranks on a node do not start P teams of all its cores each
+/// (spinning teams on shared cores slow each other down tenfold). 0 when
+/// serial: the OpenMP default (every core) stands.
+int default_threads_per_rank();
 
 /// While one lives, this process computes on its own (a task of the farm,
 /// core/task_farm.hpp): active() is false, rank() 0 and size() 1, so a study
