@@ -8,12 +8,16 @@
 // candidate) against the fast model on a few pixels (summary field `baseline`).
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "wear_map_output.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/core/task_farm.hpp"
 #include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/io/csv.hpp"
@@ -155,6 +159,67 @@ nlohmann::json naive_baseline(const wear::RoughWearMapSpec& spec, std::size_t na
           {"same_particle_counts", same}};
 }
 
+// One surface on the wire between ranks (CBOR: doubles travel as their 8 bytes, so the map is the serial one bit for bit).
+std::string to_message(const wear::SurfaceWearMap& f) {
+  nlohmann::json particles = nlohmann::json::array();
+  for (const auto& p : f.particles) particles.push_back({p.seed, p.load_index, p.dstar_index, p.x, p.y, p.diameter});
+  const nlohmann::json j = {{"index", f.index}, {"count", f.count}, {"volume", f.volume}, {"largest", f.largest},
+                            {"fraction", f.contact_fraction}, {"particles", particles},
+                            {"seconds", {f.contact_seconds, f.setup_seconds, f.detach_seconds}},
+                            {"work", {f.candidates, f.energy_evaluations, f.solves}}};
+  const auto bytes = nlohmann::json::to_cbor(j);
+  return {bytes.begin(), bytes.end()};
+}
+
+wear::SurfaceWearMap from_message(const std::string& text) {
+  const auto j = nlohmann::json::from_cbor(text);
+  wear::SurfaceWearMap f;
+  f.index = j.at("index").get<std::size_t>();
+  f.count = j.at("count").get<std::vector<double>>();
+  f.volume = j.at("volume").get<std::vector<double>>();
+  f.largest = j.at("largest").get<std::vector<double>>();
+  f.contact_fraction = j.at("fraction").get<std::vector<double>>();
+  for (const auto& p : j.at("particles"))
+    f.particles.push_back({p[0].get<std::uint64_t>(), p[1].get<std::size_t>(), p[2].get<std::size_t>(),
+                           p[3].get<double>(), p[4].get<double>(), p[5].get<double>()});
+  const auto& t = j.at("seconds");
+  f.contact_seconds = t[0].get<double>(), f.setup_seconds = t[1].get<double>(), f.detach_seconds = t[2].get<double>();
+  const auto& w = j.at("work");
+  f.candidates = w[0].get<std::size_t>(), f.energy_evaluations = w[1].get<std::size_t>(), f.solves = w[2].get<std::size_t>();
+  return f;
+}
+
+// The surfaces over the ranks of an mpirun job (the task farm: one task per
+// seed, each on one rank with its threads), collective; rank 0 gets the map,
+// the others nothing. `tasks` (rank 0): seed, rank, threads and wall time of
+// each surface.
+std::optional<wear::RoughWearMap> map_over_ranks(const wear::RoughWearMapSpec& spec, nlohmann::json& tasks) {
+  mpi::FarmOptions options;
+  options.label = "wearmap rough surfaces";
+  const auto outcome = mpi::farm(
+      spec.seeds.size(), [&](std::size_t s) { return to_message(wear::rough_wear_map_surface(spec, s)); }, options);
+  if (!mpi::is_root()) {
+    if (outcome.failed > 0) throw mpi::TasksFailed("", false);
+    return std::nullopt;
+  }
+  std::vector<wear::SurfaceWearMap> surfaces;
+  std::vector<std::string> failed;
+  tasks = nlohmann::json::array();
+  for (std::size_t s = 0; s < outcome.results.size(); ++s) {
+    const auto& r = outcome.results[s];
+    tasks.push_back({{"seed", spec.seeds[s]}, {"rank", r.rank}, {"threads", r.threads}, {"seconds", r.seconds}});
+    if (r.status == mpi::TaskResult::Status::Done)
+      surfaces.push_back(from_message(r.text));
+    else
+      failed.push_back(fmt::format("seed {} (rank {}): {}", spec.seeds[s], r.rank, r.text));
+  }
+  if (!failed.empty())  // a map needs every surface
+    throw mpi::TasksFailed(fmt::format("wearmap rough: {} of {} surfaces failed: {}", failed.size(), spec.seeds.size(),
+                                       fmt::join(failed, "; ")),
+                           true);
+  return wear::combine_surfaces(spec, surfaces);
+}
+
 class WearmapRough final : public Study {
  public:
   std::string name() const override { return "wearmap/rough"; }
@@ -167,6 +232,12 @@ class WearmapRough final : public Study {
   Schema schema() const override;
   std::vector<std::string> prepare(Config& cfg) override;
   void run(const Config& cfg, RunContext& context) override;
+  // Under mpirun: the surfaces (seeds) over the ranks, rank 0 writing.
+  bool distributed() const override { return true; }
+  void run_other_rank(const Config&) override {
+    nlohmann::json unused;
+    map_over_ranks(spec_, unused);
+  }
 
  private:
   wear::RoughWearMapSpec spec_;  // the resolved [wearmap.rough]
@@ -266,10 +337,15 @@ void WearmapRough::run(const Config& cfg, RunContext& context) {
   const fs::path& out = context.output_dir();
   const std::size_t nl = spec.loads.size(), nd = spec.critical_diameters.size();
   const double contacts = static_cast<double>(spec.seeds.size() * nl);
-  Progress bar = context.show_progress() ? Progress("wearmap rough", contacts, "contacts") : Progress::silent(contacts);
+  // (Under mpirun the farm shows the surfaces done instead.)
+  Progress bar = context.show_progress() && mpi::size() == 1 ? Progress("wearmap rough", contacts, "contacts")
+                                                             : Progress::silent(contacts);
   const auto t0 = std::chrono::steady_clock::now();
-  const auto map = wear::rough_wear_map(spec, [&](std::size_t done, std::size_t) { bar.update(double(done)); });
+  nlohmann::json tasks;
+  const auto map = mpi::size() > 1 ? *map_over_ranks(spec, tasks)
+                                   : wear::rough_wear_map(spec, [&](std::size_t done, std::size_t) { bar.update(double(done)); });
   bar.finish();
+  if (!tasks.is_null()) context.note("tasks", tasks);
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const nlohmann::json baseline =
       naive_pixels_ > 0 ? naive_baseline(spec, naive_pixels_, naive_max_solves_) : nlohmann::json();

@@ -8,7 +8,10 @@
 // Work: the BEM contact depends on (seed, p̃_N) only and is solved once for
 // the whole d* axis (warm-started along the loads); the candidates, the
 // displacement of the full loading and the candidates' self-energies are
-// shared by the d* values, which run in parallel.
+// shared by the d* values, which run in parallel. The surfaces are
+// independent: rough_wear_map_surface() computes one, combine_surfaces()
+// averages them (an ensemble may run its surfaces on different processes and
+// get the same bits as rough_wear_map()).
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -63,7 +66,28 @@ struct RoughWearMap {
   }
 };
 
-/// progress(done, total) after each (seed, p̃_N). NumericalError from the BEM.
+/// One surface's part of the map: what every pixel found on the surface of
+/// seed `seeds[index]`.
+struct SurfaceWearMap {
+  std::size_t index = 0;                      ///< into spec.seeds
+  std::vector<double> count, volume, largest;  ///< per (p̃_N, d*/L), load-major
+  std::vector<double> contact_fraction;       ///< A/A0 per p̃_N
+  std::vector<MapParticle> particles;
+  double contact_seconds = 0.0, setup_seconds = 0.0, detach_seconds = 0.0;
+  std::size_t candidates = 0, energy_evaluations = 0, solves = 0;
+};
+
+/// The surface of seed spec.seeds[index] over every pixel; progress(done,
+/// total) after each p̃_N. NumericalError from the BEM.
+SurfaceWearMap rough_wear_map_surface(const RoughWearMapSpec& spec, std::size_t index,
+                                      const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+/// The map from its surfaces, one per seed in spec.seeds order: mean and
+/// sample standard deviation per pixel, the invalid pixels flagged.
+RoughWearMap combine_surfaces(const RoughWearMapSpec& spec, const std::vector<SurfaceWearMap>& surfaces);
+
+/// Every surface in turn, then combined; progress(done, total) after each
+/// (seed, p̃_N). NumericalError from the BEM.
 RoughWearMap rough_wear_map(const RoughWearMapSpec& spec,
                             const std::function<void(std::size_t, std::size_t)>& progress = {});
 

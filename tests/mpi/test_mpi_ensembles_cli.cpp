@@ -1,0 +1,62 @@
+// The ensembles inside one run over the ranks of `mpirun -np P` (the task
+// farm), against the same command without mpirun: every output equal (tables
+// byte for byte, HDF5 datasets bit for bit, plots), wall times aside, at
+// P = 1, 3, 7 (7 > the tasks). Runs mpirun itself (label "mpi").
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "same_outputs.hpp"
+#include "scratch_dir.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+const ScratchDir work_scratch("wearscale_mpi_ensembles_cli_");
+const fs::path work = work_scratch.path();
+
+// `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank.
+CliResult run(int ranks, const std::string& args) {
+  fs::create_directories(work);
+  const std::string launcher =
+      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
+  const auto out = work / "cli.stdout", err = work / "cli.stderr";
+  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + launcher + "'" +
+                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+}  // namespace
+
+// The rough wear map of Fig. 5.6 reduced: 64² surfaces, two seeds (the farm's
+// tasks), 4 × 4 pixels; its flags (--n, --seeds) count under mpirun as without.
+TEST(MpiEnsemblesCli, TheRoughWearMapsSurfacesOverOneThreeAndSevenRanksGiveTheSerialMap) {
+  const std::string args = "wearmap rough --n 64 --seeds 2 --n-loads 4 --n-dstar 4 -q";
+  const auto serial = run(0, args + " --out wearmap_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  for (int ranks : {1, 3, 7}) {
+    const std::string dir = "wearmap_np" + std::to_string(ranks);
+    const auto r = run(ranks, args + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    same_outputs::expect_same_outputs(work / "wearmap_serial", work / dir, same_outputs::Timings::Ignored);
+    if (ranks == 1) continue;
+    // The summary says which rank ran each surface, on how many threads, for how long.
+    const auto summary = nlohmann::json::parse(slurp(work / dir / "summary.json"));
+    ASSERT_TRUE(summary.contains("tasks")) << summary.dump(2);
+    const auto& tasks = summary["tasks"];
+    ASSERT_EQ(tasks.size(), 2u);
+    for (std::size_t s = 0; s < 2; ++s) {
+      EXPECT_EQ(tasks[s]["seed"].get<int>(), static_cast<int>(s + 1));
+      EXPECT_GE(tasks[s]["rank"].get<int>(), 0);
+      EXPECT_LT(tasks[s]["rank"].get<int>(), ranks);
+      EXPECT_EQ(tasks[s]["threads"].get<int>(), 1);
+      EXPECT_GT(tasks[s]["seconds"].get<double>(), 0.0);
+    }
+  }
+}
