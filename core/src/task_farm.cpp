@@ -3,9 +3,12 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -59,9 +62,59 @@ FarmOutcome count_outcome(std::vector<TaskResult> results) {
   return out;
 }
 
+// The tasks in order on this thread (one rank, or alone).
+FarmOutcome run_in_order(std::size_t count, const std::function<std::string(std::size_t)>& task,
+                         const FarmOptions& options) {
+  std::vector<TaskResult> results(count);
+  Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
+                                            : Progress::silent(static_cast<double>(count));
+  for (std::size_t k = 0; k < count; ++k) {
+    if (options.stop && options.stop()) break;
+    results[k] = run_one(k, task);
+    progress.update(static_cast<double>(k + 1));
+    if (results[k].status == TaskResult::Status::NotRun) break;
+  }
+  progress.finish();
+  return count_outcome(std::move(results));
+}
+
+// The task kinds of this process, by name.
+std::mutex g_kinds_mutex;
+std::map<std::string, TaskKind>& task_kinds() {
+  static std::map<std::string, TaskKind> kinds;
+  return kinds;
+}
+
+TaskKind find_task_kind(const std::string& name) {
+  std::lock_guard guard(g_kinds_mutex);
+  const auto it = task_kinds().find(name);
+  if (it == task_kinds().end()) throw std::logic_error("task farm: no task kind named '" + name + "' on this rank");
+  return it->second;
+}
+
+// Rank 0 runs a study alone while the others serve it (ServedRun).
+std::atomic<bool> g_served{false};
+
 #ifdef WEARSCALE_MPI
 constexpr int kTagResult = 7101;  // worker → rank 0: a result (or, first, a request for work)
 constexpr int kTagTask = 7102;    // rank 0 → worker: the next task's index, or −1: no more
+constexpr int kTagEnsemble = 7103;  // rank 0 → serving rank: an ensemble (kind, descriptions), or nothing: the end
+
+// An ensemble on the wire: the kind's name and the descriptions, each after its length.
+void append_sized(std::string& buf, const std::string& text) {
+  const std::uint64_t n = text.size();
+  buf.append(reinterpret_cast<const char*>(&n), sizeof n);
+  buf.append(text);
+}
+
+std::string read_sized(const std::vector<char>& buf, std::size_t& at) {
+  std::uint64_t n = 0;
+  std::memcpy(&n, buf.data() + at, sizeof n);
+  at += sizeof n;
+  std::string text(buf.data() + at, buf.data() + at + n);
+  at += n;
+  return text;
+}
 
 // A result on the wire: index (−1: none yet), status, numerical, threads, seconds, text.
 std::string encode(long long id, const TaskResult& r) {
@@ -186,20 +239,80 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
 
 }  // namespace
 
-FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task, const FarmOptions& options) {
-  if (size() == 1 || !built_with_mpi()) {  // one rank, or alone (a task of an enclosing farm)
-    std::vector<TaskResult> results(count);
-    Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
-                                              : Progress::silent(static_cast<double>(count));
-    for (std::size_t k = 0; k < count; ++k) {
-      if (options.stop && options.stop()) break;
-      results[k] = run_one(k, task);
-      progress.update(static_cast<double>(k + 1));
-      if (results[k].status == TaskResult::Status::NotRun) break;
+void register_task_kind(const std::string& name, TaskKind kind) {
+  std::lock_guard guard(g_kinds_mutex);
+  task_kinds()[name] = std::move(kind);
+}
+
+ServedRun::ServedRun() : serving_(built_with_mpi() && size() > 1 && rank() == 0) { g_served = serving_; }
+
+ServedRun::~ServedRun() {
+#ifdef WEARSCALE_MPI
+  if (serving_)
+    for (int r = 1; r < world_size(); ++r) MPI_Send(nullptr, 0, MPI_CHAR, r, kTagEnsemble, MPI_COMM_WORLD);
+#endif
+  g_served = false;
+}
+
+bool ServedRun::active() { return g_served; }
+
+void serve_ensembles() {
+#ifdef WEARSCALE_MPI
+  if (world_size() <= 1 || world_rank() == 0) return;
+  std::vector<char> buffer;
+  for (;;) {
+    // Wait for rank 0's next ensemble, polling ever more slowly (0.1 to 20 ms):
+    // a blocking receive would spin a core for as long as rank 0 computes alone.
+    int flag = 0, wait = 100;
+    MPI_Status status;
+    for (;;) {
+      MPI_Iprobe(0, kTagEnsemble, MPI_COMM_WORLD, &flag, &status);
+      if (flag != 0) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(wait));
+      wait = std::min(2 * wait, 20000);
     }
-    progress.finish();
-    return count_outcome(std::move(results));
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_CHAR, &bytes);
+    buffer.resize(static_cast<std::size_t>(bytes));
+    MPI_Recv(buffer.data(), bytes, MPI_CHAR, 0, kTagEnsemble, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (bytes == 0) return;  // the run is over
+    std::size_t at = 0;
+    const TaskKind kind = find_task_kind(read_sized(buffer, at));
+    std::uint64_t count = 0;
+    std::memcpy(&count, buffer.data() + at, sizeof count);
+    at += sizeof count;
+    std::vector<std::string> descriptions(count);
+    for (auto& d : descriptions) d = read_sized(buffer, at);
+    worker([&](std::size_t k) { return kind(descriptions[k]); });
   }
+#endif
+}
+
+FarmOutcome farm_described(const std::string& name, const std::vector<std::string>& descriptions,
+                           const FarmOptions& options) {
+  const TaskKind kind = find_task_kind(name);
+  const auto task = [&](std::size_t k) { return kind(descriptions[k]); };
+  if (!ServedRun::active()) return run_in_order(descriptions.size(), task, options);
+#ifdef WEARSCALE_MPI
+  const auto start = clock::now();
+  std::string message;
+  append_sized(message, name);
+  const std::uint64_t count = descriptions.size();
+  message.append(reinterpret_cast<const char*>(&count), sizeof count);
+  for (const auto& d : descriptions) append_sized(message, d);
+  for (int r = 1; r < world_size(); ++r)
+    MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, r, kTagEnsemble, MPI_COMM_WORLD);
+  auto out = count_outcome(dispatch(descriptions.size(), task, options));
+  log::info("{}: {} tasks on {} ranks in {:.2f} s ({} failed, {} not run)", options.label, descriptions.size(),
+            world_size(), std::chrono::duration<double>(clock::now() - start).count(), out.failed, out.not_run);
+  return out;
+#else
+  return {};
+#endif
+}
+
+FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task, const FarmOptions& options) {
+  if (size() == 1 || !built_with_mpi()) return run_in_order(count, task, options);  // one rank, or alone
 #ifdef WEARSCALE_MPI
   const auto start = clock::now();
   FarmOutcome out;

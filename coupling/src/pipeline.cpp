@@ -70,6 +70,12 @@ std::vector<std::string> Pipeline::ids() const {
   return out;
 }
 
+bool Pipeline::farms_ensembles() const {
+  for (const auto& n : nodes_)
+    if (n.scale->farms_ensembles()) return true;
+  return false;
+}
+
 void Pipeline::run(Exchange& exchange, RunContext& context) {
   if (!ordered_) order();
   for (auto& n : nodes_) {

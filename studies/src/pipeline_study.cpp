@@ -7,6 +7,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/core/task_farm.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/studies/study.hpp"
@@ -73,7 +74,13 @@ class PipelineStudy final : public Study {
     return pipeline_.ids();
   }
 
+  // Under mpirun, when a scale farms ensembles (the junction runs of
+  // nano/dem): rank 0 runs the pipeline, the other ranks serve its ensembles.
+  bool distributed() const override { return pipeline_.farms_ensembles(); }
+  void run_other_rank(const Config& /*inputs*/) override { mpi::serve_ensembles(); }
+
   void run(const Config& /*inputs*/, RunContext& context) override {
+    const mpi::ServedRun served;  // under mpirun: the other ranks serve; this rank runs the scales alone
     Exchange exchange;
     pipeline_.run(exchange, context);
     write_exchange_provenance(exchange, context.h5());

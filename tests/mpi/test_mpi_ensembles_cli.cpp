@@ -60,3 +60,28 @@ TEST(MpiEnsemblesCli, TheRoughWearMapsSurfacesOverOneThreeAndSevenRanksGiveTheSe
     }
   }
 }
+
+// Fig. 7.2's junction runs (nano/dem in a pipeline) reduced: a 12 × 6 cell,
+// two sizes D/L at two pressures (the farm's tasks), a short slide, no cache;
+// rank 0 runs the pipeline, the others serve its junction runs.
+TEST(MpiEnsemblesCli, TheJunctionRunsOfNanoDemOverOneThreeAndSevenRanksGiveTheSerialLaw) {
+  const std::string args = "run '" WEARSCALE_SOURCE_DIR "/cases/junction_sio2.toml' --set scale.nano.length=12 "
+                           "--set scale.nano.height=6 --set scale.nano.cache=false --set 'scale.nano.contact_ratios=[0.5, 1]' "
+                           "--set 'scale.nano.pressures=[1e9, 4e9]' --set scale.nano.sliding_distance=0.2 -q";
+  const auto serial = run(0, args + " --out junction_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  for (int ranks : {1, 3, 7}) {
+    const std::string dir = "junction_np" + std::to_string(ranks);
+    const auto r = run(ranks, args + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    same_outputs::expect_same_outputs(work / "junction_serial", work / dir, same_outputs::Timings::Ignored);
+    if (ranks == 1) continue;
+    const auto summary = nlohmann::json::parse(slurp(work / dir / "summary.json"));
+    ASSERT_TRUE(summary.contains("tasks")) << summary.dump(2);
+    ASSERT_EQ(summary["tasks"].size(), 4u);
+    for (const auto& t : summary["tasks"]) {
+      EXPECT_LT(t["rank"].get<int>(), ranks);
+      EXPECT_GT(t["seconds"].get<double>(), 0.0);
+    }
+  }
+}

@@ -25,10 +25,13 @@
 
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
+#include "backends/junction_messages.hpp"
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/cache_folder.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/task_farm.hpp"
 #include "wearscale/core/worker_pool.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/junction_strength.hpp"
@@ -43,6 +46,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using dem::JunctionStrengthResult;
+
+constexpr const char* kJunctionTask = "nano/dem junction";  // a run on any rank of an mpirun job
 using dem::JunctionStrengthSpec;
 
 constexpr const char* cache_version = "wearscale-dem-junction-v3";  // v3: thin cells, the tangential cap of the thesis code
@@ -255,7 +260,13 @@ class NanoDem final : public Scale {
     cache_dir_ = c.has("cache_dir") ? expand_home(c.string("cache_dir")) : cache_folder("dem");
     const long threads = std::max(1, omp_get_max_threads());
     jobs_ = static_cast<int>(c.integer_or("jobs", threads, Range::closed(1, 256)));
+    // Under mpirun any rank may be handed a junction run (run_all).
+    mpi::register_task_kind(kJunctionTask, [](const std::string& spec) {
+      return to_message(dem::run_junction_strength(spec_from_message(spec)));
+    });
   }
+
+  bool farms_ensembles() const override { return true; }
 
   std::vector<Key> consumes() const override {
     std::vector<Key> out{{Quantity::ShearStrength, pin_}};
@@ -378,9 +389,11 @@ class NanoDem final : public Scale {
   }
 
   // Runs (or reads) every junction, on jobs_ threads; each run is computed
-  // once per process and once per cache.
+  // once per process and once per cache. Under mpirun (a served run): the
+  // runs not in the cache over the ranks instead, rank 0 writing the cache.
   std::vector<Run> run_all(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair,
                            RunContext& ctx) const {
+    if (mpi::ServedRun::active()) return run_over_ranks(specs, pair, ctx);
     std::vector<std::string> keys;
     for (const auto& s : specs) keys.push_back(run_key(s));
     std::vector<std::shared_future<JunctionStrengthResult>> futures(specs.size());
@@ -409,20 +422,86 @@ class NanoDem final : public Scale {
     return out;
   }
 
+  // The runs over the ranks of an mpirun job (the task farm), those in the
+  // cache read here; a run that fails ends the scale as it would serially.
+  // The summary's "tasks" list which rank ran each, on how many threads, for how long.
+  std::vector<Run> run_over_ranks(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair,
+                                  RunContext& ctx) const {
+    std::vector<std::optional<JunctionStrengthResult>> results(specs.size());
+    std::vector<std::size_t> todo;
+    std::vector<std::string> descriptions;
+    for (std::size_t k = 0; k < specs.size(); ++k) {
+      results[k] = cached(cache_dir_ / (run_key(specs[k]) + ".json"));
+      if (results[k]) continue;
+      todo.push_back(k);
+      descriptions.push_back(to_message(specs[k]));
+    }
+    mpi::FarmOptions options;
+    options.label = "nano/dem " + pair + " junctions";
+    options.stop = [] { return interrupt_requested(); };
+    const auto outcome = mpi::farm_described(kJunctionTask, descriptions, options);
+    for (std::size_t t = 0; t < todo.size(); ++t) {
+      const auto& r = outcome.results[t];
+      const auto& spec = specs[todo[t]];
+      if (r.status == mpi::TaskResult::Status::NotRun) throw Interrupted("nano/dem: junction runs");
+      if (r.status == mpi::TaskResult::Status::Failed) {
+        const std::string what = fmt::format("{} junction D/L = {:g} at p_N = {:.3g} GPa (rank {})", pair,
+                                             spec.contact_ratio, spec.pressure / 1e9, r.rank);
+        if (r.numerical) throw NumericalError("nano/dem", 0, what, r.text);
+        throw InputError(fmt::format("nano/dem: {}: {}", what, r.text));
+      }
+      results[todo[t]] = result_from_message(r.text);
+      log::info("nano/dem: {} D/L = {:g}, p_N = {:.3g} GPa: peak p_T {:.3g} GPa ({}, rank {}, {:.1f} s)", pair,
+                spec.contact_ratio, spec.pressure / 1e9, results[todo[t]]->peak_tangential / 1e9,
+                results[todo[t]]->verdict(), r.rank, r.seconds);
+      store(cache_dir_ / (run_key(spec) + ".json"), *results[todo[t]]);
+    }
+    nlohmann::json tasks = ctx.notes().contains("tasks") ? ctx.notes()["tasks"] : nlohmann::json::array();
+    for (std::size_t t = 0; t < todo.size(); ++t) {
+      const auto& r = outcome.results[t];
+      tasks.push_back({{"interface", pair}, {"contact_ratio", specs[todo[t]].contact_ratio},
+                       {"pressure", specs[todo[t]].pressure}, {"rank", r.rank}, {"threads", r.threads},
+                       {"seconds", r.seconds}});
+    }
+    ctx.note("tasks", std::move(tasks));
+    std::vector<Run> out;
+    for (std::size_t k = 0; k < specs.size(); ++k) {
+      const bool from_cache = std::find(todo.begin(), todo.end(), k) == todo.end();
+      out.emplace_back(specs[k], *results[k], from_cache);
+    }
+    return out;
+  }
+
+  // A run's cache entry, if caching and it is there and readable.
+  std::optional<JunctionStrengthResult> cached(const fs::path& entry) const {
+    if (!cache_) return std::nullopt;
+    std::error_code ec;
+    if (!fs::is_regular_file(entry, ec)) return std::nullopt;
+    try {
+      std::ifstream in(entry);
+      return from_json(nlohmann::json::parse(in));
+    } catch (const std::exception& e) {
+      log::warn("nano/dem: ignoring the unreadable cache entry {}: {}", entry.string(), e.what());
+      return std::nullopt;
+    }
+  }
+
+  // Writes a run's cache entry (atomically: readers see the whole entry or none), if caching.
+  void store(const fs::path& entry, const JunctionStrengthResult& result) const {
+    if (!cache_) return;
+    std::error_code ec;
+    fs::create_directories(cache_dir_, ec);
+    if (ec)
+      throw InputError(fmt::format("nano/dem: cannot create the cache folder {}: {}; set scale.nano.cache_dir or "
+                                   "WEARSCALE_CACHE to a writable folder, or scale.nano.cache = false",
+                                   cache_dir_.string(), ec.message()));
+    write_file_atomically(entry, to_json(result).dump() + "\n");
+  }
+
   JunctionStrengthResult compute(const JunctionStrengthSpec& spec, const std::string& key, const std::string& pair,
                                  RunContext& ctx, bool& fresh) const {
     const fs::path entry = cache_dir_ / (key + ".json");
-    if (cache_) {
-      std::error_code ec;
-      if (fs::is_regular_file(entry, ec)) {
-        try {
-          std::ifstream in(entry);
-          return from_json(nlohmann::json::parse(in));
-        } catch (const std::exception& e) {
-          log::warn("nano/dem: ignoring the unreadable cache entry {}: {}", entry.string(), e.what());
-        }
-      }
-    }
+    if (auto hit = cached(entry)) return *hit;
     log::info("nano/dem: {} junction D/L = {:g} at p_N = {:.3g} GPa ...", pair, spec.contact_ratio, spec.pressure / 1e9);
     // Checkpointed as its own owner in the run's checkpoint (several junctions
     // run side by side; the checkpointer is shared, hence the lock).
@@ -445,15 +524,7 @@ class NanoDem final : public Scale {
               pair, spec.contact_ratio, spec.pressure / 1e9, result.peak_tangential / 1e9,
               result.steady_tangential / 1e9, result.initial_contact_ratio, result.final_contact_ratio,
               result.verdict());
-    if (cache_) {
-      std::error_code ec;
-      fs::create_directories(cache_dir_, ec);
-      if (ec)
-        throw InputError(fmt::format("nano/dem: cannot create the cache folder {}: {}; set scale.nano.cache_dir or "
-                                     "WEARSCALE_CACHE to a writable folder, or scale.nano.cache = false",
-                                     cache_dir_.string(), ec.message()));
-      write_file_atomically(entry, to_json(result).dump() + "\n");
-    }
+    store(entry, result);
     return result;
   }
 

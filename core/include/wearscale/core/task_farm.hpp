@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/mpi.hpp"
 
 namespace wearscale::mpi {
 
@@ -54,6 +55,50 @@ struct FarmOutcome {
 /// task stays on the rank that runs it.
 FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task,
                  const FarmOptions& options = {});
+
+// --- Ensembles met by a study that rank 0 runs alone -------------------------
+//
+// Some studies are one chain of work with ensembles inside it (the junction
+// runs of nano/dem within a pipeline): rank 0 runs the study alone, the other
+// ranks serve it, and each ensemble rank 0 meets is farmed over all of them.
+// Its tasks travel as descriptions (bytes a task kind turns into a result), so
+// a serving rank needs nothing of the study but the kinds registered.
+
+/// A kind of task: its description in, its result out (InputError or
+/// NumericalError fail the task, as in farm()).
+using TaskKind = std::function<std::string(const std::string& description)>;
+
+/// Registers a kind under `name` (again: replaced); every rank registers the
+/// same kinds (e.g. when its study is prepared).
+void register_task_kind(const std::string& name, TaskKind kind);
+
+/// Rank 0 of a job (not alone), while one lives: the other ranks serve (serve_ensembles()), and
+/// farm_described() uses them. It runs the study alone (mpi::Alone), so the
+/// study takes its serial path elsewhere. Its end (or rank 0's failure, which
+/// aborts the job) releases the serving ranks.
+class ServedRun {
+ public:
+  ServedRun();
+  ~ServedRun();
+  ServedRun(const ServedRun&) = delete;
+  ServedRun& operator=(const ServedRun&) = delete;
+  /// A ServedRun lives on this rank and there are ranks to serve it.
+  static bool active();
+
+ private:
+  bool serving_;  // this rank drives the job's ranks (not a task of a farm, not alone); set before alone_
+  Alone alone_;
+};
+
+/// The other ranks: run the ensembles rank 0 farms out until its ServedRun
+/// ends. Waits without spinning (a rank that waits for hours costs no core).
+void serve_ensembles();
+
+/// Rank 0 under a ServedRun: the tasks of kind `kind`, one per description,
+/// over every rank (rank 0 too, on a thread), dynamically; results as farm()'s.
+/// Without a ServedRun (serial, or alone): the tasks in order on this thread.
+FarmOutcome farm_described(const std::string& kind, const std::vector<std::string>& descriptions,
+                           const FarmOptions& options = {});
 
 /// Some tasks of an ensemble failed (each marked in its table); thrown on
 /// every rank together once the ensemble's outputs are written, so the job

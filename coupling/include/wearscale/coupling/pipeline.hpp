@@ -21,6 +21,9 @@ class Pipeline {
   /// Ids in run order (after order()).
   std::vector<std::string> ids() const;
 
+  /// A scale farms ensembles over the ranks of an mpirun job (Scale::farms_ensembles).
+  bool farms_ensembles() const;
+
   /// Runs every scale in order; checks each provided what it declared.
   void run(Exchange& exchange, RunContext& context);
 

@@ -20,6 +20,10 @@ class Scale {
   virtual std::vector<Key> provides() const = 0;
   /// Reads its inputs from `exchange`, computes, puts every key of provides().
   virtual void run(Exchange& exchange, RunContext& context) = 0;
+  /// Under mpirun: whether it farms ensembles over the ranks
+  /// (mpi::farm_described); a pipeline with such a scale runs on rank 0 while
+  /// the other ranks serve it.
+  virtual bool farms_ensembles() const { return false; }
 };
 
 /// What a backend factory receives. A backend reads all its keys in its
