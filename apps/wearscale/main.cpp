@@ -130,12 +130,14 @@ int run(int argc, char** argv) {
   if (mpi::size() > 1 && (command == "backends" || command == "version" || command == "completion" ||
                           command == "merge")) {
     // Only studies spread their work over ranks (the runner decides which:
-    // the contact study in slabs, the runs of a sweep over the task farm);
+    // the contact study in slabs; over the task farm the runs of a sweep, a
+    // wear map's surfaces, the junction runs of nano/dem);
     // P copies of another command would print or write the same at once.
     // Refused on every rank before any work.
     if (mpi::is_root())
       log::error("wearscale {}: runs on one rank only ({} ranks started; under mpirun the studies' commands are "
-                 "distributed: the contact study, and the runs of any [sweep]); run it without mpirun",
+                 "distributed: the contact study, a rough wear map, a nano/dem pipeline, and the runs of any [sweep]); "
+                 "run it without mpirun",
                  command, mpi::size());
     every_rank_refused = true;
     return exit_bad_input;

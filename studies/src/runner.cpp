@@ -710,7 +710,8 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
     run.emplace(prepare(std::move(cfg), options.output_dir, options));
     if (!run->study->distributed())
       throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
-                                   "study is distributed, and the runs of any [sweep]); run it without mpirun",
+                                   "study is distributed, a rough wear map's surfaces, the junction runs of a "
+                                   "nano/dem scale, and the runs of any [sweep]); run it without mpirun",
                                    run->summary.study, mpi::size()));
   });
   mpi::refuse_together([&] {  // the folder: rank 0's alone
