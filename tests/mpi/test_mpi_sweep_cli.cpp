@@ -92,6 +92,42 @@ TEST(MpiSweepCli, AFailedRunIsMarkedInTheTableAndTheJobEndsWithStatus1) {
   EXPECT_FALSE(fs::exists(work / "failing" / "max_iterations=3" / "summary.json"));
 }
 
+// A stop by SIGTERM or SIGINT to mpirun (a scheduler's time limit, Ctrl-C):
+// mpirun passes it to the ranks, which stop, and a resume under another count
+// finishes the sweep with the uninterrupted files.
+TEST(MpiSweepCli, ASignalToMpirunStopsTheJobAndAResumeUnderAnotherCountFinishesIt) {
+  // Runs of about 2 s each: the signal, sent when the first has finished, falls while the last runs.
+  const std::string args = sweep_args + " --set scale.macro.distance=1";
+  ASSERT_EQ(run(0, args + " --out uninterrupted").status, 0);
+  for (const int signal : {SIGTERM, SIGINT}) {
+    const std::string dir = signal == SIGTERM ? "terminated" : "interrupted";
+    const std::string cmd = "cd '" + work.string() + "' && exec env CI=true OMP_NUM_THREADS=1 " WEARSCALE_MPIRUN
+                            " -np 3 '" + std::string(WEARSCALE_CLI) + "' " + args + " --out " + dir + " >" + dir +
+                            ".out 2>" + dir + ".err";
+    const pid_t job = ::fork();
+    if (job == 0) {
+      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ASSERT_GT(job, 0);
+    bool sent = false;
+    for (int wait = 0; wait < 600 && !sent; ++wait) {  // once the first run has finished
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      std::error_code ec;
+      for (const auto& e : fs::directory_iterator(work / dir, ec))
+        if (fs::exists(e.path() / "summary.json")) sent = ::kill(job, signal) == 0;
+    }
+    int status = 0;
+    ::waitpid(job, &status, 0);
+    ASSERT_TRUE(sent) << dir;
+    EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << dir << ": the job ended as if it had finished";
+    EXPECT_FALSE(fs::exists(work / dir / "summary.json")) << dir;
+    const auto r = run(2, args + " --resume " + dir);
+    ASSERT_EQ(r.status, 0) << dir << ": " << r.err;
+    same_outputs::expect_same_outputs(work / "uninterrupted", work / dir);
+  }
+}
+
 TEST(MpiSweepCli, AKilledRankEndsTheJobAndAResumeUnderAnotherCountFinishesIt) {
   // Runs six times longer (about 1 s each), so that the kill falls while runs are under way.
   const std::string args = sweep_args + " --set scale.macro.distance=0.3";
