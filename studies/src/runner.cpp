@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <charconv>
 #include <atomic>
 #include <exception>
@@ -425,7 +426,9 @@ std::string manifest_name(const Shard& shard) { return fmt::format("task-{}-of-{
 // headline figure of the runs), the study's sweep plots and summary.json.
 // `failures` (one per run, "" if it ran) marks the runs that failed: a
 // column `failed` and the list in summary.json; no plots then.
-void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string>& failures) {
+// `tasks`: which rank ran each run, on how many threads, for how long (null: not known, as when merged).
+void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string>& failures,
+                   const nlohmann::json& tasks = nullptr) {
   RunSummary& sweep = plan.sweep;
   std::vector<PreparedRun>& runs = plan.runs;
   const std::string& key = sweep.sweep_key;
@@ -516,6 +519,7 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
     for (auto& f : runs.front().study->finish_sweep(view)) sweep.files.push_back(std::move(f));
   sweep.files.push_back(sweep.output_dir / "summary.json");
   nlohmann::json summary = sweep.to_json();
+  if (!tasks.is_null()) summary["tasks"] = tasks;
   if (any_failed) {
     summary["failed"] = nlohmann::json::array();
     for (std::size_t k = 0; k < runs.size(); ++k)
@@ -586,6 +590,10 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   });
   FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
   std::vector<std::string> failures(runs.size());
+  nlohmann::json tasks = nlohmann::json::array();  // per run: rank, threads, wall time
+  const auto add_task = [&](std::size_t k, int rank, int run_threads, double seconds) {
+    tasks.push_back({{"run", k + 1}, {"rank", rank}, {"threads", run_threads}, {"seconds", seconds}});
+  };
   const std::string what = shard ? fmt::format("shard {} of the sweep", shard->text()) : std::string("sweep");
 
   if (farmed) {
@@ -614,6 +622,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     }
     for (std::size_t t = 0; t < mine.size(); ++t) {
       const auto& r = outcome.results[t];
+      add_task(mine[t], r.rank, r.threads, r.seconds);
       if (r.status == mpi::TaskResult::Status::Done)
         take_run_message(runs[mine[t]].summary, nlohmann::json::parse(r.text));
       else
@@ -636,15 +645,19 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     pool.omp_threads = workers > 1 ? per_run : 0;
     pool.caller_omp_too = true;
     pool.stop = [] { return interrupt_requested(); };
+    std::vector<double> seconds(mine.size(), 0.0);
     run_on_workers(mine.size(), pool, [&](std::size_t t) {
+      const auto start = std::chrono::steady_clock::now();
       try {
         execute(runs[mine[t]], options, false, &command);
       } catch (...) {
         errors[t] = std::current_exception();
       }
+      seconds[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::lock_guard guard(progress_mutex);
       progress.update(static_cast<double>(++done));
     });
+    for (std::size_t t = 0; t < mine.size(); ++t) add_task(mine[t], 0, workers > 1 ? per_run : static_cast<int>(budget), seconds[t]);
     progress.finish();
     try {
       throw_if_interrupted("sweep");  // also when the signal came between runs
@@ -676,7 +689,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     log::info("shard {} done; once every shard is: wearscale merge {}", shard->text(), sweep.output_dir.string());
     return part;
   }
-  publish_sweep(plan, probe, failures);
+  publish_sweep(plan, probe, failures, tasks);
   std::vector<std::string> failed;
   for (std::size_t k = 0; k < runs.size(); ++k)
     if (!failures[k].empty()) failed.push_back(fmt::format("run {} ({}={}): {}", k + 1, key, sweep.sweep_values[k], failures[k]));
