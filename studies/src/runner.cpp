@@ -705,14 +705,16 @@ RunSummary run_distributed(const RunOptions& options) {
       throw InputError(fmt::format("--resume {}: a run on {} MPI ranks writes no checkpoints and is not resumed; run "
                                    "it again, or resume a run made without mpirun without mpirun",
                                    options.resume_dir->string(), mpi::size()));
-    Config cfg = options.case_text ? Config::from_string(*options.case_text, options.case_file.string())
-                 : options.case_file.empty() ? Config::from_string("", "<command line>")
-                                             : Config::load(options.case_file);
-    for (const auto& o : options.overrides) cfg.override_value(o);
-    run.emplace(prepare(std::move(cfg), options.output_dir, options));
+    // As a single run reads it: the case, then the command's flags (--material …), then --set.
+    const CaseLoader parse = [&] {
+      return options.case_text ? Config::from_string(*options.case_text, options.case_file.string())
+             : options.case_file.empty() ? Config::from_string("", "<command line>")
+                                         : Config::load(options.case_file);
+    };
+    run.emplace(prepare(load(parse, options), options.output_dir, options));
     if (!run->study->distributed())
       throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
-                                   "study is distributed, and the runs of any [sweep]); run it without mpirun",
+                                   "study is distributed, the strength table's points, and the runs of any [sweep]); run it without mpirun",
                                    run->summary.study, mpi::size()));
   });
   mpi::refuse_together([&] {  // the folder: rank 0's alone

@@ -1,0 +1,132 @@
+// `mpirun -np P wearscale strength-table --backend lammps`: the pressure
+// points over the ranks (the task farm), each point's lmp on `--ranks 2` of
+// its own (a nested `mpirun -np 2 lmp`, launched from a rank), against the
+// same table without mpirun: the same table, the same strengths; a rerun on
+// the same cache runs nothing. And the result cache across ranks: the runs of
+// a sweep that all ask for the same LAMMPS runs at once run each once (one
+// writer per entry), every run reading the same strengths. Runs mpirun and
+// lmp itself (labels "mpi" and "lammps").
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "scratch_dir.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+const ScratchDir work_scratch("wearscale_mpi_strength_table_");
+const fs::path work = work_scratch.path();
+
+// Two points of the Si smoke preset, cut to a strain of 0.02 (about 400 steps): seconds each.
+const std::string table_args =
+    "strength-table --backend lammps --material Si --pressures 0,5 --ranks 2 --set md.strain_end=0.02 "
+    "--set 'md.window=[0.01, 0.02]' --set md.compression_time=0 --set md.sample_steps=20 -q";
+
+// `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank, the LAMMPS cache in `cache`.
+CliResult run(int ranks, const std::string& args, const std::string& cache) {
+  fs::create_directories(work);
+  const std::string launcher =
+      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
+  const auto out = work / "cli.stdout", err = work / "cli.stderr";
+  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 WEARSCALE_CACHE='" +
+                          (work / cache).string() + "' " + launcher + "'" + std::string(WEARSCALE_CLI) + "' " + args +
+                          " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+nlohmann::json summary(const std::string& dir) { return nlohmann::json::parse(slurp(work / dir / "summary.json")); }
+
+// What a table's run says of its points, less their cost (wall time, cached or not).
+nlohmann::json figures(const std::string& dir) {
+  nlohmann::json rows = summary(dir).at("rows");
+  for (auto& r : rows) {
+    r.erase("wall_seconds");
+    r.erase("cached");
+  }
+  return {{"results", summary(dir).at("results")}, {"rows", rows}};
+}
+
+// Every finished entry of a LAMMPS cache.
+std::vector<fs::path> entries(const std::string& cache) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(work / cache / "lammps"))
+    if (fs::exists(e.path() / "COMPLETE")) out.push_back(e.path());
+  return out;
+}
+}  // namespace
+
+TEST(MpiStrengthTableCli, PointsOverThreeRanksEqualTheSerialTableWithLammpsOnTwoRanksEach) {
+  if (std::system("command -v lmp >/dev/null 2>&1") != 0) GTEST_SKIP() << "no lmp on PATH (apt-get install lammps)";
+  const auto serial = run(0, table_args + " --out serial", "cache-serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  // A cache of its own: every point really runs, `mpirun -np 2 lmp` launched from a rank of this job.
+  const auto farmed = run(3, table_args + " --out np3", "cache-np3");
+  ASSERT_EQ(farmed.status, 0) << farmed.err;
+  EXPECT_EQ(slurp(work / "np3/lammps_smoke_Si.csv"), slurp(work / "serial/lammps_smoke_Si.csv"));
+  EXPECT_EQ(figures("np3"), figures("serial"));
+  const auto ran = entries("cache-np3");
+  ASSERT_EQ(ran.size(), 2u) << "one entry per pressure";
+  for (const auto& e : ran) {
+    EXPECT_NE(slurp(e / "cost.txt").find("ranks 2"), std::string::npos) << e;
+    EXPECT_NE(slurp(e / "log.lammps").find("on 2 procs"), std::string::npos) << e << ": lmp did not run on 2 ranks";
+  }
+  for (const auto& row : summary("np3").at("rows")) EXPECT_FALSE(row.at("cached").get<bool>());
+  // Again on the same cache, on one rank of an MPI job: nothing runs, the same table.
+  const auto again = run(1, table_args + " --out np1", "cache-np3");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(slurp(work / "np1/lammps_smoke_Si.csv"), slurp(work / "serial/lammps_smoke_Si.csv"));
+  for (const auto& row : summary("np1").at("rows")) EXPECT_TRUE(row.at("cached").get<bool>());
+}
+
+TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
+  // A fake lmp (a second a run) that counts its runs and writes a shear curve
+  // peaking at 12 GPa; three runs of a sweep that differ only in the path of
+  // lmp (three links to it: not an input of a run's cache key) ask for the
+  // same two pressure points on three ranks at once.
+  const fs::path fake = work / "slow-lmp", counter = work / "lmp-calls.txt";
+  fs::create_directories(work);
+  std::ofstream(fake) << "#!/bin/sh\n"
+                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
+                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
+                         "echo run >> '" << counter.string() << "'\nsleep 1\n"
+                         "echo '# Time-averaged data for fix curve' > shear.dat\n"
+                         "echo '# TimeStep v_strain v_tau v_p_n v_h c_t_mobile' >> shear.dat\n"
+                         "i=1; while [ $i -le 60 ]; do\n"
+                         "  if [ $i -le 30 ]; then tau=$(( i * 4 / 10 )); else tau=2; fi\n"
+                         "  echo \"$(( 2000 + 100 * i )) 0.$(printf %02d $i) $tau 0 19 300\" >> shear.dat\n"
+                         "  i=$(( i + 1 )); done\n"
+                         "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\ncompleted yes\\n' > sample.txt\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  std::string links;
+  for (const char* name : {"lmp-a", "lmp-b", "lmp-c"}) {
+    fs::remove(work / name);
+    fs::create_symlink(fake, work / name);
+    links += std::string(links.empty() ? "" : ", ") + "\"" + (work / name).string() + "\"";
+  }
+  std::ofstream(work / "sweep.toml") << "[case]\nstudy = \"strength-table\"\n[md]\nmaterial = \"Si\"\n"
+                                        "pressures = [\"0 GPa\", \"10 GPa\"]\nlmp = \"" << (work / "lmp-a").string()
+                                     << "\"\n[output]\nfile = \"si.csv\"\n"
+                                        "[sweep]\nkey = \"md.lmp\"\nvalues = [" << links << "]\n";
+  const auto r = run(3, "run sweep.toml -q --out shared", "cache-shared");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string calls = slurp(counter);
+  EXPECT_EQ(std::count(calls.begin(), calls.end(), '\n'), 2) << "each of the two pressures ran once";
+  EXPECT_EQ(entries("cache-shared").size(), 2u);
+  for (const auto& e : fs::directory_iterator(work / "cache-shared" / "lammps"))
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << e.path();
+  std::vector<std::string> tables;
+  for (const auto& e : fs::recursive_directory_iterator(work / "shared"))
+    if (e.path().filename() == "si.csv") tables.push_back(slurp(e.path()));
+  ASSERT_EQ(tables.size(), 3u) << "one si.csv per run";
+  for (const auto& t : tables) EXPECT_EQ(t, tables.front());
+  EXPECT_NE(tables.front().find("12"), std::string::npos) << tables.front();
+}
