@@ -4,8 +4,9 @@
 // same table without mpirun: the same table, the same strengths; a rerun on
 // the same cache runs nothing. And the result cache across ranks: the runs of
 // a sweep that all ask for the same LAMMPS runs at once run each once (one
-// writer per entry), every run reading the same strengths. Runs mpirun and
-// lmp itself (labels "mpi" and "lammps").
+// writer per entry), every run reading the same strengths. A failed point
+// ends every rank with status 1, said once by rank 0. Runs mpirun and lmp
+// itself (labels "mpi" and "lammps").
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -129,4 +130,24 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
   ASSERT_EQ(tables.size(), 3u) << "one si.csv per run";
   for (const auto& t : tables) EXPECT_EQ(t, tables.front());
   EXPECT_NE(tables.front().find("12"), std::string::npos) << tables.front();
+}
+
+TEST(MpiStrengthTableCli, AFailedPointEndsEveryRankWithStatus1NamingIt) {
+  // A fake lmp that fails every run with a LAMMPS error line.
+  const fs::path fake = work / "failing-lmp";
+  fs::create_directories(work);
+  std::ofstream(fake) << "#!/bin/sh\n"
+                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
+                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
+                         "echo 'ERROR: Lost atoms (fake)'; exit 1\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const auto r = run(3, "strength-table --backend lammps --material Si --pressures 0,5 -q --lmp '" + fake.string() +
+                            "' --out failed",
+                     "cache-failed");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("2 of 2 LAMMPS runs failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Si shear test at 5 GPa"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ERROR: Lost atoms (fake)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("error:"), r.err.rfind("error:")) << "said once, by rank 0:\n" << r.err;
+  EXPECT_FALSE(fs::exists(work / "failed" / "lammps_smoke_Si.csv"));
 }
