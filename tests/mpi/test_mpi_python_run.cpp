@@ -3,7 +3,7 @@
 // ranks and rank 0 writes; the outputs equal those of the same script run
 // without mpirun (tables, summaries, HDF5 datasets bit for bit; fft_planning
 // = "estimate") at P = 1 and 3. Runs mpirun and the interpreter itself
-// (labels "mpi" and "python").
+// (label "mpi").
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>

@@ -6,7 +6,7 @@
 // a sweep that all ask for the same LAMMPS runs at once run each once (one
 // writer per entry), every run reading the same strengths. A failed point
 // ends every rank with status 1, said once by rank 0. Runs mpirun and lmp
-// itself (labels "mpi" and "lammps").
+// itself (label "mpi": gtest_discover_tests takes one label here).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
