@@ -56,6 +56,19 @@ nlohmann::json figures(const std::string& dir) {
   return {{"results", summary(dir).at("results")}, {"rows", rows}};
 }
 
+// The shear curve a fake lmp writes (peak 12 GPa at strain 0.3, 2 GPa after),
+// as a file it copies: a shell loop forks per line, seconds on a loaded machine.
+fs::path fake_curve() {
+  const fs::path file = work / "fake-shear.dat";
+  if (fs::exists(file)) return file;
+  fs::create_directories(work);
+  std::ofstream out(file);
+  out << "# Time-averaged data for fix curve\n# TimeStep v_strain v_tau v_p_n v_h c_t_mobile\n";
+  for (int i = 1; i <= 60; ++i)
+    out << 2000 + 100 * i << " 0." << (i < 10 ? "0" : "") << i << " " << (i <= 30 ? i * 4 / 10 : 2) << " 0 19 300\n";
+  return file;
+}
+
 // Every finished entry of a LAMMPS cache.
 std::vector<fs::path> entries(const std::string& cache) {
   std::vector<fs::path> out;
@@ -99,12 +112,7 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
                          "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
                          "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
                          "echo run >> '" << counter.string() << "'\nsleep 1\n"
-                         "echo '# Time-averaged data for fix curve' > shear.dat\n"
-                         "echo '# TimeStep v_strain v_tau v_p_n v_h c_t_mobile' >> shear.dat\n"
-                         "i=1; while [ $i -le 60 ]; do\n"
-                         "  if [ $i -le 30 ]; then tau=$(( i * 4 / 10 )); else tau=2; fi\n"
-                         "  echo \"$(( 2000 + 100 * i )) 0.$(printf %02d $i) $tau 0 19 300\" >> shear.dat\n"
-                         "  i=$(( i + 1 )); done\n"
+                         "cp '" << fake_curve().string() << "' shear.dat\n"
                          "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\ncompleted yes\\n' > sample.txt\n";
   fs::permissions(fake, fs::perms::owner_all);
   std::string links;
@@ -150,4 +158,36 @@ TEST(MpiStrengthTableCli, AFailedPointEndsEveryRankWithStatus1NamingIt) {
   EXPECT_NE(r.err.find("ERROR: Lost atoms (fake)"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("error:"), r.err.rfind("error:")) << "said once, by rank 0:\n" << r.err;
   EXPECT_FALSE(fs::exists(work / "failed" / "lammps_smoke_Si.csv"));
+}
+
+TEST(MpiStrengthTableCli, SiO2QuenchRunsOnceBeforeItsPointsOverTheRanks) {
+  // A fake lmp: the melt-quench deck (it ends with write_data) writes a
+  // quenched sample, a shear deck (it reads that sample, copied into its
+  // folder) writes a curve; each run counted.
+  const fs::path fake = work / "sio2-lmp", counter = work / "sio2-calls.txt";
+  fs::create_directories(work);
+  std::ofstream(fake) << "#!/bin/sh\n"
+                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
+                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
+                         "if grep -q '^write_data' in.lammps; then\n"
+                         "  echo quench >> '" << counter.string() << "'\n"
+                         "  echo 'fake sample' > quenched.data\n"
+                         "  printf 'atoms 1536\\ndensity_g_cm3 2.2\\nlx_A 28\\nlz_A 28\\ncompleted yes\\n' > sample.txt\n"
+                         "  exit 0\n"
+                         "fi\n"
+                         "[ -f quenched.data ] || { echo 'ERROR: no quenched sample (fake)'; exit 1; }\n"
+                         "echo shear >> '" << counter.string() << "'\n"
+                         "cp '" << fake_curve().string() << "' shear.dat\n"
+                         "printf 'atoms 1536\\nlx_A 28\\nly_A 28\\nh0_A 25\\ncompleted yes\\n' > sample.txt\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const std::string args = "strength-table --backend lammps --material SiO2 --pressures 0,5,10 --ranks 1 -q --lmp '" +
+                           fake.string() + "'";
+  const auto serial = run(0, args + " --out sio2-serial", "cache-sio2-serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  fs::remove(counter);
+  const auto farmed = run(3, args + " --out sio2-np3", "cache-sio2-np3");
+  ASSERT_EQ(farmed.status, 0) << farmed.err;
+  EXPECT_EQ(slurp(counter), "quench\nshear\nshear\nshear\n") << "the quench once, first";
+  EXPECT_EQ(slurp(work / "sio2-np3/lammps_smoke_SiO2.csv"), slurp(work / "sio2-serial/lammps_smoke_SiO2.csv"));
+  EXPECT_EQ(figures("sio2-np3"), figures("sio2-serial"));
 }

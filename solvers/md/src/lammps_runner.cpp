@@ -241,15 +241,17 @@ std::vector<std::string> lammps_command(const LammpsJob& job, int& ranks_used) {
     const fs::path mpirun = find_on_path("mpirun");
     if (!mpirun.empty()) {
       // --allow-run-as-root: Open MPI refuses root otherwise (containers, CI).
-      cmd = {mpirun.string(), "--allow-run-as-root", "-np", std::to_string(job.ranks)};
+      // A rank waiting for a message yields its core: lmp's ranks often share
+      // cores with other work (busy polling on 2 shared cores made a 379-step
+      // Si point take 146-258 s instead of 0.7-3 s here); on cores of their
+      // own it costs nothing measurable.
+      cmd = {mpirun.string(), "--allow-run-as-root", "-np", std::to_string(job.ranks), "--mca", "mpi_yield_when_idle",
+             "1"};
       // From a rank of an MPI job (wearscale under mpirun/srun): the job's
       // launcher placed this rank on cores of its own (inherited by mpirun and
       // lmp); several of these launches share a node, so none binds lmp's ranks
-      // to cores of its choosing, none refuses for want of slots, and a rank
-      // waiting for a message yields its core (busy polling on shared cores
-      // made a 379-step Si point take 146-258 s instead of 0.7-3 s here).
-      if (is_mpi_rank())
-        cmd.insert(cmd.end(), {"--bind-to", "none", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1"});
+      // to cores of its choosing, and none refuses for want of slots.
+      if (is_mpi_rank()) cmd.insert(cmd.end(), {"--bind-to", "none", "--oversubscribe"});
       ranks_used = job.ranks;
     }
   }

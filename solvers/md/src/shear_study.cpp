@@ -220,18 +220,20 @@ ShearStudy run_shear_study(const ShearTestSpec& spec, const RunMap& map) {
       return ensure_run(ctx, quench_key, deck, "SiO2 melt-quench", {}, steps, "log.lammps");
     });
     quenched_sample = ctx.cache.entry(quench_key) / ctx.files.quenched_sample;
-    if (!ran) return gathered_elsewhere(std::move(study));
-    QuenchRecord qr;
-    qr.run = read_record(ctx, quench_key, ran->at(0) == "cached");
-    const fs::path sample_file = qr.run.folder / ctx.files.sample;
-    const auto kv = read_key_values(sample_file);
-    qr.atoms = std::lround(to_number(kv, "atoms", sample_file));
-    qr.density = to_number(kv, "density_g_cm3", sample_file) * 1000.0;
-    qr.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
-    qr.lz = to_number(kv, "lz_A", sample_file) * units::angstrom;
-    log::info("SiO2 melt-quench: {} atoms, density {:.0f} kg/m^3 ({}, {:.0f} s)", qr.atoms, qr.density,
-              qr.run.cached ? "cached" : "ran", qr.run.wall_seconds);
-    study.quench = qr;
+    // Where the map gathers nothing the pressures' map still follows (collective under MPI).
+    if (ran) {
+      QuenchRecord qr;
+      qr.run = read_record(ctx, quench_key, ran->at(0) == "cached");
+      const fs::path sample_file = qr.run.folder / ctx.files.sample;
+      const auto kv = read_key_values(sample_file);
+      qr.atoms = std::lround(to_number(kv, "atoms", sample_file));
+      qr.density = to_number(kv, "density_g_cm3", sample_file) * 1000.0;
+      qr.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
+      qr.lz = to_number(kv, "lz_A", sample_file) * units::angstrom;
+      log::info("SiO2 melt-quench: {} atoms, density {:.0f} kg/m^3 ({}, {:.0f} s)", qr.atoms, qr.density,
+                qr.run.cached ? "cached" : "ran", qr.run.wall_seconds);
+      study.quench = qr;
+    }
   }
 
   const double expected = spec.strain_end * static_cast<double>(spec.height_cells()) * spec.lattice_constant /
