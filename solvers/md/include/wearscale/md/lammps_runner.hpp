@@ -10,6 +10,8 @@
 // its mpirun start a job of their own: the child's environment drops the
 // launcher's variables (OMPI_*, PMIX_*, PMI_*, SLURM_*, ...), which would make
 // lmp's MPI_Init join the enclosing job, and such an mpirun does not bind.
+// Every mpirun of lmp yields idle cores (mpi_yield_when_idle): on shared
+// cores polling ranks slow each other down a hundredfold.
 #include <filesystem>
 #include <functional>
 #include <string>
