@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/io/config.hpp"
 #include "wearscale/studies/runner.hpp"
 
@@ -62,7 +63,10 @@ void bind_run(py::module_& m) {
           const RunSignals signals;
           {
             py::gil_scoped_release release;
-            log::set_level(quiet ? log::Level::Quiet : log::Level::Normal);
+            // Under mpirun rank 0 speaks for the job, as the CLI's does.
+            log::set_level(mpi::size() > 1 && !mpi::is_root() ? log::Level::Silent
+                           : quiet                           ? log::Level::Quiet
+                                                             : log::Level::Normal);
             json = studies::run_case(options).to_json().dump();
           }
           return json;

@@ -12,5 +12,7 @@ void bind_wear(pybind11::module_& m);
 void bind_dem(pybind11::module_& m);
 void bind_io(pybind11::module_& m);
 void bind_run(pybind11::module_& m);
+/// MPI when the interpreter runs under mpirun/srun (mpi_session.cpp); `m` gets rank() and size().
+void start_mpi(pybind11::module_& m);
 
 }  // namespace wearscale::python

@@ -51,4 +51,6 @@ PYBIND11_MODULE(_wearscale, m) {
   wearscale::python::bind_io(io);
   auto runner = m.def_submodule("runner", "Cases through the CLI's runner.");
   wearscale::python::bind_run(runner);
+  auto mpi = m.def_submodule("mpi", "The MPI job the interpreter runs in under mpirun/srun (the C++ side owns MPI).");
+  wearscale::python::start_mpi(mpi);
 }

@@ -724,7 +724,8 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
     if (!run->study->distributed())
       throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
                                    "study is distributed, a rough wear map's surfaces, the junction runs of a "
-                                   "nano/dem scale, and the runs of any [sweep]); run it without mpirun",
+                                   "nano/dem scale, the strength table's points, and the runs of any [sweep]); run it "
+                                   "without mpirun",
                                    run->summary.study, mpi::size()));
   });
   mpi::refuse_together([&] {  // the folder: rank 0's alone

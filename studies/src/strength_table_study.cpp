@@ -2,7 +2,10 @@
 // SiO2 from the MD shear test of §9.3.1 run with LAMMPS at each pressure
 // (md::run_shear_study; identical inputs are read from the result cache),
 // written as a strength table (materials/ format, .csv or .h5) into the
-// output folder, with each point's strengths as headline figures.
+// output folder, with each point's strengths as headline figures. Under
+// mpirun/srun the pressure points are spread over the ranks by the task farm
+// (each point's LAMMPS on md.ranks ranks of its own), rank 0 writing the
+// table, which equals the serial one.
 //
 //   [case]
 //   study = "strength-table"        # `wearscale strength-table` names it itself
@@ -15,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/coupling/shear_farm.hpp"
 #include "wearscale/coupling/shear_test_keys.hpp"
 #include "wearscale/io/strength_table_file.hpp"
 #include "wearscale/materials/strength_table.hpp"
@@ -51,8 +55,14 @@ class StrengthTableStudy final : public Study {
     return {};
   }
 
+  // Under mpirun: rank 0 runs the study (run), the other ranks take points from its farm.
+  bool distributed() const override { return true; }
+  void run_other_rank(const Config& /*inputs*/) override {
+    (void)md::run_shear_study(spec_, coupling::farmed_shear_runs("strength-table points"));
+  }
+
   void run(const Config& /*cfg*/, RunContext& context) override {
-    const md::ShearStudy study = md::run_shear_study(spec_);
+    const md::ShearStudy study = md::run_shear_study(spec_, coupling::farmed_shear_runs("strength-table points"));
     const materials::StrengthTable table = md::strength_table(study);
     const auto file = context.output_dir() / file_;
     materials::write_strength_table(file, table);
@@ -100,7 +110,10 @@ Schema StrengthTableStudy::schema() const {
        "pressure); the keys below override it",
        "--preset"},
       {"md.lmp", "string", "", "", "lmp on PATH", "LAMMPS executable", "--lmp"},
-      {"md.ranks", "integer", "1 … 1024", "1", "1", "MPI ranks, through mpirun when > 1", "--ranks"},
+      {"md.ranks", "integer", "1 … 1024", "1", "1",
+       "MPI ranks of each LAMMPS run, through mpirun when > 1 (per point: under `mpirun -np N wearscale` the points "
+       "are spread over the N ranks, each point's lmp on md.ranks ranks of its own)",
+       "--ranks"},
       {"output.file", "string", "a file name ending in .csv or .h5", "", "lammps_<preset>_<material>.csv",
        "the table's name in the output folder", "--table"},
       {"md.lateral_size", "number", "> 0", "m", preset, "box side x = y, rounded to whole lattice cells", ""},

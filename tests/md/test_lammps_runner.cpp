@@ -1,6 +1,7 @@
 // Finding and running lmp, without LAMMPS: a missing executable, a failing one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "md_test_support.hpp"
@@ -74,6 +75,43 @@ TEST(LammpsRunner, CommandUsesMpirunOnlyForSeveralRanks) {
   } else {
     EXPECT_EQ(used, 1);
   }
+}
+
+// From a rank of an MPI job lmp and its mpirun start a job of their own: the
+// launcher's variables are dropped from their environment (Open MPI refuses a
+// nested mpirun otherwise, "mpirun does not support recursive calls"), and
+// that mpirun neither binds nor spins; outside a job the environment passes whole.
+TEST(LammpsRunner, FromAnMpiRankTheChildGetsNoLauncherVariables) {
+  auto has = [](const std::vector<std::string>& env, const std::string& prefix) {
+    for (const auto& e : env)
+      if (e.rfind(prefix, 0) == 0) return true;
+    return false;
+  };
+  const char* launched[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "PMI_RANK"};
+  for (const char* v : launched) ::unsetenv(v);
+  ::setenv("OMPI_MCA_btl", "self,vader", 1);
+  ::setenv("SLURM_JOB_ID", "42", 1);
+  ::setenv("WEARSCALE_TEST_KEEP", "1", 1);
+  EXPECT_FALSE(is_mpi_rank());
+  EXPECT_TRUE(has(child_environment(), "OMPI_MCA_btl=")) << "not a rank: the user's settings pass";
+  int used = 0;
+  const auto alone = lammps_command({"/usr/bin/lmp", 2, "/tmp", "in.lammps", ""}, used);
+  EXPECT_EQ(std::count(alone.begin(), alone.end(), "--oversubscribe"), 0);
+
+  ::setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
+  ::setenv("PMIX_RANK", "1", 1);
+  EXPECT_TRUE(is_mpi_rank());
+  const auto env = child_environment();
+  for (const char* prefix : {"OMPI_", "PMIX_", "SLURM_"}) EXPECT_FALSE(has(env, prefix)) << prefix;
+  EXPECT_TRUE(has(env, "WEARSCALE_TEST_KEEP=1"));
+  EXPECT_TRUE(has(env, "PATH="));
+  const auto nested = lammps_command({"/usr/bin/lmp", 2, "/tmp", "in.lammps", ""}, used);
+  if (!find_on_path("mpirun").empty()) {
+    EXPECT_EQ(std::count(nested.begin(), nested.end(), "--oversubscribe"), 1);
+    EXPECT_EQ(std::count(nested.begin(), nested.end(), "mpi_yield_when_idle"), 1);
+  }
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "OMPI_MCA_btl", "SLURM_JOB_ID", "WEARSCALE_TEST_KEEP"})
+    ::unsetenv(v);
 }
 
 TEST(LammpsRunner, VersionFromHelpIsRemembered) {

@@ -1,10 +1,15 @@
 // The result cache: identical inputs do not call lmp again.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <thread>
 
 #include "md_test_support.hpp"
 #include "wearscale/materials/strength_table.hpp"
+#include "wearscale/md/lammps_runner.hpp"
 #include "wearscale/md/result_cache.hpp"
 #include "wearscale/md/shear_study.hpp"
 
@@ -90,4 +95,61 @@ TEST(ResultCache, KeysAndEntries) {
   ASSERT_TRUE(c.find("k"));
   EXPECT_EQ(md_test::read(e / "out.txt"), "1");
   EXPECT_FALSE(std::filesystem::exists(work));
+}
+
+// One writer per entry: processes (the ranks of an MPI job, a job array's
+// tasks) and threads asking for the same runs at once run each once; the
+// others wait for it and read its entry, and no partial folder is left.
+TEST(ResultCache, ProcessesAndThreadsAskingTheSameRunRunItOnce) {
+  const auto dir = md_test::temp_dir("cache-one-writer");
+  const auto counter = dir / "calls.txt";
+  const auto fake = md_test::fake_lmp(dir, counter);
+  // Slow enough that every asker arrives while the first one runs.
+  const auto slow = dir / "slow-lmp";
+  md_test::write(slow, "#!/bin/sh\n[ \"$1\" = \"-h\" ] || sleep 1\nexec '" + fake.string() + "' \"$@\"\n");
+  std::filesystem::permissions(slow, std::filesystem::perms::owner_all);
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 10e9};
+  s.lmp = slow.string();
+  s.cache_dir = dir / "cache";
+  md_test::write(dir / "Si.sw", md_test::si_sw);
+  s.potential = dir / "Si.sw";
+  (void)lammps_version(slow, s.cache_dir);  // `lmp -h` once, before the race
+
+  std::vector<pid_t> children;
+  for (int p = 0; p < 3; ++p) {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      int status = 0;
+      try {
+        const ShearStudy st = run_shear_study(s);
+        status = st.points.size() == 2 && st.points[1].strength.sigma_max > 11e9 ? 0 : 3;
+      } catch (const std::exception&) {
+        status = 4;
+      }
+      ::_exit(status);
+    }
+    children.push_back(pid);
+  }
+  std::vector<ShearStudy> in_threads(2);
+  {
+    std::vector<std::thread> threads;
+    for (auto& st : in_threads) threads.emplace_back([&st, &s] { st = run_shear_study(s); });
+    for (auto& t : threads) t.join();
+  }
+  for (const pid_t pid : children) {
+    int status = -1;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "a process got no complete study";
+  }
+  const std::string calls = md_test::read(counter);
+  EXPECT_EQ(std::count(calls.begin(), calls.end(), '\n'), 3) << "lmp -h once, then each pressure once:\n" << calls;
+  for (const auto& st : in_threads) {
+    ASSERT_EQ(st.points.size(), 2u);
+    EXPECT_EQ(st.points[1].run.folder, in_threads[0].points[1].run.folder);
+    EXPECT_EQ(st.points[1].strength.sigma_max, in_threads[0].points[1].strength.sigma_max);
+  }
+  for (const auto& e : std::filesystem::directory_iterator(s.cache_dir))
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << e.path();
 }

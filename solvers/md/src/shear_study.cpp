@@ -102,23 +102,21 @@ struct Context {
   DeckFiles files;
 };
 
-// Looks `key` up in the cache, or runs `deck` in a fresh folder (with the
-// potential and `extra` files copied in), checks completion, and stores it.
-RunRecord cached_run(Context& ctx, const std::string& key, const std::string& deck, const std::string& label,
-                     const std::vector<fs::path>& extra, double expected_steps, const std::string& progress_file) {
-  RunRecord r;
-  r.key = key;
+// Makes sure the cache holds the run of `key`: looks it up (unless caching is
+// off) or runs `deck` in a fresh folder (with the potential and `extra` files
+// copied in), checks completion, and stores it; true if it was found. The
+// entry's lock is held throughout, so of several processes (MPI ranks) asking
+// for the same run at once one runs it and the others find it.
+bool ensure_run(Context& ctx, const std::string& key, const std::string& deck, const std::string& label,
+                const std::vector<fs::path>& extra, double expected_steps, const std::string& progress_file) {
+  const EntryLock lock = ctx.cache.lock(key, [&] {
+    log::info("{}: waiting for another process running the same LAMMPS run ({})", label,
+              ctx.cache.entry(key).string());
+  });
   if (ctx.spec.use_cache) {
     if (auto hit = ctx.cache.find(key)) {
-      r.folder = *hit;
-      r.cached = true;
-      const auto cost = read_key_values(*hit / kCostFile);
-      r.wall_seconds = cost.count("wall_seconds") != 0 ? std::strtod(cost.at("wall_seconds").c_str(), nullptr)
-                                                   : std::numeric_limits<double>::quiet_NaN();
-      r.ranks = cost.count("ranks") != 0 ? std::atoi(cost.at("ranks").c_str()) : ctx.spec.ranks;
-      r.date = cost.count("date") != 0 ? cost.at("date") : std::string();
       log::debug("{}: cached in {}", label, hit->string());
-      return r;
+      return true;
     }
   }
   const fs::path work = ctx.cache.begin(key);
@@ -142,20 +140,49 @@ RunRecord cached_run(Context& ctx, const std::string& key, const std::string& de
     throw NumericalError("LAMMPS", last_step(work / "log.lammps"), label,
                          fmt::format("lmp ended without completing the deck (no 'completed' in {}); see {}",
                                      (work / ctx.files.sample).string(), (work / "log.lammps").string()));
-  r.wall_seconds = info.wall_seconds;
-  r.ranks = info.ranks;
-  r.date = utc_date();
-  write_text(work / kCostFile, fmt::format("wall_seconds {:.3f}\nranks {}\ndate {}\nlammps_version {}\n", r.wall_seconds,
-                                           r.ranks, r.date, ctx.version));
-  r.folder = ctx.cache.commit(key, work);
+  write_text(work / kCostFile, fmt::format("wall_seconds {:.3f}\nranks {}\ndate {}\nlammps_version {}\n",
+                                           info.wall_seconds, info.ranks, utc_date(), ctx.version));
+  ctx.cache.commit(key, work);
+  return false;
+}
+
+// The record of the run of `key`, from its entry (which ensure_run made sure of).
+RunRecord read_record(const Context& ctx, const std::string& key, bool cached) {
+  RunRecord r;
+  r.key = key;
+  r.folder = ctx.cache.entry(key);
+  r.cached = cached;
+  const auto cost = read_key_values(r.folder / kCostFile);
+  r.wall_seconds = cost.count("wall_seconds") != 0 ? std::strtod(cost.at("wall_seconds").c_str(), nullptr)
+                                                   : std::numeric_limits<double>::quiet_NaN();
+  r.ranks = cost.count("ranks") != 0 ? std::atoi(cost.at("ranks").c_str()) : ctx.spec.ranks;
+  r.date = cost.count("date") != 0 ? cost.at("date") : std::string();
   return r;
+}
+
+// The runs as the caller's map spreads them (default: in order, here); the
+// texts are "cached" or "ran".
+std::optional<std::vector<std::string>> map_runs(const RunMap& map, std::size_t count,
+                                                 const std::function<bool(std::size_t)>& run) {
+  const auto task = [&](std::size_t k) { return std::string(run(k) ? "cached" : "ran"); };
+  if (map) return map(count, task);
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < count; ++k) out.push_back(task(k));
+  return out;
 }
 
 std::string gpa(double pa) { return fmt::format("{:g}", pa / units::GPa); }
 
+// A study whose runs' outcomes were gathered by another process (rank 0).
+ShearStudy gathered_elsewhere(ShearStudy study) {
+  study.quench.reset();
+  study.points.clear();
+  return study;
+}
+
 }  // namespace
 
-ShearStudy run_shear_study(const ShearTestSpec& spec) {
+ShearStudy run_shear_study(const ShearTestSpec& spec, const RunMap& map) {
   validate(spec);
   ShearStudy study;
   study.spec = spec;
@@ -188,32 +215,48 @@ ShearStudy run_shear_study(const ShearTestSpec& spec) {
         steps += static_cast<double>(spec.steps((q.temperatures[i - 1] - q.temperatures[i]) / rate, q.timestep));
       }
     }
-    QuenchRecord qr;
-    qr.run = cached_run(ctx, quench_key, deck, "SiO2 melt-quench", {}, steps, "log.lammps");
-    const fs::path sample_file = qr.run.folder / ctx.files.sample;
-    const auto kv = read_key_values(sample_file);
-    qr.atoms = std::lround(to_number(kv, "atoms", sample_file));
-    qr.density = to_number(kv, "density_g_cm3", sample_file) * 1000.0;
-    qr.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
-    qr.lz = to_number(kv, "lz_A", sample_file) * units::angstrom;
-    quenched_sample = qr.run.folder / ctx.files.quenched_sample;
-    log::info("SiO2 melt-quench: {} atoms, density {:.0f} kg/m^3 ({}, {:.0f} s)", qr.atoms, qr.density,
-              qr.run.cached ? "cached" : "ran", qr.run.wall_seconds);
-    study.quench = qr;
+    // One run, before the pressures (which start from it): a map of one task.
+    const auto ran = map_runs(map, 1, [&](std::size_t) {
+      return ensure_run(ctx, quench_key, deck, "SiO2 melt-quench", {}, steps, "log.lammps");
+    });
+    quenched_sample = ctx.cache.entry(quench_key) / ctx.files.quenched_sample;
+    // Where the map gathers nothing the pressures' map still follows (collective under MPI).
+    if (ran) {
+      QuenchRecord qr;
+      qr.run = read_record(ctx, quench_key, ran->at(0) == "cached");
+      const fs::path sample_file = qr.run.folder / ctx.files.sample;
+      const auto kv = read_key_values(sample_file);
+      qr.atoms = std::lround(to_number(kv, "atoms", sample_file));
+      qr.density = to_number(kv, "density_g_cm3", sample_file) * 1000.0;
+      qr.lx = to_number(kv, "lx_A", sample_file) * units::angstrom;
+      qr.lz = to_number(kv, "lz_A", sample_file) * units::angstrom;
+      log::info("SiO2 melt-quench: {} atoms, density {:.0f} kg/m^3 ({}, {:.0f} s)", qr.atoms, qr.density,
+                qr.run.cached ? "cached" : "ran", qr.run.wall_seconds);
+      study.quench = qr;
+    }
   }
 
-  for (double p : spec.pressures) {
-    const std::string deck = shear_deck(spec, p, ctx.files);
-    const std::string key =
-        cache_key({"shear", fingerprint, deck, study.lammps_version, potential_text, quench_key});
-    const std::string label = fmt::format("{} shear test at {} GPa", material, gpa(p));
-    const double expected = spec.strain_end * static_cast<double>(spec.height_cells()) * spec.lattice_constant /
-                            (spec.shear_velocity * spec.timestep);
-    ShearPoint pt;
-    pt.pressure = p;
+  const double expected = spec.strain_end * static_cast<double>(spec.height_cells()) * spec.lattice_constant /
+                          (spec.shear_velocity * spec.timestep);
+  auto point_key = [&](double p) {
+    return cache_key({"shear", fingerprint, shear_deck(spec, p, ctx.files), study.lammps_version, potential_text,
+                      quench_key});
+  };
+  auto point_label = [&](double p) { return fmt::format("{} shear test at {} GPa", material, gpa(p)); };
+  // The pressures are independent runs: the caller's map may spread them (over MPI ranks).
+  const auto ran = map_runs(map, spec.pressures.size(), [&](std::size_t k) {
+    const double p = spec.pressures[k];
     std::vector<fs::path> extra;
     if (!quenched_sample.empty()) extra.push_back(quenched_sample);
-    pt.run = cached_run(ctx, key, deck, label, extra, expected, ctx.files.curve);
+    return ensure_run(ctx, point_key(p), shear_deck(spec, p, ctx.files), point_label(p), extra, expected,
+                      ctx.files.curve);
+  });
+  if (!ran) return gathered_elsewhere(std::move(study));
+  for (std::size_t k = 0; k < spec.pressures.size(); ++k) {
+    const double p = spec.pressures[k];
+    ShearPoint pt;
+    pt.pressure = p;
+    pt.run = read_record(ctx, point_key(p), ran->at(k) == "cached");
     pt.curve = read_shear_curve(pt.run.folder / ctx.files.curve);
     pt.strength = shear_strength(pt.curve, spec.window_begin, spec.window_end);
     const fs::path sample_file = pt.run.folder / ctx.files.sample;

@@ -5,6 +5,13 @@
 // `mpirun --allow-run-as-root -np N` when more than one MPI rank is asked
 // for and mpirun exists. A failed run (non-zero exit, an "ERROR" line) is a
 // NumericalError naming the run folder and LAMMPS' error line.
+//
+// From a rank of an MPI job (wearscale itself under mpirun or srun) lmp and
+// its mpirun start a job of their own: the child's environment drops the
+// launcher's variables (OMPI_*, PMIX_*, PMI_*, SLURM_*, ...), which would make
+// lmp's MPI_Init join the enclosing job, and such an mpirun does not bind.
+// Every mpirun of lmp yields idle cores (mpi_yield_when_idle): on shared
+// cores polling ranks slow each other down a hundredfold.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -39,6 +46,13 @@ struct LammpsRunInfo {
   int ranks = 1;                   ///< ranks actually used (1 if mpirun is missing)
   std::vector<std::string> command;
 };
+
+/// This process is a rank of an MPI job (a launcher's variables are set).
+bool is_mpi_rank();
+
+/// The environment lmp and its mpirun get: this process's, less a launcher's
+/// variables when this process is a rank of an MPI job (see above).
+std::vector<std::string> child_environment();
 
 /// The command line of a job (mpirun … lmp -in … -log log.lammps).
 std::vector<std::string> lammps_command(const LammpsJob& job, int& ranks_used);

@@ -4,6 +4,7 @@
 // pressures), each run looked up in / stored to the result cache, and the
 // outcome as a materials::StrengthTable with its provenance.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,10 +51,20 @@ struct ShearStudy {
   std::vector<ShearPoint> points;
 };
 
-/// Runs (or reads from the cache) every pressure of `spec`. InputError for a
-/// bad spec or a missing lmp/potential; NumericalError for a failed run or
-/// unusable output (naming the run folder).
-ShearStudy run_shear_study(const ShearTestSpec& spec);
+/// Spreads independent runs: calls task(k) for every k in [0, count) (each
+/// returns a short text) wherever it likes, and returns the texts in task
+/// order where they are gathered, std::nullopt elsewhere. The studies give a
+/// farm over MPI ranks (coupling/shear_farm.hpp); the solver knows no MPI.
+using RunMap = std::function<std::optional<std::vector<std::string>>(
+    std::size_t count, const std::function<std::string(std::size_t)>& task)>;
+
+/// Runs (or reads from the cache) every pressure of `spec`, the pressures
+/// (and, first, the SiO2 quench) through `map` (empty: in order, here). Where
+/// `map` gathers nothing the study comes back without quench and points.
+/// The outcome does not depend on the map: each run's figures are read back
+/// from its cache entry. InputError for a bad spec or a missing lmp/potential;
+/// NumericalError for a failed run or unusable output (naming the run folder).
+ShearStudy run_shear_study(const ShearTestSpec& spec, const RunMap& map = {});
 
 /// The study as a strength table: pressures and strengths in Pa, provenance
 /// (source, material, LAMMPS version, potential and cutoff, box and atoms,
