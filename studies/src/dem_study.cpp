@@ -8,6 +8,7 @@
 // gives the same outputs bit for bit (one thread).
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <string_view>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -581,13 +582,29 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   std::filesystem::create_directories(out);
   DumpWriter dump(out / "oxide_asperity.dump");
   std::unique_ptr<Progress> bar;
+  // A line in the log every 1 % of the run (a long run's partial results and
+  // its speed: particle-steps per CPU second of this process since the start
+  // of the slide's loading).
+  std::clock_t cpu0 = 0;
+  long step0 = 0, logged = 0;
   const auto r = run_oxide_asperity(
-      spec, [&](const Simulation& sim, const OxideAsperitySample&, long step, long planned, const std::vector<double>& body) {
+      spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
         if (!bar) {
           bar = std::make_unique<Progress>("oxidized asperity", static_cast<double>(planned));
           log::info("oxide asperity: {} particles, Δt = {:.3g} s, {} steps", sim.particles().size(), sim.time_step(), planned);
+          cpu0 = std::clock();
+          step0 = step;
         }
         bar->update(static_cast<double>(step));
+        if (step * 100 / planned > logged || step == planned) {
+          logged = step * 100 / planned;
+          const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+          log::info("oxide asperity: step {}/{}, slide {:.4g} nm, F_T {:.4g} N, F_N {:.4g} N, body {} ({} picked up), "
+                    "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {:.3g} particle-steps per CPU s",
+                    step, planned, s.sliding * 1e9, s.tangential_force, s.normal_force, s.body_particles, s.picked_up,
+                    s.rotation, s.travel * 1e9, s.trench_depth * 1e9, s.trench_max_depth * 1e9,
+                    cpu > 0.0 ? static_cast<double>(step - step0) * static_cast<double>(sim.particles().size()) / cpu : 0.0);
+        }
         if (dump.frames() == 0 || (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)))
           dump.write(sim, {{"rolling_body", body}});
       });
