@@ -582,9 +582,9 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   std::filesystem::create_directories(out);
   DumpWriter dump(out / "oxide_asperity.dump");
   std::unique_ptr<Progress> bar;
-  // A line in the log every 1 % of the run (a long run's partial results and
-  // its speed: particle-steps per CPU second of this process since the start
-  // of the slide's loading).
+  // A line in the log every 10 % of the run, 1 % for runs of more than 1e10
+  // particle-steps (hours): a long run's partial results and its speed,
+  // particle-steps per CPU second of this process since its first sample.
   std::clock_t cpu0 = 0;
   long step0 = 0, logged = 0;
   const auto r = run_oxide_asperity(
@@ -596,8 +596,9 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
           step0 = step;
         }
         bar->update(static_cast<double>(step));
-        if (step * 100 / planned > logged || step == planned) {
-          logged = step * 100 / planned;
+        const long per = static_cast<double>(planned) * static_cast<double>(sim.particles().size()) > 1e10 ? 100 : 10;
+        if (step * per / planned > logged || step == planned) {
+          logged = step * per / planned;
           const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
           log::info("oxide asperity: step {}/{}, slide {:.4g} nm, F_T {:.4g} N, F_N {:.4g} N, body {} ({} picked up), "
                     "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {:.3g} particle-steps per CPU s",
