@@ -7,6 +7,7 @@
 // snapshot file) and continues from the state restored: a killed run resumed
 // gives the same outputs bit for bit (one thread).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <string_view>
@@ -583,10 +584,12 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   DumpWriter dump(out / "oxide_asperity.dump");
   std::unique_ptr<Progress> bar;
   // A line in the log every 10 % of the run, 1 % for runs of more than 1e10
-  // particle-steps (hours): a long run's partial results and its speed,
-  // particle-steps per CPU second of this process since its first sample.
+  // particle-steps (hours), and at least every 5 minutes: a long run's partial
+  // results and its speed, particle-steps per CPU second of this process
+  // since its first sample.
   std::clock_t cpu0 = 0;
   long step0 = 0, logged = 0;
+  auto last_line = std::chrono::steady_clock::now();
   const auto r = run_oxide_asperity(
       spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
         if (!bar) {
@@ -597,8 +600,10 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
         }
         bar->update(static_cast<double>(step));
         const long per = static_cast<double>(planned) * static_cast<double>(sim.particles().size()) > 1e10 ? 100 : 10;
-        if (step * per / planned > logged || step == planned) {
+        const auto now = std::chrono::steady_clock::now();
+        if (step * per / planned > logged || step == planned || now - last_line > std::chrono::minutes(5)) {
           logged = step * per / planned;
+          last_line = now;
           const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
           log::info("oxide asperity: step {}/{}, slide {:.4g} nm, F_T {:.4g} N, F_N {:.4g} N, body {} ({} picked up), "
                     "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {:.3g} particle-steps per CPU s",
