@@ -1,5 +1,5 @@
 // The oxidized asperity of §9.3.3 (Fig. 9.26) at the thesis' size: 150 × 150
-// × 75 nm³, d0 = 1.5 nm (about 330 000 particles), a 5 nm SiO2 layer on HCP
+// × 75 nm³, d0 = 1.5 nm (about 300 000 particles), a 5 nm SiO2 layer on HCP
 // Si, a loose SiO2 cylinder of 50 nm, a rigid SiO2 plate at 100 MPa. Label
 // long; slid 150 nm at 50 m/s instead of the case's 10 m/s to shorten the run
 // (§7.2.2: no effect of v), about 1.2e5 steps: hours of one core (the measured
