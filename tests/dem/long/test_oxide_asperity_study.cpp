@@ -1,8 +1,8 @@
 // The oxidized asperity of §9.3.3 (Fig. 9.26) at the thesis' size: 150 × 150
-// × 75 nm³, d0 = 1.5 nm (about 300 000 particles), a 5 nm SiO2 layer on HCP
+// × 75 nm³, d0 = 1.5 nm (309 165 particles), a 5 nm SiO2 layer on HCP
 // Si, a loose SiO2 cylinder of 50 nm, a rigid SiO2 plate at 100 MPa. Label
 // long; slid 150 nm at 50 m/s instead of the case's 10 m/s to shorten the run
-// (§7.2.2: no effect of v), about 1.2e5 steps: hours of one core (the measured
+// (§7.2.2: no effect of v), about 1.2e5 steps: about 7 h of one core (the measured
 // speed is in docs/dem.md). What Fig. 9.26 shows: the cylinder rolls, grows
 // by taking layer particles, and reaches the Si, leaving a trench. Not yet
 // run to its end (docs/dem.md says what was seen).
