@@ -6,6 +6,8 @@
 //                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
 // wearscale dem trapped-particles [CASE.toml] --material SiO2 --n 3 --D 18e-9 --d0 3e-9 [--length L]
 //                          [--pressure P] [--velocity V] [--slide S] [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
+// wearscale dem oxide-asperity [CASE.toml] [--d0 D0] [--D D] [--pressure P] [--velocity V] [--slide S]
+//                          [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
 // Every study also takes [--resume DIR].
 // The DEM studies of studies/src/dem_study.cpp; each subcommand's flags are
 // the aliases its schema declares.
@@ -17,7 +19,8 @@ namespace wearscale::app {
 
 Command add_dem(CLI::App& app) {
   auto* dem = app.add_subcommand(
-      "dem", "Coarse-grained cohesive DEM (thesis ch. 6-7): patch tests, sheared junctions, rough surfaces, trapped particles");
+      "dem", "Coarse-grained cohesive DEM (thesis ch. 6-7): patch tests, sheared junctions, rough surfaces, trapped particles, "
+      "an oxidized asperity");
   dem->require_subcommand(1);
   struct Entry {
     const char *command, *study, *set_example;  // a key of the study's own for --set's help
@@ -25,7 +28,8 @@ Command add_dem(CLI::App& app) {
   const Entry studies[] = {{"patch-test", "dem/patch_test", "dem.patch_test.width=4"},
                            {"junction", "dem/junction", "dem.junction.seed=2"},
                            {"rough-shear", "dem/rough_shear", "dem.rough_shear.seed=2"},
-                           {"trapped-particles", "dem/trapped_particles", "dem.trapped_particles.seed=2"}};
+                           {"trapped-particles", "dem/trapped_particles", "dem.trapped_particles.seed=2"},
+                           {"oxide-asperity", "dem/oxide_asperity", "dem.oxide_asperity.seed=2"}};
   std::vector<std::pair<CLI::App*, Command>> commands;
   for (const auto& [command, study, set_example] : studies) {
     auto run = add_study_command(*dem, command, study, studies::study_registry().create(study)->summary(),

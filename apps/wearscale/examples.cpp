@@ -49,6 +49,9 @@ const std::map<std::string, std::vector<std::string>>& table() {
       {"dem trapped-particles",
        {"wearscale dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 \"6 nm\" --velocity 100 "
         "--slide \"12 nm\" --out trapped"}},
+      {"dem oxide-asperity",
+       {"wearscale dem oxide-asperity --d0 \"6 nm\" --D 20e-9 --velocity 100 --slide \"12 nm\" "
+        "--set dem.oxide_asperity.box='[\"60 nm\", \"30 nm\", \"65 nm\"]' --out oxide-asperity    # a small cell"}},
       {"wearmap", {analytic2d}},
       {"wearmap analytic2d", {analytic2d + "    # Fig. 3.7 on a 40² grid"}},
       {"wearmap analytic3d", {"wearscale wearmap analytic3d --interaction max --n 41 --out map3d    # Fig. 4.6"}},

@@ -7,7 +7,9 @@
 // snapshot file) and continues from the state restored: a killed run resumed
 // gives the same outputs bit for bit (one thread).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <string_view>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -18,6 +20,7 @@
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
+#include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
@@ -35,7 +38,7 @@ namespace {
 
 using namespace dem;
 
-CohesiveMaterial dem_material(const Config& root);
+CohesiveMaterial dem_material(const Config& root, const std::string& default_name = "table-6.4");
 
 // [dem] law: the contact law between the particles, a registered name
 // (contact_law.hpp); [dem] friction: its Coulomb μ, read for the hooke law.
@@ -171,9 +174,9 @@ struct SlidingDumps {
   long cell_record_every = 1;
 };
 
-CohesiveMaterial dem_material(const Config& root) {
+CohesiveMaterial dem_material(const Config& root, const std::string& default_name) {
   const Config c = root.section("dem");
-  const std::string name = c.string_or("material", "table-6.4");
+  const std::string name = c.string_or("material", default_name);
   const double s = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
   CohesiveMaterial m;
   if (name == "table-6.4") {
@@ -510,6 +513,170 @@ nlohmann::json run_trapped_particles_study(const Config& root, RunContext& conte
           {"files", files}};
 }
 
+// The substrate of the oxide-asperity study: a material of the library (or
+// [materials.define]) by name, its ν at most the pair force's (6.52) and its η
+// from the record or the key.
+CohesiveMaterial substrate_material(const Config& root, const Config& c, double scaling_exponent) {
+  const std::string name = c.string_or("substrate", "Si");
+  materials::MaterialLibrary library;
+  define_materials_from(library, root);
+  if (!library.contains(name)) {
+    std::string known;
+    for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + n;
+    throw c.error("substrate", fmt::format("unknown material '{}'", name), known);
+  }
+  const auto& record = library.get(name);
+  const double eta = c.number_or("substrate_restitution", record.restitution ? *record.restitution : 0.9,
+                                 Range{0.0, 1.0, true, false});
+  CohesiveMaterial m = cohesive_material(record, scaling_exponent, eta);
+  m.poisson = c.number_or("substrate_poisson", std::min(m.poisson, 0.2), Range::open_closed(-1.0, 0.25));
+  require_modelled(m);
+  return m;
+}
+
+nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context) {
+  const std::filesystem::path& out = context.output_dir();
+  require_cohesive_law(root, "oxide-asperity study");
+  OxideAsperitySpec spec;
+  spec.oxide = dem_material(root, "SiO2");
+  const Config c = root.section("dem.oxide_asperity");
+  spec.substrate = substrate_material(root, c, spec.oxide.scaling_exponent);
+  spec.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
+  spec.largest = c.number_or("largest", 1.25 * spec.d0, Range::at_least(spec.d0), units::length);
+  if (c.has("box")) {
+    const auto b = c.numbers("box", Range::positive(), units::length);
+    if (b.size() != 3) throw c.error("box", fmt::format("{} values", b.size()), "three lengths [x, y, z]");
+    spec.box = {b[0], b[1], b[2]};
+  }
+  spec.layer_thickness = c.number_or("layer_thickness", 5e-9, Range::at_least(0.5 * spec.d0), units::length);
+  spec.body_diameter = c.number_or("body_diameter", 50e-9, Range::at_least(3.0 * spec.d0), units::length);
+  spec.clearance = c.number_or("clearance", 0.25, Range::closed_open(0.0, 1.0));
+  spec.plate_thickness = c.number_or("plate_thickness", 1.5, Range::closed(1.0, 10.0));
+  spec.wall_thickness = c.number_or("wall_thickness", 1.5, Range::closed(1.0, 10.0));
+  spec.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
+  spec.pressure = c.number_or("pressure", 100e6, Range::closed(0.0, spec.oxide.tensile_strength), units::pressure);
+  spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
+  spec.sliding_distance = c.number_or("sliding_distance", spec.box.x, Range::positive(), units::length);
+  spec.settle_distance = c.number_or("settle_distance", 2.0 * spec.d0, Range::positive(), units::length);
+  spec.settle_damping = c.number_or("settle_damping", 0.1, Range::closed(0.0, 1.0));
+  spec.track_distance = c.number_or("track_distance", 2.0 * spec.d0, Range::at_least(spec.d0), units::length);
+  spec.record_every = c.integer_or("record_every", 200, Range::at_least(1));
+  spec.seed = static_cast<std::uint64_t>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
+  spec.relax_tolerance = c.number_or("relax_tolerance", 1e-4, Range::open(0.0, 1e-2));
+  spec.max_relax_steps = c.integer_or("max_relax_steps", 20000, Range::at_least(0));
+  const long dump_every = c.integer_or("dump_every", 5000, Range::at_least(0));
+  root.reject_unknown_keys();
+  try {
+    check(spec);
+  } catch (const InputError& e) {  // name the key of the quantity refused
+    const std::string_view what = e.what();
+    for (const auto& [phrase, key] : {std::pair{"box", "box"}, {"settle distance", "settle_distance"},
+                                      {"body diameter", "body_diameter"}, {"layer thickness", "layer_thickness"}})
+      if (what.find(phrase) != std::string_view::npos) throw c.error(key, e.what());
+    throw;
+  }
+
+  log::info("DEM oxidized asperity (§9.3.3): {} layer {:.3g} m and cylinder D = {:.3g} m on {} (HCP), box {:.3g} × {:.3g} "
+            "× {:.3g} m, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa",
+            spec.oxide.name, spec.layer_thickness, spec.body_diameter, spec.substrate.name, spec.box.x, spec.box.y,
+            spec.box.z, spec.d0, spec.velocity, spec.pressure);
+  std::filesystem::create_directories(out);
+  DumpWriter dump(out / "oxide_asperity.dump");
+  std::unique_ptr<Progress> bar;
+  // A line in the log every 10 % of the run, 1 % for runs of more than 1e10
+  // particle-steps (hours), and at least every 5 minutes: a long run's partial
+  // results and its speed, particle-steps per CPU second of this process
+  // since its first sample.
+  std::clock_t cpu0 = 0;
+  long step0 = 0, logged = 0;
+  auto last_line = std::chrono::steady_clock::now();
+  const auto r = run_oxide_asperity(
+      spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
+        if (!bar) {
+          bar = std::make_unique<Progress>("oxidized asperity", static_cast<double>(planned));
+          log::info("oxide asperity: {} particles, Δt = {:.3g} s, {} steps", sim.particles().size(), sim.time_step(), planned);
+          cpu0 = std::clock();
+          step0 = step;
+        }
+        bar->update(static_cast<double>(step));
+        const long per = static_cast<double>(planned) * static_cast<double>(sim.particles().size()) > 1e10 ? 100 : 10;
+        const auto now = std::chrono::steady_clock::now();
+        if (step * per / planned > logged || step == planned || now - last_line > std::chrono::minutes(5)) {
+          logged = step * per / planned;
+          last_line = now;
+          const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+          log::info("oxide asperity: step {}/{}, slide {:.4g} nm, F_T {:.4g} N, F_N {:.4g} N, body {} ({} picked up), "
+                    "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {:.3g} particle-steps per CPU s",
+                    step, planned, s.sliding * 1e9, s.tangential_force, s.normal_force, s.body_particles, s.picked_up,
+                    s.rotation, s.travel * 1e9, s.trench_depth * 1e9, s.trench_max_depth * 1e9,
+                    cpu > 0.0 ? static_cast<double>(step - step0) * static_cast<double>(sim.particles().size()) / cpu : 0.0);
+        }
+        if (dump.frames() == 0 || (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)))
+          dump.write(sim, {{"rolling_body", body}});
+      });
+  bar.reset();
+  dump.commit();
+
+  const std::vector<std::string> names = {"time",          "sliding",   "tangential_force", "normal_force",
+                                          "kinetic_energy", "body_particles", "picked_up", "rotation",
+                                          "travel",         "trench_depth", "trench_max_depth"},
+                                 unit = {"s", "m", "N", "N", "J", "1", "1", "rad", "m", "m", "m"};
+  std::vector<std::vector<double>> cols(names.size());
+  for (const auto& h : r.history) {
+    const double row[] = {h.time,           h.sliding,   h.tangential_force, h.normal_force, h.kinetic_energy,
+                          h.body_particles, h.picked_up, h.rotation,         h.travel,       h.trench_depth,
+                          h.trench_max_depth};
+    for (std::size_t k = 0; k < names.size(); ++k) cols[k].push_back(row[k]);
+  }
+  const std::vector<std::span<const double>> spans(cols.begin(), cols.end());
+  const bool reached = r.reached_substrate_at >= 0.0;
+  const std::string verdict =
+      fmt::format("body {} rolling (ratio {:.2f}), {} → {} particles, trench {:.2g} nm{}",
+                  r.rolling_ratio > 0.5 ? "is" : "is not", r.rolling_ratio, r.body_particles, r.final_body,
+                  r.trench_depth * 1e9, reached ? ", reached the Si" : "");
+  const auto csv = out / "oxide_asperity_history.csv";
+  write_csv(csv, names, spans, unit,
+            {fmt::format("oxidized asperity (§9.3.3): {} cylinder D = {:.3g} m on a {:.3g} m {} layer over HCP {}, d0 = {:.3g} "
+                         "m, p_N = {:.3g} Pa; {}",
+                         spec.oxide.name, spec.body_diameter, spec.layer_thickness, spec.oxide.name, spec.substrate.name,
+                         spec.d0, spec.pressure, verdict)});
+  H5Writer h5(out / "oxide_asperity.h5");
+  h5.write_table("/history", names, spans, unit);
+  h5.set_attribute("/", "case_toml", root.to_toml());
+  auto put = [&](const std::string& name, double v, const std::string& u, const std::string& what) {
+    context.report(name, v, u, what);
+    h5.write_scalar("/results/" + name, v, u);
+  };
+  put("particles", static_cast<double>(r.particles), "1", "particles");
+  put("substrate_particles", static_cast<double>(r.substrate_particles), "1", "Si particles (HCP)");
+  put("layer_particles", static_cast<double>(r.layer_particles), "1", "SiO2 layer particles");
+  put("body_initial", static_cast<double>(r.body_particles), "1", "particles of the loose cylinder as built");
+  put("plate_particles", static_cast<double>(r.plate_particles), "1", "particles of the rigid plate");
+  put("box_x", r.box.x, "m", "periodic length along x (whole HCP cells)");
+  put("box_y", r.box.y, "m", "periodic length along y (whole HCP cells)");
+  put("relax_scale", r.relax_scale, "1", "scale of the relaxed SiO2 onto the lattice's lengths");
+  put("relax_strain", r.relax_strain, "1", "in-plane strain left after that scale");
+  put("layer_measured", r.layer_measured, "m", "layer surface over the Si surface before sliding");
+  put("body_final", r.final_body, "1", "particles of the rolling body at the end");
+  put("picked_up", r.final_picked_up, "1", "of those, taken from the layer or the Si");
+  put("rotation", r.rotation, "rad", "body rotation about y over the slide");
+  put("travel", r.travel, "m", "body centre travel along x");
+  put("rolling_ratio", r.rolling_ratio, "1", "|rotation| R / travel (1: rolling without slip)");
+  put("trench_depth", r.trench_depth, "m", "mean depth of the strip passed, below the initial surface");
+  put("trench_max_depth", r.trench_max_depth, "m", "deepest bin of that strip");
+  put("reached_substrate_at", r.reached_substrate_at, "m", "slide at which the trench reached the Si (−1: not)");
+  put("friction", r.friction, "1", "mean F_T / mean F_N over the second half");
+  put("mean_tangential_force", r.mean_tangential_force, "N", "mean F_T over the second half");
+  put("steps", static_cast<double>(r.steps), "1", fmt::format("steps of Δt = {:.3g} s", r.time_step));
+  put("relaxation_steps", static_cast<double>(r.relaxation_steps), "1", "steps relaxing the SiO2 (§6.2.2)");
+  h5.commit();
+  return {{"verdict", verdict},
+          {"caption", fmt::format("{} cylinder D = {:.3g} nm on {:.3g} nm {} over {}, d_0 = {:.3g} nm, p_N = {:.3g} MPa",
+                                  spec.oxide.name, spec.body_diameter * 1e9, spec.layer_thickness * 1e9, spec.oxide.name,
+                                  spec.substrate.name, spec.d0 * 1e9, spec.pressure / 1e6)},
+          {"files", {csv.string(), h5.final_path().string(), dump.final_path().string()}}};
+}
+
 // A measured E ≤ 0 or ν outside (−1, 0.5) is no elastic solid: the patch
 // test failed to measure one (exit 1), whatever the sample did.
 void require_elastic_bounds(const nlohmann::json& results) {
@@ -708,3 +875,51 @@ class TrappedParticlesStudy final : public DemStudy {
 }  // namespace
 }  // namespace wearscale::studies
 WEARSCALE_STUDY(TrappedParticlesStudy)
+
+namespace wearscale::studies {
+namespace {
+class OxideAsperityStudy final : public DemStudy {
+ public:
+  std::string name() const override { return "dem/oxide_asperity"; }
+  std::string summary() const override {
+    return "a loose SiO2 cylinder rolled by a plate on an oxidized Si surface (§9.3.3, Fig. 9.26): growth, trench";
+  }
+  Schema schema() const override {
+    Schema s = material_keys("the oxide (layer, cylinder, plate): SiO2 or a [materials.define] name");
+    s[0].fallback = "SiO2";
+    const std::string t = "dem.oxide_asperity.";
+    s.insert(s.end(),
+             {{t + "substrate", "string", "", "", "Si", "the HCP substrate's material (library or [materials.define] name)", ""},
+              {t + "substrate_poisson", "number", "(-1, 0.25]", "1", "min(ν, 0.2)",
+               "the substrate's modelled ν (Si's 0.27 exceeds the pair force's 1/4 (6.52))", ""},
+              {t + "substrate_restitution", "number", "(0, 1]", "1", "record or 0.9", "the substrate's η", ""},
+              {t + "d0", "number", "> 0", "m", "1.5e-9", "Si lattice spacing and mode of the SiO2 diameters", "--d0"},
+              {t + "largest", "number", "≥ d0", "m", "1.25 d0", "largest SiO2 diameter", ""},
+              {t + "box", "list", "three lengths > 0", "m", "[150e-9, 150e-9, 75e-9]",
+               "cell [x, y, z]; x, y rounded to whole HCP cells", ""},
+              {t + "layer_thickness", "number", "≥ d0/2", "m", "5e-9", "SiO2 layer on the Si", ""},
+              {t + "body_diameter", "number", "≥ 3 d0", "m", "50e-9", "loose SiO2 cylinder (axis along y)", "--D"},
+              {t + "clearance", "number", "[0, 1)", "1", "0.25", "gaps layer–cylinder–plate, in d0", ""},
+              {t + "plate_thickness", "number", "[1, 10]", "1", "1.5", "rigid plate, in d0", ""},
+              {t + "wall_thickness", "number", "[1, 10]", "1", "1.5", "fixed Si wall at the bottom, in d0", ""},
+              {t + "velocity", "number", "(0, 1000)", "m/s", "10", "sliding velocity of the plate", "--velocity"},
+              {t + "pressure", "number", "[0, σ_m,N]", "Pa", "1e8", "normal pressure on the plate", "--pressure"},
+              {t + "sliding_distance", "number", "> 0", "m", "box x", "sliding distance", "--slide"},
+              {t + "settle_distance", "number", "> 0", "m", "2 d0", "loading at rest (damped) before sliding, for the time the plate takes to slide this far", ""},
+              {t + "settle_damping", "number", "[0, 1]", "1", "0.1", "global damping while settling, in c_c (6.64)", ""},
+              {t + "track_distance", "number", "≥ d0", "m", "2 d0", "slide between updates of the rolling body", ""},
+              {t + "time_step", "number", "(0, 1)", "1", "0.1", "time step in Δt_c", ""},
+              {t + "record_every", "integer", "≥ 1", "1", "200", "steps per history sample", ""},
+              {t + "seed", "integer", "[0, 4294967295]", "1", "1", "seed of the amorphous SiO2", "--seed"},
+              {t + "relax_tolerance", "number", "(0, 0.01)", "1", "1e-4", "stress tolerance of the relaxation, in E", ""},
+              {t + "max_relax_steps", "integer", "≥ 0", "1", "20000", "relaxation step limit", ""},
+              {t + "dump_every", "integer", "≥ 0", "1", "5000", "steps between OVITO dump frames (0: none)", ""}});
+    return s;
+  }
+  void run(const Config& inputs, RunContext& context) override {
+    finish(run_oxide_asperity_study(inputs, context), context, "oxide_asperity");
+  }
+};
+}  // namespace
+}  // namespace wearscale::studies
+WEARSCALE_STUDY(OxideAsperityStudy)

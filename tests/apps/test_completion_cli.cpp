@@ -53,7 +53,7 @@ TEST(Completion, BashScriptParses) {
 TEST(Completion, BashCompletesCommandsFlagsAndChoices) {
   const auto file = script("bash");
   EXPECT_EQ(bash_offers(file, "d"), "dem");
-  EXPECT_EQ(bash_offers(file, "dem \"\""), "patch-test junction rough-shear trapped-particles") << "subcommands";
+  EXPECT_EQ(bash_offers(file, "dem \"\""), "patch-test junction rough-shear trapped-particles oxide-asperity") << "subcommands";
   EXPECT_EQ(bash_offers(file, "dem patch-test --la"), "--lattice") << "a schema key's flag";
   EXPECT_EQ(bash_offers(file, "dem patch-test --lattice \"\""), "hcp amorphous") << "a choice key's values";
   EXPECT_EQ(bash_offers(file, "contact --friction t"), "tresca");

@@ -43,6 +43,7 @@ TEST(StudySchemas, ListEveryKeyTheirDriversRead) {
       {"dem.junction", "dem junction --material SiO2 --D 20e-9 --d0 6e-9"},
       {"dem.rough_shear", "dem rough-shear --material SiO2 --d0 3e-9"},
       {"dem.trapped_particles", "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 6e-9"},
+      {"dem.oxide_asperity", "dem oxide-asperity --d0 6e-9"},
       {"wearmap.analytic2d", "wearmap analytic2d"},
       {"wearmap.analytic3d", "wearmap analytic3d"},
       {"wearmap.rough", "wearmap rough"},

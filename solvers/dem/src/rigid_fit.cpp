@@ -30,7 +30,14 @@ RigidFit rigid_fit(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     misfit += (r * (pa - ca) + cb - pb).squaredNorm();
     moved += (pb - cb - (pa - ca)).squaredNorm();
   }
-  return {moved > 0.0 ? std::sqrt(misfit / moved) : 0.0, std::atan2(r(0, 2), r(0, 0))};
+  RigidFit out;
+  out.residual = moved > 0.0 ? std::sqrt(misfit / moved) : 0.0;
+  out.angle_y = std::atan2(r(0, 2), r(0, 0));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out.rotation[static_cast<std::size_t>(3 * i + j)] = r(i, j);
+  out.from = {ca.x(), ca.y(), ca.z()};
+  out.to = {cb.x(), cb.y(), cb.z()};
+  return out;
 }
 
 std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<std::size_t>& set) {
