@@ -1,5 +1,7 @@
 #include "wearscale/coupling/plots.hpp"
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -12,6 +14,7 @@
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/units.hpp"
@@ -61,6 +64,10 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
   std::filesystem::remove(script_file, ec);
   if (status != 0) {
     std::filesystem::remove(partial, ec);
+    // Stopped by a signal (the job's, or this run's SIGINT/SIGTERM): the run
+    // stops too, so that it is not taken as complete without its plot.
+    if ((status != -1 && WIFSIGNALED(status)) || interrupt_requested())
+      throw Interrupted(fmt::format("gnuplot was stopped by a signal while drawing {}", png.string()));
     log::warn("gnuplot could not draw {} (exit status {})", png.string(), status);
     return std::nullopt;
   }
