@@ -62,6 +62,21 @@ TEST(LammpsRunner, ErrorLineWithZeroExitStillFails) {
   EXPECT_THROW(run_lammps({lmp, 1, dir, "in.lammps", "x"}), NumericalError);
 }
 
+TEST(LammpsRunner, ARunFolderRelativeToTheWorkingDirectoryRuns) {
+  // A relative cache folder (md.cache_dir = "cache") gives relative run folders: lmp still runs there.
+  const auto dir = md_test::temp_dir("relative");
+  const auto lmp = dir / "lmp";
+  md_test::write(lmp, "#!/bin/sh\necho 'LAMMPS (fake)'\npwd > where.txt\n");
+  std::filesystem::permissions(lmp, std::filesystem::perms::owner_all);
+  std::filesystem::create_directories(dir / "cache" / "run");
+  md_test::write(dir / "cache" / "run" / "in.lammps", "run 10\n");
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  EXPECT_NO_THROW(run_lammps({lmp, 1, "cache/run", "in.lammps", "relative run folder"}));
+  std::filesystem::current_path(previous);
+  EXPECT_TRUE(std::filesystem::exists(dir / "cache" / "run" / "where.txt"));
+}
+
 TEST(LammpsRunner, CommandUsesMpirunOnlyForSeveralRanks) {
   int used = 0;
   const auto one = lammps_command({"/usr/bin/lmp", 1, "/tmp", "in.lammps", ""}, used);

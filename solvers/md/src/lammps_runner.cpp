@@ -84,7 +84,9 @@ Child spawn(const std::vector<std::string>& argv, const fs::path& cwd, const fs:
   std::vector<char*> envp;
   for (const auto& e : environment) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
-  const std::string dir = cwd.string(), file = out.string();
+  // Absolute: the child changes to `cwd` before it opens `out` (a relative
+  // cache folder, md.cache_dir = "cache", would otherwise name a file that is not there).
+  const std::string dir = fs::absolute(cwd).string(), file = fs::absolute(out).string();
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error(fmt::format("fork failed: {}", std::strerror(errno)));
   if (pid == 0) {
