@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/dem/virial_stress.hpp"
 
@@ -147,6 +148,7 @@ RelaxationReport relax_amorphous(Simulation& sim, const RelaxationSettings& s) {
       for (auto& xi : x) xi[a] = lo + scale * (xi[a] - lo);
       box.hi[a] = lo + scale * (box.hi[a] - lo);
     }
+    if (interrupt_requested()) throw_if_interrupted("amorphous DEM sample (relaxation)");
     sim.step();
     ++report.cohesion_steps;
   }
