@@ -1,5 +1,10 @@
 #include "wearscale/coupling/shear_farm.hpp"
 
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+
 #include <fmt/format.h>
 
 #include "wearscale/core/interrupt.hpp"
@@ -7,6 +12,83 @@
 #include "wearscale/core/task_farm.hpp"
 
 namespace wearscale::coupling {
+
+namespace {
+
+constexpr const char* kShearRunTask = "molecular/lammps run";
+
+std::mutex g_studies_mutex;
+std::map<std::string, md::ShearTestSpec>& served_studies() {
+  static std::map<std::string, md::ShearTestSpec> studies;
+  return studies;
+}
+
+// One run of a registered study, here: the `call`-th map call's run `index`
+// ("material\ncall\nindex"); every other map call gathers nothing, so the
+// study stops once that run is done (its cache entry holds what it did).
+std::string run_served_shear_run(const std::string& description) {
+  std::istringstream in(description);
+  std::string material;
+  std::size_t call = 0, index = 0;
+  if (!std::getline(in, material) || !(in >> call >> index))
+    throw std::logic_error("molecular/lammps: a served run's description is garbled: " + description);
+  md::ShearTestSpec spec;
+  {
+    std::lock_guard guard(g_studies_mutex);
+    const auto it = served_studies().find(material);
+    if (it == served_studies().end()) throw std::logic_error("molecular/lammps: no study of " + material + " on this rank");
+    spec = it->second;
+  }
+  std::string text;
+  std::size_t calls = 0;
+  const md::RunMap one = [&](std::size_t count, const std::function<std::string(std::size_t)>& task)
+      -> std::optional<std::vector<std::string>> {
+    if (calls++ == call) {
+      if (index >= count) throw std::logic_error("molecular/lammps: a served run beyond its study's runs");
+      text = task(index);
+    }
+    return std::nullopt;
+  };
+  md::run_shear_study(spec, one);
+  return text;
+}
+
+}  // namespace
+
+void register_served_shear_study(const std::string& material, const md::ShearTestSpec& spec) {
+  {
+    std::lock_guard guard(g_studies_mutex);
+    served_studies()[material] = spec;
+  }
+  mpi::register_task_kind(kShearRunTask, run_served_shear_run);
+}
+
+md::RunMap served_shear_runs(const std::string& material, std::string label) {
+  auto calls = std::make_shared<std::size_t>(0);
+  return [material, label = std::move(label), calls](std::size_t count,
+                                                     const std::function<std::string(std::size_t)>&)
+             -> std::optional<std::vector<std::string>> {
+    const std::size_t call = (*calls)++;
+    std::vector<std::string> descriptions;
+    for (std::size_t k = 0; k < count; ++k) descriptions.push_back(fmt::format("{}\n{}\n{}", material, call, k));
+    mpi::FarmOptions options;
+    options.label = label;
+    options.stop = [] { return interrupt_requested(); };
+    const mpi::FarmOutcome outcome = mpi::farm_described(kShearRunTask, descriptions, options);
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& r = outcome.results[k];
+      if (r.status == mpi::TaskResult::Status::NotRun)
+        throw Interrupted(fmt::format("{}: interrupted, {} of {} runs not started", label, outcome.not_run, count));
+      if (r.status == mpi::TaskResult::Status::Failed) {
+        if (r.numerical) throw NumericalError("LAMMPS", -1, fmt::format("{}, run {} (rank {})", label, k + 1, r.rank), r.text);
+        throw InputError(fmt::format("{}, run {} (rank {}): {}", label, k + 1, r.rank, r.text));
+      }
+      out.push_back(r.text);
+    }
+    return out;
+  };
+}
 
 md::RunMap farmed_shear_runs(std::string label) {
   return [label = std::move(label)](std::size_t count, const std::function<std::string(std::size_t)>& task)

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -84,4 +85,29 @@ TEST(MpiEnsemblesCli, TheJunctionRunsOfNanoDemOverOneThreeAndSevenRanksGiveTheSe
       EXPECT_GT(t["seconds"].get<double>(), 0.0);
     }
   }
+}
+
+// A pipeline on live LAMMPS strengths (molecular/lammps, Si, two pressures of a
+// short shear test): rank 0 runs the pipeline, the other ranks serve its
+// LAMMPS runs; the headline figures equal the serial ones, and each run ran
+// once (one cache entry per pressure).
+TEST(MpiEnsemblesCli, TheLammpsRunsOfAMolecularScaleOverThreeRanksGiveTheSerialStrengths) {
+  if (std::system("command -v lmp >/dev/null 2>&1") != 0) GTEST_SKIP() << "no lmp on PATH (apt-get install lammps)";
+  fs::create_directories(work);
+  std::ofstream(work / "lammps_si.toml") << "[case]\nname = \"lammps-si\"\n[materials]\npin = \"Si\"\ndisc = \"Si\"\n"
+                                            "[scale.molecular]\nbackend = \"lammps\"\npressures = [0, 5e9]\n"
+                                            "strain_end = 0.02\nwindow = [0.01, 0.02]\ncompression_time = 0\n"
+                                            "sample_steps = 20\n[scale.nano]\nbackend = \"analytic\"\n";
+  const auto serial = run(0, "run lammps_si.toml -q --set scale.molecular.cache_dir=cache_serial --out lammps_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto r = run(3, "run lammps_si.toml -q --set scale.molecular.cache_dir=cache_np3 --out lammps_np3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto a = nlohmann::json::parse(slurp(work / "lammps_serial" / "summary.json"))["results"];
+  const auto b = nlohmann::json::parse(slurp(work / "lammps_np3" / "summary.json"))["results"];
+  ASSERT_FALSE(a.empty());
+  for (const auto& [name, v] : a.items()) EXPECT_EQ(v["value"], b[name]["value"]) << name;
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(work / "cache_np3"))
+    entries += e.is_directory() && e.path().filename().string().size() == 64 ? 1 : 0;
+  EXPECT_EQ(entries, 2u) << "one LAMMPS run per pressure";
 }

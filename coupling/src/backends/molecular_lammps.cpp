@@ -7,6 +7,8 @@
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/task_farm.hpp"
+#include "wearscale/coupling/shear_farm.hpp"
 #include "wearscale/materials/strength_law.hpp"
 #include "wearscale/md/shear_study.hpp"
 #include "wearscale/coupling/shear_test_keys.hpp"
@@ -24,6 +26,7 @@ class MolecularLammps final : public Scale {
         throw setup.section.error("backend", "the LAMMPS shear test knows Si and SiO2 only (material '" + m + "')",
                                   "\"table\" or \"ideal\" for other materials");
       specs_.emplace(m, read_shear_test_spec(setup.section, m));
+      register_served_shear_study(m, specs_.at(m));  // under mpirun any rank may run its points
     }
     outside_ = setup.section.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
                    ? materials::OutsideTable::Clamp
@@ -37,9 +40,14 @@ class MolecularLammps final : public Scale {
     return out;
   }
 
+  // Under mpirun the runs (the SiO2 quench, then the points) go over the ranks.
+  bool farms_ensembles() const override { return true; }
+
   void run(Exchange& exchange, RunContext& ctx) override {
     for (const auto& [m, spec] : specs_) {
-      const auto study = md::run_shear_study(spec);  // cached by every input
+      // Cached by every input; under mpirun (a served pipeline) each run on whichever rank asks.
+      const auto study = md::run_shear_study(
+          spec, mpi::ServedRun::active() ? served_shear_runs(m, "molecular/lammps " + m) : md::RunMap{});
       Provenance p = provenance_;
       p.parameters["lammps_version"] = study.lammps_version;
       publish_strength(exchange, ctx, m, materials::StrengthLaw(md::strength_table(study), outside_), std::move(p));

@@ -17,4 +17,15 @@ namespace wearscale::coupling {
 /// other runs are done, rank 0 naming the failed pressures' errors.
 md::RunMap farmed_shear_runs(std::string label);
 
+/// The map for md::run_shear_study in a pipeline that rank 0 runs while the
+/// other ranks serve it (mpi::ServedRun): each run travels as (material, map
+/// call, index) to whichever rank asks, which runs that one run of the
+/// material's registered study. Rank 0 gets every run's text; a failed run
+/// ends the scale (its NumericalError or InputError), as serially.
+md::RunMap served_shear_runs(const std::string& material, std::string label);
+
+/// The study of `material` as served runs see it: every rank registers it
+/// when its pipeline is prepared (the molecular/lammps backend's constructor).
+void register_served_shear_study(const std::string& material, const md::ShearTestSpec& spec);
+
 }  // namespace wearscale::coupling
