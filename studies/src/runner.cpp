@@ -29,6 +29,7 @@
 #include "wearscale/core/task_farm.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/core/utc_time.hpp"
 #include "wearscale/core/utf8.hpp"
 #include "wearscale/core/worker_pool.hpp"
 #include "wearscale/io/checkpoint.hpp"
@@ -215,6 +216,15 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   std::optional<OutputLock> lock;
   if (command != nullptr) lock.emplace(OutputLock::folder(summary.output_dir, *command));
   create_output_folder(summary.output_dir);
+  // A run of an ensemble (a sweep's) keeps its own log beside its outputs, on whichever rank runs it.
+  std::optional<log::TaskLog> task_log;
+  if (command != nullptr) {
+    task_log.emplace(summary.output_dir / "log.txt");
+    log::task_note(fmt::format("case '{}': {} → {} ({}, rank {} of {}, {} thread(s), {})", summary.case_name,
+                               fmt::join(summary.scales, " → "), summary.output_dir.string(),
+                               run.resume ? "resumed" : "started", mpi::world_rank(), mpi::world_size(),
+                               omp_get_max_threads(), utc_now()));
+  }
   // Temporary files left by a killed run; a resumed one may continue some (a DEM study's snapshot file),
   // so they go only once it has completed.
   if (!run.resume) remove_stale_partials(summary.output_dir);
@@ -243,6 +253,9 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   summary.files.insert(summary.files.begin(), h5.final_path());
   summary.files.push_back(summary.output_dir / "summary.json");
   outputs.commit(summary.to_json());
+  for (const auto& [name, r] : summary.results.items())
+    log::task_note(fmt::format("{} = {} {}", name, r["value"].get<double>(), r["unit"].get<std::string>()));
+  log::task_note(fmt::format("case '{}': complete ({})", summary.case_name, utc_now()));
   if (run.checkpoints->saves() > 0)
     log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
                run.checkpoints->seconds_saving());

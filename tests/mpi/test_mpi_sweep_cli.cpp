@@ -70,6 +70,10 @@ TEST(MpiSweepCli, OneThreeAndSevenRanksGiveTheSerialOutputs) {
     const auto r = run(ranks, sweep_args + " --out " + dir);
     ASSERT_EQ(r.status, 0) << r.err;
     same_outputs::expect_same_outputs(serial, work / dir, same_outputs::Timings::Ignored);
+    // Each run keeps its log in its folder, whichever rank ran it (the others print nothing).
+    for (const auto& e : fs::directory_iterator(work / dir))
+      if (e.is_directory() && !e.path().filename().string().starts_with("."))
+        EXPECT_NE(slurp(e.path() / "log.txt").find("case '"), std::string::npos) << e.path() / "log.txt";
   }
 }
 

@@ -1,6 +1,7 @@
 #include "wearscale/dem/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
@@ -252,11 +253,14 @@ void Simulation::step() {
 }
 
 void Simulation::run(long steps, const std::function<void(long)>& observe) {
+  const auto start = std::chrono::steady_clock::now();
   for (long s = 0; s < steps; ++s) {
-    // SIGINT/SIGTERM: seen at the next step (a step of 500 000 particles
-    // takes a third of a second; 1024 of them, minutes), so a study stops
-    // within a step, at a chunk's start where it checkpoints or inside one.
-    if (interrupt_requested()) throw_if_interrupted(fmt::format("dem (step {})", step_));
+    // SIGINT/SIGTERM: at the start of a call, so that a study running in
+    // chunks stops between them (where it checkpoints), and every 1024 steps;
+    // in a call that has run for more than 5 s, at the next step (1024 steps
+    // of 500 000 particles take minutes).
+    if (s % 1024 == 0 || (interrupt_requested() && std::chrono::steady_clock::now() - start > std::chrono::seconds(5)))
+      throw_if_interrupted(fmt::format("dem (step {})", step_));
     step();
     if (observe) observe(step_);
   }
