@@ -5,16 +5,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "mpi_launcher.hpp"
 #include "scratch_dir.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 
@@ -28,14 +26,7 @@ const std::string rough_case = "'" WEARSCALE_SOURCE_DIR "/cases/rough_contact.to
 
 // `wearscale args` on `ranks` ranks (0: without mpirun); `env` adds variables.
 CliResult run(int ranks, const std::string& args, const std::string& env = {}) {
-  fs::create_directories(work);
-  const auto out = work / "cli.stdout", err = work / "cli.stderr";
-  const std::string launcher =
-      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
-  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + env + " " + launcher + "'" +
-                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return run_cli(args, work, "OMP_NUM_THREADS=1 " + env, mpi_launcher(ranks));
 }
 
 std::size_t count(const std::string& text, const std::string& what) {

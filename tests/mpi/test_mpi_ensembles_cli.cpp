@@ -4,8 +4,6 @@
 // P = 1, 3, 7 (7 > the tasks). Runs mpirun itself (label "mpi").
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -13,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "mpi_launcher.hpp"
 #include "same_outputs.hpp"
 #include "scratch_dir.hpp"
 
@@ -24,14 +23,7 @@ const fs::path work = work_scratch.path();
 
 // `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank.
 CliResult run(int ranks, const std::string& args) {
-  fs::create_directories(work);
-  const std::string launcher =
-      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
-  const auto out = work / "cli.stdout", err = work / "cli.stderr";
-  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + launcher + "'" +
-                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return run_cli(args, work, "OMP_NUM_THREADS=1", mpi_launcher(ranks));
 }
 }  // namespace
 

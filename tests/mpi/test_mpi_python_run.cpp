@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "mpi_launcher.hpp"
 #include "oxide_sweep_case.hpp"
 #include "same_outputs.hpp"
 #include "scratch_dir.hpp"
@@ -25,8 +26,7 @@ const fs::path work = work_scratch.path();
 // tests/mpi/run_sweep.py on `ranks` ranks (0: without mpirun), one thread a rank.
 CliResult run(int ranks, const std::string& out) {
   write_oxide_sweep_case(work, "0, 1e-6, \"inf\"");
-  const std::string launcher =
-      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
+  const std::string launcher = mpi_launcher(ranks) + " ";
   const auto so = work / "py.stdout", se = work / "py.stderr";
   const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 PYTHONPATH='" WEARSCALE_PYTHONPATH
                           "' " + launcher + WEARSCALE_PYTHON " '" WEARSCALE_SOURCE_DIR "/tests/mpi/run_sweep.py' sweep.toml " +

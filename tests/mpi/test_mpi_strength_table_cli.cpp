@@ -9,8 +9,6 @@
 // itself (label "mpi": gtest_discover_tests takes one label here).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <string>
@@ -18,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "mpi_launcher.hpp"
 #include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -33,15 +32,7 @@ const std::string table_args =
 
 // `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank, the LAMMPS cache in `cache`.
 CliResult run(int ranks, const std::string& args, const std::string& cache) {
-  fs::create_directories(work);
-  const std::string launcher =
-      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
-  const auto out = work / "cli.stdout", err = work / "cli.stderr";
-  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 WEARSCALE_CACHE='" +
-                          (work / cache).string() + "' " + launcher + "'" + std::string(WEARSCALE_CLI) + "' " + args +
-                          " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return run_cli(args, work, "OMP_NUM_THREADS=1 WEARSCALE_CACHE='" + (work / cache).string() + "'", mpi_launcher(ranks));
 }
 
 nlohmann::json summary(const std::string& dir) { return nlohmann::json::parse(slurp(work / dir / "summary.json")); }
@@ -67,6 +58,17 @@ fs::path fake_curve() {
   for (int i = 1; i <= 60; ++i)
     out << 2000 + 100 * i << " 0." << (i < 10 ? "0" : "") << i << " " << (i <= 30 ? i * 4 / 10 : 2) << " 0 19 300\n";
   return file;
+}
+
+// A fake lmp at `file`: it answers `lmp -h` with a LAMMPS version line and
+// otherwise runs `body` (shell) in the run folder.
+void write_fake_lmp(const fs::path& file, const std::string& body) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "#!/bin/sh\n"
+                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
+                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
+                      << body;
+  fs::permissions(file, fs::perms::owner_all);
 }
 
 // Every finished entry of a LAMMPS cache.
@@ -107,14 +109,9 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
   // lmp (three links to it: not an input of a run's cache key) ask for the
   // same two pressure points on three ranks at once.
   const fs::path fake = work / "slow-lmp", counter = work / "lmp-calls.txt";
-  fs::create_directories(work);
-  std::ofstream(fake) << "#!/bin/sh\n"
-                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
-                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
-                         "echo run >> '" << counter.string() << "'\nsleep 1\n"
-                         "cp '" << fake_curve().string() << "' shear.dat\n"
-                         "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\ncompleted yes\\n' > sample.txt\n";
-  fs::permissions(fake, fs::perms::owner_all);
+  write_fake_lmp(fake, "echo run >> '" + counter.string() + "'\nsleep 1\n"
+                       "cp '" + fake_curve().string() + "' shear.dat\n"
+                       "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\ncompleted yes\\n' > sample.txt\n");
   std::string links;
   for (const char* name : {"lmp-a", "lmp-b", "lmp-c"}) {
     fs::remove(work / name);
@@ -143,12 +140,7 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
 TEST(MpiStrengthTableCli, AFailedPointEndsEveryRankWithStatus1NamingIt) {
   // A fake lmp that fails every run with a LAMMPS error line.
   const fs::path fake = work / "failing-lmp";
-  fs::create_directories(work);
-  std::ofstream(fake) << "#!/bin/sh\n"
-                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
-                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
-                         "echo 'ERROR: Lost atoms (fake)'; exit 1\n";
-  fs::permissions(fake, fs::perms::owner_all);
+  write_fake_lmp(fake, "echo 'ERROR: Lost atoms (fake)'; exit 1\n");
   const auto r = run(3, "strength-table --backend lammps --material Si --pressures 0,5 -q --lmp '" + fake.string() +
                             "' --out failed",
                      "cache-failed");
@@ -165,21 +157,16 @@ TEST(MpiStrengthTableCli, SiO2QuenchRunsOnceBeforeItsPointsOverTheRanks) {
   // quenched sample, a shear deck (it reads that sample, copied into its
   // folder) writes a curve; each run counted.
   const fs::path fake = work / "sio2-lmp", counter = work / "sio2-calls.txt";
-  fs::create_directories(work);
-  std::ofstream(fake) << "#!/bin/sh\n"
-                         "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
-                         "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
-                         "if grep -q '^write_data' in.lammps; then\n"
-                         "  echo quench >> '" << counter.string() << "'\n"
-                         "  echo 'fake sample' > quenched.data\n"
-                         "  printf 'atoms 1536\\ndensity_g_cm3 2.2\\nlx_A 28\\nlz_A 28\\ncompleted yes\\n' > sample.txt\n"
-                         "  exit 0\n"
-                         "fi\n"
-                         "[ -f quenched.data ] || { echo 'ERROR: no quenched sample (fake)'; exit 1; }\n"
-                         "echo shear >> '" << counter.string() << "'\n"
-                         "cp '" << fake_curve().string() << "' shear.dat\n"
-                         "printf 'atoms 1536\\nlx_A 28\\nly_A 28\\nh0_A 25\\ncompleted yes\\n' > sample.txt\n";
-  fs::permissions(fake, fs::perms::owner_all);
+  write_fake_lmp(fake, "if grep -q '^write_data' in.lammps; then\n"
+                       "  echo quench >> '" + counter.string() + "'\n"
+                       "  echo 'fake sample' > quenched.data\n"
+                       "  printf 'atoms 1536\\ndensity_g_cm3 2.2\\nlx_A 28\\nlz_A 28\\ncompleted yes\\n' > sample.txt\n"
+                       "  exit 0\n"
+                       "fi\n"
+                       "[ -f quenched.data ] || { echo 'ERROR: no quenched sample (fake)'; exit 1; }\n"
+                       "echo shear >> '" + counter.string() + "'\n"
+                       "cp '" + fake_curve().string() + "' shear.dat\n"
+                       "printf 'atoms 1536\\nlx_A 28\\nly_A 28\\nh0_A 25\\ncompleted yes\\n' > sample.txt\n");
   const std::string args = "strength-table --backend lammps --material SiO2 --pressures 0,5,10 --ranks 1 -q --lmp '" +
                            fake.string() + "'";
   const auto serial = run(0, args + " --out sio2-serial", "cache-sio2-serial");

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "mpi_launcher.hpp"
 #include "oxide_sweep_case.hpp"
 #include "same_outputs.hpp"
 #include "scratch_dir.hpp"
@@ -36,13 +37,7 @@ const std::string sweep_args =
 // `wearscale args` on `ranks` ranks (0: without mpirun), one thread a rank.
 CliResult run(int ranks, const std::string& args) {
   write_oxide_sweep_case(work, "0, 1e-6, 3e-6, \"inf\"");
-  const std::string launcher =
-      ranks == 0 ? std::string() : std::string(WEARSCALE_MPIRUN) + " -np " + std::to_string(ranks) + " ";
-  const auto out = work / "cli.stdout", err = work / "cli.stderr";
-  const std::string cmd = "cd '" + work.string() + "' && CI=true OMP_NUM_THREADS=1 " + launcher + "'" +
-                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return run_cli(args, work, "OMP_NUM_THREADS=1", mpi_launcher(ranks));
 }
 
 // The sweep without mpirun, once for every test here.
@@ -71,9 +66,11 @@ TEST(MpiSweepCli, OneThreeAndSevenRanksGiveTheSerialOutputs) {
     ASSERT_EQ(r.status, 0) << r.err;
     same_outputs::expect_same_outputs(serial, work / dir, same_outputs::Timings::Ignored);
     // Each run keeps its log in its folder, whichever rank ran it (the others print nothing).
-    for (const auto& e : fs::directory_iterator(work / dir))
-      if (e.is_directory() && !e.path().filename().string().starts_with("."))
+    for (const auto& e : fs::directory_iterator(work / dir)) {
+      if (e.is_directory() && !e.path().filename().string().starts_with(".")) {
         EXPECT_NE(slurp(e.path() / "log.txt").find("case '"), std::string::npos) << e.path() / "log.txt";
+      }
+    }
   }
 }
 

@@ -20,12 +20,14 @@ inline std::string slurp(const std::filesystem::path& p) {
 }
 
 /// `args` is passed through the shell; run from `cwd`. CI is set so no
-/// progress bar is drawn; `env` adds variables ("WEARSCALE_MEMORY_LIMIT=8GiB").
-inline CliResult run_cli(const std::string& args, const std::filesystem::path& cwd, const std::string& env = {}) {
+/// progress bar is drawn; `env` adds variables ("WEARSCALE_MEMORY_LIMIT=8GiB");
+/// `launcher` starts the program ("mpirun -np 3", see mpi_launcher.hpp).
+inline CliResult run_cli(const std::string& args, const std::filesystem::path& cwd, const std::string& env = {},
+                         const std::string& launcher = {}) {
   std::filesystem::create_directories(cwd);
   const auto out = cwd / "cli.stdout", err = cwd / "cli.stderr";
-  const std::string cmd = "cd '" + cwd.string() + "' && CI=true " + env + " '" + std::string(WEARSCALE_CLI) + "' " +
-                          args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const std::string cmd = "cd '" + cwd.string() + "' && CI=true " + env + " " + launcher + " '" +
+                          std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int raw = std::system(cmd.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
 }
