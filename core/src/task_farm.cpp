@@ -19,6 +19,11 @@
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/progress.hpp"
+#include "wearscale/core/task_store.hpp"
+#include "wearscale/core/utc_time.hpp"
+
+#include <fmt/format.h>
+#include <filesystem>
 
 namespace wearscale::mpi {
 
@@ -28,12 +33,21 @@ using clock = std::chrono::steady_clock;
 
 // Runs one task on this process alone; InputError and NumericalError fail the
 // task, Interrupted leaves it not run, anything else passes (ends the job).
-TaskResult run_one(std::size_t k, const std::function<std::string(std::size_t)>& task) {
+// `log`: the task's own log file ("" none), on whichever rank runs it.
+TaskResult run_one(std::size_t k, const std::function<std::string(std::size_t)>& task, const std::string& log = {}) {
   TaskResult r;
   r.rank = world_rank();
   r.threads = omp_get_max_threads();
   const auto start = clock::now();
   const Alone alone;
+  std::optional<log::TaskLog> task_log;
+  if (!log.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(log).parent_path(), ec);
+    task_log.emplace(log);
+    log::task_note(fmt::format("task started on rank {} of {}, {} thread(s), {}", r.rank, world_size(), r.threads,
+                               utc_now()));
+  }
   try {
     r.text = task(k);
     r.status = TaskResult::Status::Done;
@@ -49,6 +63,9 @@ TaskResult run_one(std::size_t k, const std::function<std::string(std::size_t)>&
     r.text = e.what();
   }
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  if (task_log)
+    log::task_note(fmt::format("task {} in {:.3f} s{}", r.status == TaskResult::Status::Done ? "done" : r.status == TaskResult::Status::Failed ? "failed" : "stopped", r.seconds,
+                               r.status == TaskResult::Status::Done ? std::string() : ": " + r.text));
   return r;
 }
 
@@ -62,20 +79,103 @@ FarmOutcome count_outcome(std::vector<TaskResult> results) {
   return out;
 }
 
-// The tasks in order on this thread (one rank, or alone).
-FarmOutcome run_in_order(std::size_t count, const std::function<std::string(std::size_t)>& task,
-                         const FarmOptions& options) {
+// Which tasks of an ensemble run (decided on rank 0): with a TaskStore on the
+// calling thread, those it does not hold (of this shard); the ones it holds
+// are taken as they were. Each task to run is a slot 0 … todo.size() − 1.
+struct Share {
+  const TaskStore* store = nullptr;
+  std::vector<std::string> identities;  // with a store: one per task
+  std::vector<TaskResult> results;      // one per task; the kept ones Done
+  std::vector<std::size_t> todo;        // the tasks to run, in ensemble order
+  std::vector<std::string> logs;        // per slot: its log file
+  std::vector<std::size_t> elsewhere;   // Shard: other shards' tasks not kept yet
+
+  // A slot finished (rank 0): its result kept at once, so that a kill loses only unfinished tasks.
+  void done(std::size_t slot, const TaskResult& r) {
+    if (store != nullptr) store->keep(identities[todo[slot]], r);
+  }
+};
+
+std::string task_name(const FarmOptions& options, std::size_t k) {
+  return options.name ? options.name(k) : fmt::format("task {}", k + 1);
+}
+
+Share share_of(std::size_t count, const FarmOptions& options) {
+  Share s;
+  s.results.resize(count);
+  const TaskStore* store = TaskStore::current();
+  if (store != nullptr && options.identity) s.store = store;
+  std::vector<std::size_t> missing;
+  std::size_t found = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (s.store == nullptr) {
+      s.todo.push_back(k);
+      s.logs.emplace_back();
+      continue;
+    }
+    s.identities.push_back(options.identity(k));
+    const std::string& id = s.identities.back();
+    if (auto kept = store->find(id)) {
+      s.results[k] = std::move(*kept);
+      ++found;
+    } else if (store->mode() == TaskStore::Mode::Assemble) {
+      missing.push_back(k);
+    } else if (store->mode() == TaskStore::Mode::Shard && !store->owns(k)) {
+      s.elsewhere.push_back(k);
+    } else {
+      s.todo.push_back(k);
+      s.logs.push_back(store->log_path(id, task_name(options, k)).string());
+    }
+  }
+  if (!missing.empty()) {
+    std::vector<std::string> names;
+    for (const auto k : missing)
+      names.push_back(store->owner ? fmt::format("{} ({})", task_name(options, k), store->owner(k)) : task_name(options, k));
+    throw InputError(fmt::format("{}: {} of {} tasks are not done: {}", options.label, missing.size(), count,
+                                 fmt::join(names, "; ")));
+  }
+  if (found > 0)
+    log::info("{}: {} of {} tasks taken from {} (finished before)", options.label, found, count, store->dir().string());
+  return s;
+}
+
+// The ensemble's outcome (rank 0) from its share and the slots' results. A
+// shard whose ensemble still lacks other shards' tasks stops the run here.
+FarmOutcome finish(Share& s, std::vector<TaskResult> slots, const FarmOptions& options) {
+  for (std::size_t t = 0; t < slots.size(); ++t) s.results[s.todo[t]] = std::move(slots[t]);
+  for (const auto k : s.elsewhere) s.results[k].text = "another shard's task";
+  FarmOutcome out = count_outcome(std::move(s.results));
+  if (s.elsewhere.empty()) return out;
+  out.not_run -= static_cast<long long>(s.elsewhere.size());
+  if (out.not_run > 0) throw Interrupted(fmt::format("{}: stopped by a signal", options.label));
+  std::vector<std::string> failed;
+  for (const auto k : s.todo)
+    if (out.results[k].status == TaskResult::Status::Failed)
+      failed.push_back(fmt::format("{}: {}", task_name(options, k), out.results[k].text));
+  if (!failed.empty())
+    throw TasksFailed(fmt::format("{}: {} of this shard's {} tasks failed: {}", options.label, failed.size(),
+                                  s.todo.size(), fmt::join(failed, "; ")),
+                      true);
+  throw ShardDone(fmt::format("{}: this shard's {} task(s) done, {} left to the other shards", options.label,
+                              s.todo.size(), s.elsewhere.size()));
+}
+
+// The slots in order on this thread (one rank, or alone).
+std::vector<TaskResult> run_in_order(Share& s, const std::function<std::string(std::size_t)>& task,
+                                     const FarmOptions& options) {
+  const std::size_t count = s.todo.size();
   std::vector<TaskResult> results(count);
   Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
                                             : Progress::silent(static_cast<double>(count));
-  for (std::size_t k = 0; k < count; ++k) {
+  for (std::size_t t = 0; t < count; ++t) {
     if (options.stop && options.stop()) break;
-    results[k] = run_one(k, task);
-    progress.update(static_cast<double>(k + 1));
-    if (results[k].status == TaskResult::Status::NotRun) break;
+    results[t] = run_one(s.todo[t], task, s.logs[t]);
+    s.done(t, results[t]);
+    progress.update(static_cast<double>(t + 1));
+    if (results[t].status == TaskResult::Status::NotRun) break;
   }
   progress.finish();
-  return count_outcome(std::move(results));
+  return results;
 }
 
 // The task kinds of this process, by name.
@@ -142,22 +242,55 @@ long long decode(const std::vector<char>& buf, int source, TaskResult& r) {
   return id;
 }
 
-void worker(const std::function<std::string(std::size_t)>& task) {
+// A serving rank: asks for slots and runs them (each with its log, if any) until told there are no more.
+void worker(const std::function<std::string(std::size_t)>& task, const std::vector<std::string>& logs) {
   std::string message = encode(-1, TaskResult{});
   for (;;) {
     MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     long long id = -1;
     MPI_Recv(&id, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (id < 0) return;
-    message = encode(id, run_one(static_cast<std::size_t>(id), task));
+    const auto slot = static_cast<std::size_t>(id);
+    message = encode(id, run_one(slot, task, slot < logs.size() ? logs[slot] : std::string()));
+  }
+}
+
+// The slots (and their logs) from rank 0 to every rank: the same list everywhere.
+void broadcast_slots(std::vector<std::size_t>& todo, std::vector<std::string>& logs) {
+  std::string buf;
+  if (world_rank() == 0) {
+    const std::uint64_t n = todo.size();
+    buf.append(reinterpret_cast<const char*>(&n), sizeof n);
+    for (std::size_t t = 0; t < todo.size(); ++t) {
+      const std::uint64_t k = todo[t];
+      buf.append(reinterpret_cast<const char*>(&k), sizeof k);
+      append_sized(buf, logs[t]);
+    }
+  }
+  std::uint64_t bytes = buf.size();
+  MPI_Bcast(&bytes, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  std::vector<char> data(buf.begin(), buf.end());
+  data.resize(bytes);
+  MPI_Bcast(data.data(), static_cast<int>(bytes), MPI_CHAR, 0, MPI_COMM_WORLD);
+  if (world_rank() == 0) return;
+  std::size_t at = 0;
+  std::uint64_t n = 0;
+  std::memcpy(&n, data.data() + at, sizeof n), at += sizeof n;
+  todo.resize(n), logs.resize(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    std::uint64_t k = 0;
+    std::memcpy(&k, data.data() + at, sizeof k), at += sizeof k;
+    todo[t] = k;
+    logs[t] = read_sized(data, at);
   }
 }
 
 // Rank 0: hands out the indices to whichever rank asks (its own thread
 // included) and collects the results. The MPI calls stay on this thread
 // (MPI_THREAD_FUNNELED); it polls for messages, sleeping between polls.
-std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::string(std::size_t)>& task,
+std::vector<TaskResult> dispatch(Share& share, const std::function<std::string(std::size_t)>& task,
                                  const FarmOptions& options) {
+  const std::size_t count = share.todo.size();
   std::vector<TaskResult> results(count);
   std::mutex mutex;
   std::size_t next = 0, done = 0;
@@ -169,6 +302,7 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
   };
   auto store = [&](long long id, TaskResult r) {
     std::lock_guard guard(mutex);
+    share.done(static_cast<std::size_t>(id), r);
     results[static_cast<std::size_t>(id)] = std::move(r);
     ++done;
     if (results[static_cast<std::size_t>(id)].status == TaskResult::Status::NotRun) stopping = true;
@@ -180,7 +314,8 @@ std::vector<TaskResult> dispatch(std::size_t count, const std::function<std::str
   std::thread local([&] {
     omp_set_num_threads(threads);
     try {
-      for (long long id = take(); id >= 0; id = take()) store(id, run_one(static_cast<std::size_t>(id), task));
+      for (long long id = take(); id >= 0; id = take())
+        store(id, run_one(static_cast<std::size_t>(id), task, share.logs[static_cast<std::size_t>(id)]));
     } catch (...) {
       local_error = std::current_exception();
     }
@@ -281,47 +416,68 @@ void serve_ensembles() {
     std::uint64_t count = 0;
     std::memcpy(&count, buffer.data() + at, sizeof count);
     at += sizeof count;
-    std::vector<std::string> descriptions(count);
-    for (auto& d : descriptions) d = read_sized(buffer, at);
-    worker([&](std::size_t k) { return kind(descriptions[k]); });
+    std::vector<std::string> descriptions(count), logs(count);
+    for (std::size_t t = 0; t < count; ++t) descriptions[t] = read_sized(buffer, at), logs[t] = read_sized(buffer, at);
+    worker([&](std::size_t t) { return kind(descriptions[t]); }, logs);
   }
 #endif
 }
 
+std::string described_identity(const std::string& kind, const std::string& description) {
+  return kind + '\n' + description;
+}
+
 FarmOutcome farm_described(const std::string& name, const std::vector<std::string>& descriptions,
-                           const FarmOptions& options) {
+                           const FarmOptions& options_in) {
   const TaskKind kind = find_task_kind(name);
+  FarmOptions options = options_in;
+  if (!options.identity)  // what determines a described task's result: its kind and description
+    options.identity = [&](std::size_t k) { return described_identity(name, descriptions[k]); };
+  Share share = share_of(descriptions.size(), options);
   const auto task = [&](std::size_t k) { return kind(descriptions[k]); };
-  if (!ServedRun::active()) return run_in_order(descriptions.size(), task, options);
+  if (!ServedRun::active()) return finish(share, run_in_order(share, task, options), options);
 #ifdef WEARSCALE_MPI
   const auto start = clock::now();
   std::string message;
   append_sized(message, name);
-  const std::uint64_t count = descriptions.size();
+  const std::uint64_t count = share.todo.size();
   message.append(reinterpret_cast<const char*>(&count), sizeof count);
-  for (const auto& d : descriptions) append_sized(message, d);
+  for (std::size_t t = 0; t < share.todo.size(); ++t)
+    append_sized(message, descriptions[share.todo[t]]), append_sized(message, share.logs[t]);
   for (int r = 1; r < world_size(); ++r)
     MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, r, kTagEnsemble, MPI_COMM_WORLD);
-  auto out = count_outcome(dispatch(descriptions.size(), task, options));
-  log::info("{}: {} tasks on {} ranks in {:.2f} s ({} failed, {} not run)", options.label, descriptions.size(),
-            world_size(), std::chrono::duration<double>(clock::now() - start).count(), out.failed, out.not_run);
-  return out;
+  auto slots = dispatch(share, [&](std::size_t t) { return task(share.todo[t]); }, options);
+  log::info("{}: {} tasks on {} ranks in {:.2f} s", options.label, share.todo.size(), world_size(),
+            std::chrono::duration<double>(clock::now() - start).count());
+  return finish(share, std::move(slots), options);
 #else
   return {};
 #endif
 }
 
 FarmOutcome farm(std::size_t count, const std::function<std::string(std::size_t)>& task, const FarmOptions& options) {
-  if (size() == 1 || !built_with_mpi()) return run_in_order(count, task, options);  // one rank, or alone
+  if (size() == 1 || !built_with_mpi()) {  // one rank, or alone
+    Share share = share_of(count, options);
+    return finish(share, run_in_order(share, task, options), options);
+  }
 #ifdef WEARSCALE_MPI
   const auto start = clock::now();
   FarmOutcome out;
+  Share share;
   if (world_rank() == 0) {
-    out = count_outcome(dispatch(count, task, options));
-    log::info("{}: {} tasks on {} ranks in {:.2f} s ({} failed, {} not run)", options.label, count, world_size(),
-              std::chrono::duration<double>(clock::now() - start).count(), out.failed, out.not_run);
+    share = share_of(count, options);
+    if (share.store != nullptr && share.store->mode() != TaskStore::Mode::Keep)
+      throw std::logic_error("task farm: shards and merges run without mpirun");  // the runner refuses them before
+  }
+  broadcast_slots(share.todo, share.logs);
+  const auto slot_task = [&](std::size_t t) { return task(share.todo[t]); };
+  if (world_rank() == 0) {
+    auto slots = dispatch(share, slot_task, options);
+    log::info("{}: {} tasks on {} ranks in {:.2f} s", options.label, share.todo.size(), world_size(),
+              std::chrono::duration<double>(clock::now() - start).count());
+    out = finish(share, std::move(slots), options);
   } else {
-    worker(task);
+    worker(slot_task, share.logs);
   }
   // Every rank learns how it went (rank 0's counts), so all end alike.
   out.failed = sum(world_rank() == 0 ? out.failed : 0LL);

@@ -10,6 +10,7 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/core/task_store.hpp"
 
 namespace wearscale::coupling {
 
@@ -91,9 +92,13 @@ md::RunMap served_shear_runs(const std::string& material, std::string label) {
 }
 
 md::RunMap farmed_shear_runs(std::string label) {
-  return [label = std::move(label)](std::size_t count, const std::function<std::string(std::size_t)>& task)
+  auto calls = std::make_shared<std::size_t>(0);
+  return [label = std::move(label), calls](std::size_t count, const std::function<std::string(std::size_t)>& task)
              -> std::optional<std::vector<std::string>> {
-    if (mpi::size() == 1) {  // serial, or alone: the errors as they come
+    const std::size_t call = (*calls)++;
+    const mpi::TaskStore* store = mpi::TaskStore::current();
+    const bool sharded = store != nullptr && store->mode() != mpi::TaskStore::Mode::Keep;
+    if (mpi::size() == 1 && !sharded) {  // serial, or alone: the errors as they come
       std::vector<std::string> out;
       for (std::size_t k = 0; k < count; ++k) out.push_back(task(k));
       return out;
@@ -101,6 +106,9 @@ md::RunMap farmed_shear_runs(std::string label) {
     mpi::FarmOptions options;
     options.label = label;
     options.stop = [] { return interrupt_requested(); };
+    // Within one case (the run's task store is the case's), a run is its map call and index.
+    options.identity = [&](std::size_t k) { return fmt::format("{}\ncall {} run {}", label, call, k); };
+    options.name = [&](std::size_t k) { return fmt::format("run {} of call {}", k + 1, call + 1); };
     const mpi::FarmOutcome outcome = mpi::farm(count, task, options);
     if (outcome.not_run > 0) throw Interrupted(fmt::format("{}: interrupted, {} of {} runs not started", label,
                                                            outcome.not_run, count));

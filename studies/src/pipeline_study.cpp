@@ -77,6 +77,7 @@ class PipelineStudy final : public Study {
   // Under mpirun, when a scale farms ensembles (the junction runs of
   // nano/dem): rank 0 runs the pipeline, the other ranks serve its ensembles.
   bool distributed() const override { return pipeline_.farms_ensembles(); }
+  bool has_ensembles() const override { return pipeline_.farms_ensembles(); }
   void run_other_rank(const Config& /*inputs*/) override { mpi::serve_ensembles(); }
 
   void run(const Config& /*inputs*/, RunContext& context) override {

@@ -27,6 +27,7 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/sha256.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/core/task_store.hpp"
 #include "wearscale/core/text_file.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/core/utc_time.hpp"
@@ -103,7 +104,26 @@ struct PreparedRun {
   std::optional<Checkpointer> checkpoints;
   bool resume = false;                     // continues from its checkpoint
   bool complete = false;                   // resumed, but it had finished: its outputs stand
+  // Its ensembles' tasks (tasks/): kept and taken (Keep), one shard's share (Shard), or all taken (Assemble: merge).
+  mpi::TaskStore::Mode tasks = mpi::TaskStore::Mode::Keep;
+  std::size_t shard = 1, shards = 1;
+  std::function<std::string(std::size_t)> owner;  // Assemble: who owes a missing task
 };
+
+// The folder of a run's kept tasks (made when the first is kept).
+std::filesystem::path tasks_dir(const PreparedRun& run) { return run.summary.output_dir / "tasks"; }
+
+// The kept tasks in a run's folder, for this case: tasks kept for other
+// parameters (a resume with another case) are not taken; they go.
+void claim_task_store(const PreparedRun& run) {
+  std::error_code ec;
+  if (!std::filesystem::exists(tasks_dir(run), ec)) return;
+  const std::string was = mpi::TaskStore::case_of(tasks_dir(run));
+  if (was == run.fingerprint) return;
+  if (mpi::TaskStore::holds_tasks(tasks_dir(run)))
+    log::warn("{}: its kept tasks belong to other parameters; they are run again", tasks_dir(run).string());
+  std::filesystem::remove_all(tasks_dir(run), ec);
+}
 
 // The study a case runs: the one its command names, else the one it names.
 std::unique_ptr<Study> study_for(const Config& cfg, const RunOptions& options) {
@@ -135,7 +155,8 @@ void require_folder_or_nothing(const std::filesystem::path& dir, const char* opt
 }
 
 PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
-  PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false};
+  PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false,
+                  mpi::TaskStore::Mode::Keep, 1, 1, {}};
   Config& cfg = run.cfg;
   run.study = study_for(cfg, options);
   run.summary.study = run.study->name();
@@ -201,7 +222,14 @@ void find_resume_point(PreparedRun& run) {
 }
 
 // A fresh run never throws away the checkpoint of an unfinished one.
-void check_fresh_start(const PreparedRun& run) { require_fresh_start(run.summary.output_dir / "checkpoint.h5"); }
+void check_fresh_start(const PreparedRun& run) {
+  require_fresh_start(run.summary.output_dir / "checkpoint.h5");
+  if (mpi::TaskStore::holds_tasks(tasks_dir(run)))
+    throw OutputError(fmt::format("{} holds the finished tasks of an unfinished run; continue it with --resume {}, or "
+                                  "delete {} to start afresh",
+                                  run.summary.output_dir.string(), run.summary.output_dir.string(),
+                                  tasks_dir(run).string()));
+}
 
 // Runs a prepared case into its folder: every output staged and published
 // together with summary.json (OutputSet), the checkpoint removed after that.
@@ -238,7 +266,12 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   h5.set_attribute("/", "study", summary.study);
 
   RunContext context(summary.output_dir, h5, show_progress, &*run.checkpoints);
+  if (run.tasks != mpi::TaskStore::Mode::Assemble) claim_task_store(run);
+  mpi::TaskStore task_store(tasks_dir(run), run.tasks, run.shard, run.shards, run.fingerprint);
+  task_store.owner = run.owner;
   run.study->run(run.cfg, context);
+  // A shard writes none of the run's outputs, even when the other shards' tasks were all there: merge does.
+  if (run.tasks == mpi::TaskStore::Mode::Shard) throw mpi::ShardDone("every task of the run is done");
   for (const auto& [name, r] : context.results().items()) {
     const double value = r["value"].get<double>();
     if (!std::isfinite(value))  // never a NaN (null in JSON) or infinite headline figure
@@ -260,6 +293,7 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     log::debug("{}: {} checkpoints written in {:.3f} s", summary.output_dir.string(), run.checkpoints->saves(),
                run.checkpoints->seconds_saving());
   run.checkpoints->discard();  // complete: nothing to resume
+  task_store.discard();
   if (run.resume) remove_stale_partials(summary.output_dir);  // those this run did not continue
 }
 
@@ -435,6 +469,56 @@ std::string ensemble_id(const SweepPlan& plan) {
 
 std::string manifest_name(const Shard& shard) { return fmt::format("task-{}-of-{}.json", shard.index, shard.of); }
 
+// A shard's manifest in the ensemble's folder: which ensemble, which shard,
+// and the case as it ran (the file, its text, the flags), for `merge`.
+void write_manifest(const std::filesystem::path& dir, const Shard& shard, const std::string& ensemble,
+                    const std::string& study, const RunOptions& options, const std::string& command,
+                    const nlohmann::json& extra) {
+  nlohmann::json manifest = {
+      {"ensemble", ensemble},
+      {"task", shard.index},
+      {"of", shard.of},
+      {"study", study},
+      {"case_file", options.case_file.string()},
+      {"case_file_absolute",
+       options.case_file.empty() ? std::string() : std::filesystem::absolute(options.case_file).string()},
+      {"case_text", options.case_text ? *options.case_text
+                    : options.case_file.empty()
+                        ? std::string()
+                        : read_text_file(options.case_file, "case file", std::uintmax_t{1} << 26)},
+      {"flags", options.flags},
+      {"overrides", options.overrides},
+      {"command", command}};
+  manifest.update(extra);
+  write_file_atomically(dir / manifest_name(shard), manifest.dump(2) + "\n", Commit::Now);
+}
+
+// The id shared by the shards of one run's ensembles: its study and the case that determines the results.
+std::string ensemble_id(const PreparedRun& run) {
+  Sha256 h;
+  h.field(run.fingerprint);
+  h.field(run.summary.study);
+  return h.hex();
+}
+
+// Who owes task k of an ensemble, for merge's refusal: under every shard count the manifests show.
+std::string owner_of(std::size_t k, const std::vector<nlohmann::json>& manifests) {
+  std::vector<std::size_t> counts;
+  for (const auto& m : manifests) {
+    const auto of = m["of"].get<std::size_t>();
+    if (std::find(counts.begin(), counts.end(), of) == counts.end()) counts.push_back(of);
+  }
+  std::vector<std::string> owed;
+  for (const auto of : counts) {
+    const Shard s{k % of + 1, of};
+    const bool ran = std::any_of(manifests.begin(), manifests.end(), [&](const auto& m) {
+      return m["of"].template get<std::size_t>() == of && m["task"].template get<std::size_t>() == s.index;
+    });
+    owed.push_back(fmt::format("shard {} {}", s.text(), ran ? "did not finish it" : "has not run"));
+  }
+  return fmt::format("{}", fmt::join(owed, ", "));
+}
+
 // The sweep tables (one per series value: the swept value, then every
 // headline figure of the runs), the study's sweep plots and summary.json.
 // `failures` (one per run, "" if it ran) marks the runs that failed: a
@@ -582,23 +666,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     if (shard) {
       std::vector<std::size_t> owned;
       for (const auto k : mine) owned.push_back(k + 1);
-      const nlohmann::json manifest = {
-          {"ensemble", ensemble},
-          {"task", shard->index},
-          {"of", shard->of},
-          {"runs", owned},
-          {"study", sweep.study},
-          {"case_file", options.case_file.string()},
-          {"case_file_absolute",
-           options.case_file.empty() ? std::string() : std::filesystem::absolute(options.case_file).string()},
-          {"case_text", options.case_text ? *options.case_text
-                        : options.case_file.empty()
-                            ? std::string()
-                            : read_text_file(options.case_file, "case file", std::uintmax_t{1} << 26)},
-          {"flags", options.flags},
-          {"overrides", options.overrides},
-          {"command", command}};
-      write_file_atomically(sweep.output_dir / manifest_name(*shard), manifest.dump(2) + "\n", Commit::Now);
+      write_manifest(sweep.output_dir, *shard, ensemble, sweep.study, options, command, {{"runs", owned}});
     }
   });
   FFTPlanCache::global().set_rigor(runs.front().fft_rigor);
@@ -727,10 +795,6 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
   const std::string command = command_line(options, thread_budget());
   mpi::refuse_together([&] {
     require_utf8_paths(options);
-    if (options.resume_dir)
-      throw InputError(fmt::format("--resume {}: a run on {} MPI ranks writes no checkpoints and is not resumed; run "
-                                   "it again, or resume a run made without mpirun without mpirun",
-                                   options.resume_dir->string(), mpi::size()));
     // The case as a single run reads it: the file, the command's flags (--n, --grid, ...) and every --set.
     Config cfg = load(parse, options);
     run.emplace(prepare(std::move(cfg), options.output_dir, options));
@@ -744,8 +808,20 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
   mpi::refuse_together([&] {  // the folder: rank 0's alone
     if (!mpi::is_root()) return;
     lock.emplace(OutputLock::folder(run->summary.output_dir, command));
-    check_fresh_start(*run);
+    if (!options.resume_dir) return check_fresh_start(*run);
+    // Resumed: the tasks its ensembles had finished are taken (tasks/); a checkpoint is a single run's.
+    const auto checkpoint = run->summary.output_dir / "checkpoint.h5";
+    if (std::error_code ec; std::filesystem::exists(checkpoint, ec))
+      throw InputError(fmt::format("--resume {}: {} is the checkpoint of a run made without mpirun; resume it "
+                                   "without mpirun",
+                                   options.resume_dir->string(), checkpoint.string()));
+    find_resume_point(*run);
   });
+  // A resumed run that had completed: nothing to do, on any rank.
+  if (mpi::sum(mpi::is_root() && run->complete ? 1LL : 0LL) > 0) {
+    if (mpi::is_root()) log::info("{}: already complete", run->summary.output_dir.string());
+    return run->summary;
+  }
   FFTPlanCache::global().set_rigor(run->fft_rigor);
   if (!mpi::is_root()) {
     run->study->run_other_rank(run->cfg);
@@ -755,6 +831,74 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
             run->summary.output_dir.string());
   execute(*run, options, true, nullptr);
   return run->summary;
+}
+
+// merge of one run's shards: the run once more, every task of its ensembles
+// taken from what the shards kept (none computed), its outputs written as an
+// unsharded run writes them; refused, naming them, while tasks are missing.
+RunSummary merge_run(const std::filesystem::path& dir, Config probe, const RunOptions& options,
+                     const std::vector<nlohmann::json>& manifests) {
+  if (probe.has("sweep"))
+    throw InputError(fmt::format("merge {}: the shards ran one case without a [sweep], which has one now", dir.string()));
+  PreparedRun run = prepare(std::move(probe), dir, options);
+  if (ensemble_id(run) != manifests.front()["ensemble"].get<std::string>())
+    throw InputError(fmt::format("merge {}: the case ({}) is not the one the shards ran (it changed since); merge "
+                                 "with the case they ran, or run the ensemble again",
+                                 dir.string(), options.case_file.empty() ? "the command's keys" : options.case_file.string()));
+  const OutputLock lock = OutputLock::folder(dir, options.command);  // refused while a shard still runs
+  find_resume_point(run);
+  if (run.complete) {
+    log::info("merge {}: the run is already complete", dir.string());
+    return run.summary;
+  }
+  run.tasks = mpi::TaskStore::Mode::Assemble;
+  run.owner = [&](std::size_t k) { return owner_of(k, manifests); };
+  FFTPlanCache::global().set_rigor(run.fft_rigor);
+  try {
+    execute(run, options, true, nullptr);
+  } catch (const OutputError&) {
+    throw;
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("merge {}: {}; run what is left (the shards named, or all of it with --resume {}), "
+                                 "then merge again",
+                                 dir.string(), e.what(), dir.string()));
+  }
+  log::info("merged the tasks of {} shard(s) into {}", manifests.size(), dir.string());
+  return run.summary;
+}
+
+// One shard of a run's ensembles (--task K/N, no mpirun): its share of every
+// ensemble the run meets, kept in tasks/ beside the other shards'; it stops
+// at the first ensemble that lacks theirs (exit 0), writing none of the
+// run's outputs (merge does).
+RunSummary run_shard(PreparedRun& run, const RunOptions& options, const Shard& shard) {
+  if (!run.study->has_ensembles())
+    throw InputError(fmt::format("--task {}: study '{}' runs one task, not an ensemble; --task K/N shards the runs "
+                                 "of a [sweep], a rough wear map's surfaces, nano/dem's junction runs and a "
+                                 "strength table's points (run it without --task)",
+                                 shard.text(), run.summary.study));
+  const std::string command = command_line(options, thread_budget());
+  const std::string ensemble = ensemble_id(run);
+  const auto& dir = run.summary.output_dir;
+  const OutputLock lock = OutputLock::folder(dir, command, OutputLock::Mode::Shared, ensemble);
+  if (options.resume_dir) find_resume_point(run);
+  if (run.complete) return run.summary;
+  write_manifest(dir, shard, ensemble, run.summary.study, options, command, {{"kind", "run"}});
+  run.tasks = mpi::TaskStore::Mode::Shard;
+  run.shard = shard.index, run.shards = shard.of;
+  FFTPlanCache::global().set_rigor(run.fft_rigor);
+  log::info("case '{}': shard {} of its ensembles → {}", run.summary.case_name, shard.text(), dir.string());
+  try {
+    execute(run, options, true, nullptr);
+  } catch (const mpi::ShardDone& e) {
+    log::info("shard {} done ({}); once every shard is: wearscale merge {}", shard.text(), e.what(), dir.string());
+  } catch (const Interrupted& e) {
+    rethrow_interrupted(e, command, dir);
+  }
+  RunSummary part = run.summary;
+  part.results = nlohmann::json::object();
+  part.files = {dir / manifest_name(shard)};
+  return part;
 }
 
 }  // namespace
@@ -774,16 +918,18 @@ RunSummary run_case(const RunOptions& options_in) {
     shard = parse_shard(options.task);
     probe = load(parse, options);
     const bool sweep = probe->has("sweep");
-    if (shard && !sweep)
-      throw InputError(fmt::format("--task {}: the case is one run, not an ensemble; --task K/N shards the runs of a "
-                                   "[sweep] (give the case a [sweep], or run it without --task)",
-                                   shard->text()));
-    if (options.resume_dir && (sweep || mpi::size() == 1))
+    if (shard && !sweep && mpi::size() > 1)
+      throw InputError(fmt::format("--task {}: the shards of one run's ensembles run without mpirun (as the tasks of "
+                                   "a job array); under mpirun the whole ensemble spreads over the {} ranks: drop "
+                                   "--task, or run each shard as its own process",
+                                   shard->text(), mpi::size()));
+    if (options.resume_dir)
       options.output_dir = resume_folder(*options.resume_dir, options.output_dir.value_or(std::filesystem::path()));
   });
   if (probe->has("sweep")) return run_sweep(parse, options, *probe, threads, shard);
-  if (mpi::size() > 1) return run_distributed(parse, options_in);
+  if (mpi::size() > 1) return run_distributed(parse, options);
   PreparedRun run = prepare(std::move(*probe), options.output_dir, options);  // a single run: the file is parsed once
+  if (shard) return run_shard(run, options, *shard);
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
   if (options.resume_dir)
@@ -852,6 +998,7 @@ RunSummary merge_shards(const std::filesystem::path& dir, const std::string& com
     return Config::from_string(text, options.case_file.empty() ? "<command line>" : options.case_file.string());
   };
   Config probe = load(parse, options);
+  if (first.value("kind", "sweep") == "run") return merge_run(dir, std::move(probe), options, manifests);
   if (!probe.has("sweep"))
     throw InputError(fmt::format("merge {}: the shards' case has no [sweep] any more", dir.string()));
   SweepPlan plan = plan_sweep(parse, options, probe);
@@ -865,21 +1012,8 @@ RunSummary merge_shards(const std::filesystem::path& dir, const std::string& com
   for (std::size_t k = 0; k < plan.runs.size(); ++k) {
     find_resume_point(plan.runs[k]);
     if (plan.runs[k].complete) continue;
-    std::vector<std::string> owed;  // the shards that ran (or should have run) it
-    std::vector<std::size_t> counts;
-    for (const auto& m : manifests) {
-      const auto of = m["of"].get<std::size_t>();
-      if (std::find(counts.begin(), counts.end(), of) == counts.end()) counts.push_back(of);
-    }
-    for (const auto of : counts) {
-      const Shard s{k % of + 1, of};
-      const bool ran = std::any_of(manifests.begin(), manifests.end(), [&](const auto& m) {
-        return m["of"].template get<std::size_t>() == of && m["task"].template get<std::size_t>() == s.index;
-      });
-      owed.push_back(fmt::format("shard {} {}", s.text(), ran ? "did not finish it" : "has not run"));
-    }
     missing.push_back(fmt::format("task {} ({}: {})", k + 1, plan.runs[k].summary.output_dir.filename().string(),
-                                  fmt::join(owed, ", ")));
+                                  owner_of(k, manifests)));
   }
   if (!missing.empty())
     throw InputError(fmt::format("merge {}: {} of {} tasks are not complete: {}; run what is left (any shard count) "

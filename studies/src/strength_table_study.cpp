@@ -57,6 +57,7 @@ class StrengthTableStudy final : public Study {
 
   // Under mpirun: rank 0 runs the study (run), the other ranks take points from its farm.
   bool distributed() const override { return true; }
+  bool has_ensembles() const override { return true; }
   void run_other_rank(const Config& /*inputs*/) override {
     (void)md::run_shear_study(spec_, coupling::farmed_shear_runs("strength-table points"));
   }

@@ -15,11 +15,13 @@
 
 #include "wear_map_output.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/progress.hpp"
 #include "wearscale/core/task_farm.hpp"
 #include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
+#include "wearscale/io/checkpoint.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/xdmf.hpp"
@@ -189,15 +191,33 @@ wear::SurfaceWearMap from_message(const std::string& text) {
   return f;
 }
 
-// The surfaces over the ranks of an mpirun job (the task farm: one task per
-// seed, each on one rank with its threads), collective; rank 0 gets the map,
-// the others nothing. `tasks` (rank 0): seed, rank, threads and wall time of
-// each surface.
-std::optional<wear::RoughWearMap> map_over_ranks(const wear::RoughWearMapSpec& spec, nlohmann::json& tasks) {
+// The surfaces as the tasks of a farm: over the ranks of an mpirun job (one
+// task per seed, each on one rank with its threads), in order on one rank;
+// each surface kept in the run's task store as it finishes, so a resumed run,
+// a shard (--task K/N) or a merge computes only what is missing. Collective;
+// rank 0 gets the map, the others nothing. `identity` (rank 0): the case's
+// fingerprint; `tasks` (rank 0): seed, rank, threads and wall time of each
+// surface; `progress` (one rank): after each (seed, p̃_N).
+std::optional<wear::RoughWearMap> map_over_ranks(const wear::RoughWearMapSpec& spec, const std::string& identity,
+                                                 nlohmann::json& tasks,
+                                                 const std::function<void(std::size_t)>& progress = {}) {
   mpi::FarmOptions options;
   options.label = "wearmap rough surfaces";
+  options.show_progress = mpi::size() > 1;  // one rank: the contacts' progress instead
+  options.stop = [] { return interrupt_requested(); };
+  options.identity = [&](std::size_t s) { return fmt::format("wearmap/rough {} seed {}", identity, spec.seeds[s]); };
+  options.name = [&](std::size_t s) { return fmt::format("seed {}", spec.seeds[s]); };
+  const std::size_t nl = spec.loads.size();
   const auto outcome = mpi::farm(
-      spec.seeds.size(), [&](std::size_t s) { return to_message(wear::rough_wear_map_surface(spec, s)); }, options);
+      spec.seeds.size(),
+      [&](std::size_t s) {
+        const auto each_load = [&](std::size_t done, std::size_t) {
+          if (progress) progress(s * nl + done);
+        };
+        return to_message(wear::rough_wear_map_surface(spec, s, each_load));
+      },
+      options);
+  if (outcome.not_run > 0) throw Interrupted("wearmap rough: stopped by a signal");
   if (!mpi::is_root()) {
     if (outcome.failed > 0) throw mpi::TasksFailed("", false);
     return std::nullopt;
@@ -234,9 +254,10 @@ class WearmapRough final : public Study {
   void run(const Config& cfg, RunContext& context) override;
   // Under mpirun: the surfaces (seeds) over the ranks, rank 0 writing.
   bool distributed() const override { return true; }
+  bool has_ensembles() const override { return true; }
   void run_other_rank(const Config&) override {
     nlohmann::json unused;
-    map_over_ranks(spec_, unused);
+    map_over_ranks(spec_, {}, unused);
   }
 
  private:
@@ -342,8 +363,8 @@ void WearmapRough::run(const Config& cfg, RunContext& context) {
                                                              : Progress::silent(contacts);
   const auto t0 = std::chrono::steady_clock::now();
   nlohmann::json tasks;
-  const auto map = mpi::size() > 1 ? *map_over_ranks(spec, tasks)
-                                   : wear::rough_wear_map(spec, [&](std::size_t done, std::size_t) { bar.update(double(done)); });
+  const auto map = *map_over_ranks(spec, case_fingerprint(cfg.to_json()), tasks,
+                                   [&](std::size_t done) { bar.update(double(done)); });
   bar.finish();
   if (!tasks.is_null()) context.note("tasks", tasks);
   const double total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

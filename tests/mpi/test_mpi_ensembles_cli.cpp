@@ -1,7 +1,8 @@
 // The ensembles inside one run over the ranks of `mpirun -np P` (the task
 // farm), against the same command without mpirun: every output equal (tables
 // byte for byte, HDF5 datasets bit for bit, plots), wall times aside, at
-// P = 1, 3, 7 (7 > the tasks). Runs mpirun itself (label "mpi").
+// P = 1, 3, 7 (7 > the tasks); a job whose worker rank is killed resumes
+// under another P with the tasks it had finished. Runs mpirun itself (label "mpi").
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -52,6 +53,34 @@ TEST(MpiEnsemblesCli, TheRoughWearMapsSurfacesOverOneThreeAndSevenRanksGiveTheSe
       EXPECT_GT(tasks[s]["seconds"].get<double>(), 0.0);
     }
   }
+}
+
+// A worker rank killed (SIGKILL) while the map's surfaces are under way ends
+// the job; the surfaces finished by then are kept (tasks/), and the job
+// resumed on two ranks computes only the others: the serial map.
+TEST(MpiEnsemblesCli, AWearMapWhoseRankIsKilledResumesUnderAnotherCountWithTheSurfacesItHadFinished) {
+  const std::string args = "wearmap rough --n 128 --seeds 6 --n-loads 6 --n-dstar 4";
+  ASSERT_EQ(run(0, args + " -q --out wearmap_uninterrupted").status, 0);
+  const auto kept = [] {
+    std::size_t n = 0;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(work / "wearmap_killed" / "tasks", ec))
+      n += e.path().extension() == ".task" ? 1 : 0;
+    return n;
+  };
+  const auto job = kill_a_worker_rank(work.string(), 3, args + " -q --out wearmap_killed", "--out wearmap_killed",
+                                      [&] { return kept() >= 1; });
+  ASSERT_TRUE(job.killed) << "no worker rank was found to kill";
+  EXPECT_TRUE(WIFEXITED(job.status) && WEXITSTATUS(job.status) != 0) << "the job went on without its rank";
+  EXPECT_FALSE(fs::exists(work / "wearmap_killed" / "summary.json"));
+  const std::size_t finished = kept();
+  EXPECT_GE(finished, 1u);
+  ASSERT_LT(finished, 6u) << "every surface had finished before the kill: nothing was left to resume";
+  const auto r = run(2, args + " --resume wearmap_killed");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(std::to_string(finished) + " of 6 tasks taken from"), std::string::npos) << r.err;
+  same_outputs::expect_same_outputs(work / "wearmap_uninterrupted", work / "wearmap_killed",
+                                    same_outputs::Timings::Ignored);
 }
 
 // Fig. 7.2's junction runs (nano/dem in a pipeline) reduced: a 12 × 6 cell,

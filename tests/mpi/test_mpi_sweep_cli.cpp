@@ -134,34 +134,15 @@ TEST(MpiSweepCli, AKilledRankEndsTheJobAndAResumeUnderAnotherCountFinishesIt) {
   const std::string args = sweep_args + " --set scale.macro.distance=0.3";
   ASSERT_EQ(run(0, args + " --out uninterrupted").status, 0);
   // Three ranks; one worker is killed (SIGKILL) once the first run has finished.
-  const std::string cmd = "cd '" + work.string() + "' && exec env CI=true OMP_NUM_THREADS=1 " WEARSCALE_MPIRUN
-                          " -np 3 '" + std::string(WEARSCALE_CLI) + "' " + args +
-                          " --out killed >killed.out 2>killed.err";
-  const pid_t job = ::fork();
-  if (job == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  ASSERT_GT(job, 0);
-  bool killed = false;
-  for (int wait = 0; wait < 600 && !killed; ++wait) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const auto job = kill_a_worker_rank(work.string(), 3, args + " --out killed", "--out killed", [] {
     bool some_done = false;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(work / "killed", ec))
       some_done = some_done || fs::exists(e.path() / "summary.json");
-    if (!some_done) continue;
-    // A worker rank: the wearscale process whose OMPI_COMM_WORLD_RANK is not 0.
-    const std::string find = "for p in $(pgrep -f -- '--out killed'); do "
-                              "tr '\\0' '\\n' </proc/$p/environ | grep -qx 'OMPI_COMM_WORLD_RANK=[12]' && echo $p; done";
-    FILE* pipe = ::popen(find.c_str(), "r");
-    char line[64] = {};
-    const bool got = pipe != nullptr && std::fgets(line, sizeof line, pipe) != nullptr;
-    if (pipe != nullptr) ::pclose(pipe);
-    if (got && std::atoi(line) > 0) killed = ::kill(std::atoi(line), SIGKILL) == 0;
-  }
-  int status = 0;
-  ::waitpid(job, &status, 0);
+    return some_done;
+  });
+  const bool killed = job.killed;
+  const int status = job.status;
   ASSERT_TRUE(killed) << "no worker rank was found to kill";
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << "the job went on without its rank";
   EXPECT_FALSE(fs::exists(work / "killed" / "summary.json"));

@@ -8,6 +8,7 @@
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/core/task_store.hpp"
 #include "wearscale/coupling/shear_farm.hpp"
 #include "wearscale/materials/strength_law.hpp"
 #include "wearscale/md/shear_study.hpp"
@@ -46,8 +47,11 @@ class MolecularLammps final : public Scale {
   void run(Exchange& exchange, RunContext& ctx) override {
     for (const auto& [m, spec] : specs_) {
       // Cached by every input; under mpirun (a served pipeline) each run on whichever rank asks.
-      const auto study = md::run_shear_study(
-          spec, mpi::ServedRun::active() ? served_shear_runs(m, "molecular/lammps " + m) : md::RunMap{});
+      // A shard (--task K/N) or a merge takes its runs through the task farm too, one rank.
+      const mpi::TaskStore* store = mpi::TaskStore::current();
+      const bool farmed =
+          mpi::ServedRun::active() || (store != nullptr && store->mode() != mpi::TaskStore::Mode::Keep);
+      const auto study = md::run_shear_study(spec, farmed ? served_shear_runs(m, "molecular/lammps " + m) : md::RunMap{});
       Provenance p = provenance_;
       p.parameters["lammps_version"] = study.lammps_version;
       publish_strength(exchange, ctx, m, materials::StrengthLaw(md::strength_table(study), outside_), std::move(p));

@@ -32,6 +32,8 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/core/task_store.hpp"
+#include "wearscale/core/utc_time.hpp"
 #include "wearscale/core/worker_pool.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/junction_strength.hpp"
@@ -388,12 +390,19 @@ class NanoDem final : public Scale {
     return out;
   }
 
+  // A junction run in messages and log names.
+  static std::string junction_name(const std::string& pair, const JunctionStrengthSpec& spec) {
+    return fmt::format("{} junction D/L = {:g} at p_N = {:.3g} GPa", pair, spec.contact_ratio, spec.pressure / 1e9);
+  }
+
   // Runs (or reads) every junction, on jobs_ threads; each run is computed
   // once per process and once per cache. Under mpirun (a served run): the
   // runs not in the cache over the ranks instead, rank 0 writing the cache.
   std::vector<Run> run_all(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair,
                            RunContext& ctx) const {
-    if (mpi::ServedRun::active()) return run_over_ranks(specs, pair, ctx);
+    mpi::TaskStore* const task_store = mpi::TaskStore::current();  // the run's: finished runs kept, kept ones taken
+    if (mpi::ServedRun::active() || (task_store != nullptr && task_store->mode() != mpi::TaskStore::Mode::Keep))
+      return run_over_ranks(specs, pair, ctx);
     std::vector<std::string> keys;
     for (const auto& s : specs) keys.push_back(run_key(s));
     std::vector<std::shared_future<JunctionStrengthResult>> futures(specs.size());
@@ -409,9 +418,33 @@ class NanoDem final : public Scale {
       futures[k] = claim.result;
       if (!claim.mine) return;  // another run of this process computes it
       try {
+        const std::string identity = mpi::described_identity(kJunctionTask, to_message(specs[k]));
+        if (auto kept = task_store != nullptr ? task_store->find(identity) : std::nullopt) {
+          claim.mine->set_value(result_from_message(kept->text));  // finished before this run was stopped
+          return;
+        }
+        if (auto hit = cached(cache_dir_ / (keys[k] + ".json"))) {
+          claim.mine->set_value(*hit);
+          return;
+        }
+        // Its own log, as a task of the farm keeps under mpirun.
+        std::optional<log::TaskLog> task_log;
+        if (task_store != nullptr) {
+          const auto file = task_store->log_path(identity, junction_name(pair, specs[k]));
+          std::error_code ec;
+          fs::create_directories(file.parent_path(), ec);
+          task_log.emplace(file);
+          log::task_note(fmt::format("task started on rank 0 of 1, 1 thread(s), {}", utc_now()));
+        }
         bool fresh = false;
         claim.mine->set_value(compute(specs[k], keys[k], pair, ctx, fresh));
         computed[k] = fresh ? 1 : 0;
+        if (task_store != nullptr && fresh) {
+          mpi::TaskResult r;
+          r.status = mpi::TaskResult::Status::Done;
+          r.text = to_message(claim.result.get());
+          task_store->keep(identity, r);
+        }
       } catch (...) {
         JunctionRuns::instance().forget(keys[k]);
         claim.mine->set_exception(std::current_exception());
@@ -427,48 +460,53 @@ class NanoDem final : public Scale {
   // The summary's "tasks" list which rank ran each, on how many threads, for how long.
   std::vector<Run> run_over_ranks(const std::vector<JunctionStrengthSpec>& specs, const std::string& pair,
                                   RunContext& ctx) const {
+    // Every run is a task of the farm (so that a shard's share does not move
+    // with what the cache holds); those in the cache are kept in the run's
+    // task store first, and the farm takes them from there.
     std::vector<std::optional<JunctionStrengthResult>> results(specs.size());
-    std::vector<std::size_t> todo;
     std::vector<std::string> descriptions;
+    std::vector<char> from_cache(specs.size(), 0);
+    const mpi::TaskStore* task_store = mpi::TaskStore::current();
     for (std::size_t k = 0; k < specs.size(); ++k) {
-      results[k] = cached(cache_dir_ / (run_key(specs[k]) + ".json"));
-      if (results[k]) continue;
-      todo.push_back(k);
       descriptions.push_back(to_message(specs[k]));
+      results[k] = cached(cache_dir_ / (run_key(specs[k]) + ".json"));
+      if (!results[k]) continue;
+      from_cache[k] = 1;
+      const std::string identity = mpi::described_identity(kJunctionTask, descriptions.back());
+      if (task_store != nullptr && !task_store->find(identity)) {
+        mpi::TaskResult r;
+        r.status = mpi::TaskResult::Status::Done;
+        r.text = to_message(*results[k]);
+        task_store->keep(identity, r);
+      }
     }
     mpi::FarmOptions options;
     options.label = "nano/dem " + pair + " junctions";
     options.stop = [] { return interrupt_requested(); };
+    options.name = [&](std::size_t k) { return junction_name(pair, specs[k]); };
     const auto outcome = mpi::farm_described(kJunctionTask, descriptions, options);
-    for (std::size_t t = 0; t < todo.size(); ++t) {
-      const auto& r = outcome.results[t];
-      const auto& spec = specs[todo[t]];
+    nlohmann::json tasks = ctx.notes().contains("tasks") ? ctx.notes()["tasks"] : nlohmann::json::array();
+    for (std::size_t k = 0; k < specs.size(); ++k) {
+      if (from_cache[k]) continue;
+      const auto& r = outcome.results[k];
+      const auto& spec = specs[k];
       if (r.status == mpi::TaskResult::Status::NotRun) throw Interrupted("nano/dem: junction runs");
       if (r.status == mpi::TaskResult::Status::Failed) {
-        const std::string what = fmt::format("{} junction D/L = {:g} at p_N = {:.3g} GPa (rank {})", pair,
-                                             spec.contact_ratio, spec.pressure / 1e9, r.rank);
+        const std::string what = fmt::format("{} (rank {})", options.name(k), r.rank);
         if (r.numerical) throw NumericalError("nano/dem", 0, what, r.text);
         throw InputError(fmt::format("nano/dem: {}: {}", what, r.text));
       }
-      results[todo[t]] = result_from_message(r.text);
+      results[k] = result_from_message(r.text);
       log::info("nano/dem: {} D/L = {:g}, p_N = {:.3g} GPa: peak p_T {:.3g} GPa ({}, rank {}, {:.1f} s)", pair,
-                spec.contact_ratio, spec.pressure / 1e9, results[todo[t]]->peak_tangential / 1e9,
-                results[todo[t]]->verdict(), r.rank, r.seconds);
-      store(cache_dir_ / (run_key(spec) + ".json"), *results[todo[t]]);
-    }
-    nlohmann::json tasks = ctx.notes().contains("tasks") ? ctx.notes()["tasks"] : nlohmann::json::array();
-    for (std::size_t t = 0; t < todo.size(); ++t) {
-      const auto& r = outcome.results[t];
-      tasks.push_back({{"interface", pair}, {"contact_ratio", specs[todo[t]].contact_ratio},
-                       {"pressure", specs[todo[t]].pressure}, {"rank", r.rank}, {"threads", r.threads},
-                       {"seconds", r.seconds}});
+                spec.contact_ratio, spec.pressure / 1e9, results[k]->peak_tangential / 1e9, results[k]->verdict(),
+                r.rank, r.seconds);
+      store(cache_dir_ / (run_key(spec) + ".json"), *results[k]);
+      tasks.push_back({{"interface", pair}, {"contact_ratio", spec.contact_ratio}, {"pressure", spec.pressure},
+                       {"rank", r.rank}, {"threads", r.threads}, {"seconds", r.seconds}});
     }
     ctx.note("tasks", std::move(tasks));
     std::vector<Run> out;
-    for (std::size_t k = 0; k < specs.size(); ++k) {
-      const bool from_cache = std::find(todo.begin(), todo.end(), k) == todo.end();
-      out.emplace_back(specs[k], *results[k], from_cache);
-    }
+    for (std::size_t k = 0; k < specs.size(); ++k) out.emplace_back(specs[k], *results[k], from_cache[k] != 0);
     return out;
   }
 

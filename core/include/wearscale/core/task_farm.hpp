@@ -10,6 +10,9 @@
 // ensemble's shared outputs. Serial (one rank, or a build without MPI): the
 // tasks run in order in the calling thread.
 //
+// With a TaskStore (task_store.hpp) the farm runs only the tasks it does not
+// hold: a shard's share, or what a killed run had not finished.
+//
 // A task that throws an InputError (an OutputError too) or a NumericalError
 // fails that task, which is marked and reported, not the job; any other
 // exception ends the job (mpi::abort through main), and a rank that dies
@@ -39,6 +42,14 @@ struct FarmOptions {
   std::string label = "tasks";     ///< the progress line's label (rank 0, on a terminal only)
   bool show_progress = true;       ///< false: no progress line (a farm inside a run that shows its own)
   std::function<bool()> stop;      ///< no task is handed out once it returns true (SIGINT)
+  /// What determines task k's result (e.g. the case and the seed). With a
+  /// TaskStore on the calling thread (rank 0 of a run), each result is kept
+  /// there as it finishes and a kept one is taken instead of running the task
+  /// again (a resumed run, a shard, a merge). Empty: nothing kept.
+  /// farm_described's default: the kind and the description.
+  std::function<std::string(std::size_t)> identity;
+  /// Task k in messages (e.g. "seed 3"); default "task k+1".
+  std::function<std::string(std::size_t)> name;
 };
 
 /// What a farm did, on every rank (rank 0's figures, shared with all).
@@ -93,6 +104,9 @@ class ServedRun {
 /// The other ranks: run the ensembles rank 0 farms out until its ServedRun
 /// ends. Waits without spinning (a rank that waits for hours costs no core).
 void serve_ensembles();
+
+/// What determines the result of a described task (its identity in a TaskStore).
+std::string described_identity(const std::string& kind, const std::string& description);
 
 /// Rank 0 under a ServedRun: the tasks of kind `kind`, one per description,
 /// over every rank (rank 0 too, on a thread), dynamically; results as farm()'s.

@@ -85,6 +85,11 @@ class Study {
   virtual bool distributed() const { return false; }
   virtual void run_other_rank(const Config& /*inputs*/) {}
 
+  /// Whether a run holds ensembles of independent tasks (a rough wear map's
+  /// surfaces, nano/dem's junction runs, a strength table's points): those
+  /// a shard (--task K/N) splits, and whose finished tasks a resumed run keeps.
+  virtual bool has_ensembles() const { return false; }
+
   /// What a sweep over this study adds besides its table (plots of the
   /// runs' curves), given each run's folder and label; returns the files written.
   struct SweepRuns {
