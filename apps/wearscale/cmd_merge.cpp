@@ -8,12 +8,13 @@ namespace wearscale::app {
 
 Command add_merge(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "merge", "Write the sweep table and summary of an ensemble whose shards (--task K/N) ran into DIR, once all are "
-               "done (refused, naming the tasks, while some are not)");
+      "merge", "Write the outputs of an ensemble whose shards (--task K/N) ran into DIR, once all are done: a "
+               "sweep's table and summary, or the run whose ensembles' tasks the shards kept (refused, naming the "
+               "tasks, while some are not)");
   auto dir = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   cmd->add_option("dir", *dir, "The output folder the shards share")->required()->type_name("DIR");
-  cmd->add_flag("--json", *json, "Print one JSON object: the sweep's summary");
+  cmd->add_flag("--json", *json, "Print one JSON object: the summary");
   return [dir, json]() {
     print_summary(studies::merge_shards(*dir, invocation()), *json);
     return 0;

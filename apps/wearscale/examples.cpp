@@ -62,7 +62,12 @@ const std::map<std::string, std::vector<std::string>>& table() {
         "--task 1/2 --out shards    # shard 1 of 2 (a job array's task; runs 1, 3, 5)",
         "wearscale run cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.001 "
         "--task 2/2 --out shards    # shard 2 of 2, into the same folder",
-        "wearscale merge shards    # the sweep's table, plots and summary.json, once both are done"}},
+        "wearscale merge shards    # the sweep's table, plots and summary.json, once both are done",
+        "wearscale wearmap rough --n 32 --ql 2 --seeds 2 --n-loads 2 --n-dstar 2 --task 1/2 --out map-shards    # "
+        "surface 1 of a map",
+        "wearscale wearmap rough --n 32 --ql 2 --seeds 2 --n-loads 2 --n-dstar 2 --task 2/2 --out map-shards    # "
+        "surface 2",
+        "wearscale merge map-shards    # the map from the surfaces the shards kept in map-shards/tasks"}},
       {"completion",
        {"source <(wearscale completion bash)", "wearscale completion zsh > _wearscale    # into a folder of $fpath"}},
   };

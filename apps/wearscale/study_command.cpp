@@ -105,12 +105,14 @@ void add_runner_flags(CLI::App* cmd, StudyFlags& f, const std::string& example) 
   cmd->add_option("--out", f.out, "Output folder (default: [output].dir of the case, else out/<case name>)");
   cmd->add_option("--resume", f.resume,
                   "Continue the killed or interrupted run whose output folder is DIR from its checkpoint (same case "
-                  "and --set options; a sweep reruns only its unfinished runs)")
+                  "and --set options; a sweep reruns only its unfinished runs, a run's ensembles only their "
+                  "unfinished tasks, under any number of MPI ranks)")
       ->type_name("DIR");
   cmd->add_option("--task", f.options.task,
-                  "Run only the K-th of N shards of the case's [sweep] (its runs k with k mod N = K-1) into the "
-                  "output folder, which the other shards share (a job array); `wearscale merge DIR` writes the "
-                  "sweep's table once all are done")
+                  "Run only the K-th of N shards of the case's ensemble (the runs of its [sweep], else the tasks "
+                  "of the run's ensembles: a wear map's surfaces, junction runs, LAMMPS points; those k with "
+                  "k mod N = K-1) into the output folder, which the other shards share (a job array); `wearscale "
+                  "merge DIR` writes the outputs once all are done")
       ->type_name("K/N");
   cmd->add_flag("--json", f.json, "Print one JSON object with the headline results and resolved parameters");
 }
