@@ -115,6 +115,21 @@ std::string title_string(const std::string& title) {
   }
 }
 
+// A long title broken into lines of at most `width` characters, at spaces
+// (a long DEM caption ran off both edges of the plot, cut off).
+std::string wrapped(const std::string& title, std::size_t width = 90) {
+  std::string out, line, word;
+  std::istringstream words(title);
+  while (words >> word) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  return out + line;
+}
+
 // The sliding distances (second column) of a history table, in order.
 std::vector<double> second_column(const std::filesystem::path& csv) {
   std::ifstream in(OutputSet::readable(csv));
@@ -300,13 +315,13 @@ std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::
   if (s.size() >= 3 && s[s.size() - 1] - s[s.size() - 2] < 0.99 * (s[s.size() - 2] - s[s.size() - 3]))
     last = s[s.size() - 2];
   return render_plot(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
-                            "set title '{}' font ',11'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
+                            "set title {} font ',11'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
                             "last = {:.17g}\nset grid\n"
                             "plot '{}' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($3*1e9) with lines lw 2 "
                             "lc rgb '#0072B2' title 'tangential F_T', "
                             "'' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($4*1e9) with lines lw 1.5 "
                             "lc rgb '#D55E00' title 'normal F_N'\n",
-                            literal(title), last, data(history_csv)),
+                            title_string(wrapped(title)), last, data(history_csv)),
                 png);
 }
 
