@@ -57,7 +57,8 @@ std::optional<TaskResult> TaskStore::find(const std::string& identity) const {
   std::istringstream fields(header);
   std::string magic_a, magic_b, digest;
   TaskResult r;
-  fields >> magic_a >> magic_b >> digest >> r.rank >> r.threads >> r.seconds;
+  std::string body_digest;
+  fields >> magic_a >> magic_b >> digest >> r.rank >> r.threads >> r.seconds >> body_digest;
   if (!fields || magic_a + " " + magic_b != kMagic || digest != sha256_hex(identity)) {
     log::warn("{}: not a task result of this run (ignored; the task runs again)", file.string());
     return std::nullopt;
@@ -67,7 +68,10 @@ std::optional<TaskResult> TaskStore::find(const std::string& identity) const {
   const auto end = in.tellg();
   in.seekg(start);
   r.text.resize(static_cast<std::size_t>(end - start));
-  if (!in.read(r.text.data(), static_cast<std::streamsize>(r.text.size()))) return std::nullopt;
+  if (!in.read(r.text.data(), static_cast<std::streamsize>(r.text.size())) || sha256_hex(r.text) != body_digest) {
+    log::warn("{}: a damaged task result (ignored; the task runs again)", file.string());
+    return std::nullopt;
+  }
   r.status = TaskResult::Status::Done;
   return r;
 }
@@ -78,8 +82,9 @@ void TaskStore::keep(const std::string& identity, const TaskResult& result) cons
   std::filesystem::create_directories(dir_, ec);
   if (!case_id_.empty() && !std::filesystem::exists(dir_ / "case.txt", ec))
     write_file_atomically(dir_ / "case.txt", case_id_ + "\n", Commit::Now);
-  std::string content = fmt::format("{} {} {} {} {:.17g}\n", kMagic, sha256_hex(identity), result.rank,
-                                    result.threads, result.seconds);
+  // The header: what it is, whose result, where and how long it ran, the result's own digest.
+  std::string content = fmt::format("{} {} {} {} {:.17g} {}\n", kMagic, sha256_hex(identity), result.rank,
+                                    result.threads, result.seconds, sha256_hex(result.text));
   content += result.text;
   write_file_atomically(file_of(identity, ".task"), content, Commit::Now);
 }

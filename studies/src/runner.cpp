@@ -118,6 +118,10 @@ std::filesystem::path tasks_dir(const PreparedRun& run) { return run.summary.out
 void claim_task_store(const PreparedRun& run) {
   std::error_code ec;
   if (!std::filesystem::exists(tasks_dir(run), ec)) return;
+  if (!std::filesystem::is_directory(tasks_dir(run), ec))
+    throw OutputError(fmt::format("{} is not a folder; a run keeps its finished tasks there: move it away, or write "
+                                  "to another folder",
+                                  tasks_dir(run).string()));
   const std::string was = mpi::TaskStore::case_of(tasks_dir(run));
   if (was == run.fingerprint) return;
   if (mpi::TaskStore::holds_tasks(tasks_dir(run)))
