@@ -301,8 +301,8 @@ std::vector<TaskResult> dispatch(Share& share, const std::function<std::string(s
     return static_cast<long long>(next++);
   };
   auto store = [&](long long id, TaskResult r) {
+    share.done(static_cast<std::size_t>(id), r);  // kept first (a file each; outside the lock)
     std::lock_guard guard(mutex);
-    share.done(static_cast<std::size_t>(id), r);
     results[static_cast<std::size_t>(id)] = std::move(r);
     ++done;
     if (results[static_cast<std::size_t>(id)].status == TaskResult::Status::NotRun) stopping = true;

@@ -8,10 +8,12 @@
 //                            count; a task sees one rank (mpi::Alone), and a
 //                            farm inside it runs there; with
 //                            more tasks than ranks several ranks take part.
-//   farm_probe overhead COUNT [MS]   COUNT tasks sleeping MS ms: the farm's cost per task.
+//   farm_probe overhead COUNT [MS] [DIR]   COUNT tasks sleeping MS ms: the farm's cost per task;
+//                                          with DIR, each task kept in a task store there (its cost too).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -19,6 +21,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/core/task_store.hpp"
 
 namespace mpi = wearscale::mpi;
 
@@ -86,11 +89,17 @@ int main(int argc, char** argv) {
   if (mode == "overhead") {
     // Each task sleeps MS ms (argument 3, default 0): over P ranks the ideal wall time is COUNT·MS/P.
     const int ms = argc > 3 ? std::atoi(argv[3]) : 0;
+    std::optional<mpi::TaskStore> store;
+    mpi::FarmOptions options;
+    if (argc > 4 && mpi::is_root()) {
+      store.emplace(argv[4]);
+      options.identity = [](std::size_t k) { return "probe task " + std::to_string(k); };
+    }
     const auto start = std::chrono::steady_clock::now();
     const auto outcome = mpi::farm(count, [ms](std::size_t k) {
       if (ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
       return std::to_string(k);
-    });
+    }, options);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (mpi::is_root()) {
       const double ideal = 1e-3 * ms * static_cast<double>(count) / mpi::size();
@@ -99,6 +108,6 @@ int main(int argc, char** argv) {
     }
     return outcome.failed == 0 ? 0 : 1;
   }
-  std::fprintf(stderr, "usage: farm_probe tasks COUNT | overhead COUNT [MS]\n");
+  std::fprintf(stderr, "usage: farm_probe tasks COUNT | overhead COUNT [MS [DIR]]\n");
   return 2;
 }
