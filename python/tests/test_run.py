@@ -96,3 +96,21 @@ except KeyboardInterrupt as e:
     err = p.communicate(timeout=120)[1]
     assert p.returncode == 3, err
     assert "KeyboardInterrupt:" in err and "interrupted by SIGINT" in err and "resumed" in err
+
+
+def test_shards_of_a_wear_maps_surfaces_then_merge_give_the_map_run_at_once(tmp_path, monkeypatch):
+    # A job array driven from Python: two shards of a two-surface wear map into one folder, then
+    # merge; the map equals the one run at once. Merging before the second shard ran is refused,
+    # naming the surface and its shard.
+    monkeypatch.chdir(tmp_path)
+    case = {"case": {"name": "map"}, "wearmap": {"rough": {"n": 32, "q_l": 2, "seeds": 2, "n_loads": 2, "n_dstar": 2}}}
+    whole = ws.run(case, out="whole")
+    ws.run(case, out="shards", task="1/2")
+    with pytest.raises(ws.InputError, match=r"seed 2 \(shard 2/2 has not run\)"):
+        ws.merge("shards")
+    assert not (tmp_path / "shards" / "summary.json").exists()
+    ws.run(case, out="shards", task="2/2")
+    merged = ws.merge("shards")
+    untimed = lambda results: {k: v for k, v in results.items() if "seconds" not in k}  # noqa: E731
+    assert untimed(merged.results) == untimed(whole.results)
+    assert (tmp_path / "shards" / "wearmap_rough.csv").read_text() == (tmp_path / "whole" / "wearmap_rough.csv").read_text()

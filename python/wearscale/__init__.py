@@ -16,7 +16,7 @@ naming the key, value and allowed range; a numerical failure raises :class:`Nume
 """
 from ._wearscale import InputError, NumericalError, OutputError, __version__
 from . import contact, dem, io, materials, surface, wear
-from .run import RunResult, run
+from .run import RunResult, merge, run
 
 __all__ = ["InputError", "NumericalError", "OutputError", "RunResult", "__version__", "contact", "dem", "io",
-           "materials", "run", "surface", "wear"]
+           "materials", "merge", "run", "surface", "wear"]

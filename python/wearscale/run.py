@@ -95,14 +95,16 @@ class RunResult(dict):
                                     f"files: {', '.join(p.name for p in candidates) or 'none'}")
 
 
-def run(case, out=None, resume=None, quiet=True, set=None, **overrides):
+def run(case, out=None, resume=None, quiet=True, set=None, task=None, **overrides):
     """Runs a case as ``wearscale run CASE --set KEY=VALUE... --json`` does and returns a :class:`RunResult`.
 
     case: a TOML file path, a TOML string or a dict (relative file names in a dict or string are
     relative to the working directory, in a file to the file's folder). Overrides as keywords with ``__`` for the dots
     (``contact__grid=64`` is ``--set contact.grid=64``) or as ``set={"contact.grid": 64}``; strings
     keep their units ("1 um"). out: the output folder (--out), else the case's [output].dir;
-    resume: the folder of a run to continue (--resume). Releases the GIL while it runs.
+    resume: the folder of a run to continue (--resume); task: "K/N", the K-th of N shards of the case's
+    ensemble (--task: a job array's share of a sweep's runs or of a run's ensembles, written into ``out``
+    beside the other shards'; :func:`merge` writes the outputs once all are done). Releases the GIL while it runs.
     ValueError (InputError) for a bad case, with the key and allowed range, before anything is written.
     """
     sets = [_override(k.replace("__", "."), v) for k, v in overrides.items()]
@@ -116,8 +118,16 @@ def run(case, out=None, resume=None, quiet=True, set=None, **overrides):
     else:
         path, text = str(case), None
     summary = _wearscale.runner.run_case(path, sets, None if out is None else str(out),
-                                         None if resume is None else str(resume), quiet, text)
+                                         None if resume is None else str(resume), quiet, text,
+                                         "" if task is None else str(task))
     return RunResult(json.loads(summary))
+
+
+def merge(folder, quiet=True):
+    """Writes the outputs of an ensemble whose shards (``run(..., task="K/N", out=folder)``) all ran into
+    ``folder``, as ``wearscale merge DIR`` does, and returns its :class:`RunResult`. ValueError (InputError),
+    naming each missing task and the shard that owes it, while some are not done; nothing is written then."""
+    return RunResult(json.loads(_wearscale.runner.merge_shards(str(folder), quiet)))
 
 
 def check(case_file, **overrides):
@@ -125,4 +135,4 @@ def check(case_file, **overrides):
     return _wearscale.runner.check_case(str(case_file), [_override(k.replace("__", "."), v) for k, v in overrides.items()])
 
 
-__all__ = ["RunResult", "check", "run", "to_toml"]
+__all__ = ["RunResult", "check", "merge", "run", "to_toml"]
