@@ -41,7 +41,6 @@ void check_material(double e, double nu) {
         "frictional contact: Poisson's ratio ν = {} is not allowed; allowed: −1 < ν ≤ 0.5", nu));
 }
 
-
 std::unique_ptr<TractionOperator> serial_body(const Grid2D& g, double young, double poisson) {
   check_material(young, poisson);
   check_grid(g);
