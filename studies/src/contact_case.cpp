@@ -3,7 +3,12 @@
 #include <algorithm>
 
 #include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/crack_initiation.hpp"
+#include "wearscale/bem/principal_stresses.hpp"
 #include "wearscale/bem/roughness.hpp"
+#include "wearscale/bem/subsurface_stress.hpp"
+#include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
@@ -122,5 +127,181 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
             {"micro-contacts of the solved contact, largest first"});
   for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
 }
+
+FrictionalCase read_frictional_case(const Config& c, const Grid2D& g, const std::string& law_name) {
+  FrictionalCase f;
+  if (!c.has("poisson"))
+    throw c.error("poisson", "frictional contact needs Poisson's ratio: normal and tangential couple through it (4.22)",
+                  "−1 < ν ≤ 0.5 (0.5: decoupled)");
+  const double nu = c.number("poisson", Range::open_closed(-1.0, 0.5));
+  if (contact_boundary(c) == Boundary::Free)
+    throw c.error("boundary", "a free boundary is implemented for frictionless contact only (friction = \"none\")",
+                  "\"periodic\" with friction");
+  if (int(c.has("young")) + int(c.has("e_star")) != 1)
+    throw c.error("young", "give exactly one of young, e_star", "one elastic modulus");
+  f.poisson = nu;
+  f.young = c.has("young") ? c.number("young", Range::positive(), units::pressure)
+                           : c.number("e_star", Range::positive(), units::pressure) * (1.0 - nu * nu);
+  f.law = law_name == "coulomb"
+              ? FrictionLaw::coulomb(c.number("friction_coefficient", Range::non_negative()))
+              : FrictionLaw::tresca(c.number("shear_strength", Range::non_negative(), units::pressure));
+  if (c.has("interference"))
+    throw c.error("interference", "frictional contact imposes the mean tractions", "mean_pressure or normal_load");
+  if (int(c.has("mean_pressure")) + int(c.has("normal_load")) != 1)
+    throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load", "one normal load");
+  if (c.has("tangential_pressure") && c.has("tangential_load"))
+    throw c.error("tangential_pressure", "give at most one of tangential_pressure, tangential_load",
+                  "one tangential load");
+  f.load.normal = c.has("mean_pressure") ? c.number("mean_pressure", Range::non_negative(), units::pressure)
+                                         : c.number("normal_load", Range::non_negative(), units::force) / g.area();
+  f.tangential_key = c.has("tangential_load") ? "tangential_load" : "tangential_pressure";
+  f.load.x = c.has("tangential_load") ? c.number("tangential_load", Range::any(), units::force) / g.area()
+                                      : c.number_or("tangential_pressure", 0.0, Range::any(), units::pressure);
+  f.options.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1.0));
+  f.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 20000, Range::at_least(1)));
+  f.connectivity =
+      c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
+  f.crack = c.has("tensile_strength");
+  f.sigma_m = f.crack ? c.number("tensile_strength", Range::positive(), units::pressure) : 0.0;
+  f.depths =
+      c.has("stress_depths") ? c.numbers("stress_depths", Range::non_negative(), units::length) : std::vector<double>{};
+  return f;
+}
+
+FrictionalResult FrictionalCase::solve(FrictionalContact& contact, const Config& c) const {
+  FrictionalResult r;
+  try {
+    r = contact.solve(load, options);
+  } catch (const InputError& e) {  // gross sliding: name the key that asked for it
+    throw c.error(tangential_key, e.what());
+  }
+  if (r.unsettled_points > 0)
+    log::warn("contact: {} contact-edge points keep a friction limit that differs from the law's (the limit "
+              "cycled between iterations; see frictional_contact.hpp)",
+              r.unsettled_points);
+  return r;
+}
+
+void write_frictional_study(const Config& config, const FrictionalCase& fc, const FrictionalFields& fields,
+                            const FrictionalResult& r, coupling::RunContext& context) {
+  const auto& out = context.output_dir();
+  const Grid2D g = fields.height.grid();
+  const ContactMap map = find_clusters(fields.traction.z, fc.connectivity);
+
+  SubsurfaceStress solid(g, fc.poisson);
+  solid.set_traction(fields.traction);
+  StressField stress(g);
+  PrincipalStresses surface(g), deep(g);
+  solid.stress(0.0, stress);
+  principal_stresses(stress, surface);
+
+  RealField in_contact(g);
+  for (std::size_t k = 0; k < g.size(); ++k) in_contact[k] = fields.traction.z[k] > 0.0 ? 1.0 : 0.0;
+  const auto h5_path = out / "contact.h5";
+  H5Writer h5(h5_path);
+  std::vector<XdmfField> xdmf;
+  auto field = [&](const std::string& path, const RealField& f, const char* unit, const std::string& name) {
+    h5.write_field(path, f, unit);
+    xdmf.push_back({path, name});
+  };
+  field("/surface/height", fields.height, "m", "height");
+  field("/fields/pressure", fields.traction.z, "Pa", "p_N");
+  field("/fields/traction_x", fields.traction.x, "Pa", "p_x");
+  field("/fields/traction_y", fields.traction.y, "Pa", "p_y");
+  field("/fields/stick_slip", fields.stick_slip, "1", "stick_slip");
+  h5.set_attribute("/fields/stick_slip", "values", "0 open, 1 stick, 2 slip");
+  field("/fields/gap", fields.gap, "m", "gap");
+  field("/fields/slip_x", fields.slip.x, "m", "slip_x");
+  field("/fields/slip_y", fields.slip.y, "m", "slip_y");
+  field("/fields/displacement", fields.displacement.z, "m", "u_z");
+  field("/fields/displacement_x", fields.displacement.x, "m", "u_x");
+  field("/fields/displacement_y", fields.displacement.y, "m", "u_y");
+  field("/fields/contact", in_contact, "1", "contact");
+  field("/stress/surface/sigma_I", surface.first, "Pa", "sigma_I");
+  field("/stress/surface/sigma_III", surface.third, "Pa", "sigma_III");
+  field("/stress/surface/tau_max", surface.max_shear, "Pa", "tau_max");
+  double deep_tau = 0.0, deep_tau_depth = 0.0;
+  for (std::size_t d = 0; d < fc.depths.size(); ++d) {
+    solid.stress(fc.depths[d], stress);
+    principal_stresses(stress, deep);
+    const std::string group = fmt::format("/stress/depth_{}", d);
+    field(group + "/sigma_I", deep.first, "Pa", fmt::format("sigma_I_depth_{}", d));
+    field(group + "/tau_max", deep.max_shear, "Pa", fmt::format("tau_max_depth_{}", d));
+    h5.set_attribute(group, "depth", fc.depths[d]);
+    const double m = *std::max_element(deep.max_shear.begin(), deep.max_shear.end());
+    if (m > deep_tau) {
+      deep_tau = m;
+      deep_tau_depth = fc.depths[d];
+    }
+  }
+  h5.set_attribute("/", "case_toml", config.to_toml());
+
+  auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+    context.report(name, v, unit, what);
+    h5.write_scalar("/results/" + name, v, unit);
+  };
+  report("mean_pressure", r.mean_traction.normal, "Pa", "mean normal traction ⟨p_N⟩");
+  report("mean_tangential_pressure", r.mean_traction.x, "Pa", "mean tangential traction ⟨p_x⟩");
+  report("friction_ratio", r.frictional_force_ratio, "1", "‖⟨p_T⟩‖/⟨p_N⟩");
+  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
+  report("stick_fraction", r.stick_fraction, "1", "sticking area / A0");
+  report("slip_fraction", r.slip_fraction, "1", "sliding area / A0");
+  report("full_sliding", r.full_sliding ? 1.0 : 0.0, "1", "1 if every contact point slides");
+  if (!r.full_sliding)
+    report("tangential_displacement", r.tangential_displacement_x, "m", "δ_x, rigid displacement of the stick zone");
+  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p·u dA (4.1)");
+  report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
+  report("iterations", r.iterations, "1", "iterations of Algorithm 1");
+  report("bound_updates", r.bound_updates, "1", "updates of the lagged friction limit");
+  report("unsettled_points", static_cast<double>(r.unsettled_points), "1",
+         "contact points whose friction limit differs from the law's");
+  report("error", r.error, "1", "cost (A.14) relative to Σp·h_rms");
+  report("max_sigma_I", *std::max_element(surface.first.begin(), surface.first.end()), "Pa",
+         "largest first principal stress on the surface (4.24)");
+  if (!fc.depths.empty())
+    report("max_tau_subsurface", deep_tau, "Pa",
+           fmt::format("largest τ_m = (σ_I − σ_III)/2 over the requested depths (at {:g} m)", deep_tau_depth));
+
+  // Micro-contacts, with (4.25) at their edges if σ_m is given.
+  std::vector<double> area, cx, cy, trailing, leading, initiates;
+  std::vector<EdgeCrackCheck> checks;
+  if (fc.crack && !map.clusters.empty()) {
+    const double dir = fc.load.x != 0.0 ? fc.load.x : 1.0;  // along +x when there is no tangential load
+    checks = crack_initiation(map, surface, dir, 0.0, fc.sigma_m);
+  }
+  double count = 0.0;
+  for (std::size_t i = 0; i < map.clusters.size(); ++i) {
+    area.push_back(map.clusters[i].area);
+    cx.push_back(map.clusters[i].centroid_x);
+    cy.push_back(map.clusters[i].centroid_y);
+    if (fc.crack) {
+      trailing.push_back(checks[i].trailing_tension);
+      leading.push_back(checks[i].leading_compression);
+      initiates.push_back(checks[i].initiates() ? 1.0 : 0.0);
+      count += initiates.back();
+    }
+  }
+  std::vector<std::string> names = {"area", "centroid_x", "centroid_y"};
+  std::vector<std::string> table_units = {"m^2", "m", "m"};
+  std::vector<std::span<const double>> columns = {area, cx, cy};
+  if (fc.crack) {
+    report("crack_initiation_sites", count, "1", "micro-contacts meeting (4.25) at both edges");
+    names.insert(names.end(), {"trailing_sigma_I", "leading_sigma_III", "crack_initiation"});
+    table_units.insert(table_units.end(), {"Pa", "Pa", "1"});
+    columns.insert(columns.end(), {trailing, leading, initiates});
+  }
+  h5.write_table("/clusters", names, columns, table_units);
+  XdmfSidecar sidecar(g);
+  sidecar.add(h5, xdmf);
+  h5.commit();
+  sidecar.write(out / "contact.xdmf", h5_path);
+  std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
+  if (fc.crack)
+    comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", fc.sigma_m));
+  write_csv(out / "clusters.csv", names, columns, table_units, comments);
+  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
+}
+
 
 }  // namespace wearscale::studies

@@ -3,7 +3,11 @@
 // (contact_study.cpp) and the one in slabs over MPI ranks (contact_slab.cpp)
 // share: the keys of a generated rough surface and of a frictionless load, and
 // the files written from the solved whole fields. Private to the studies.
+#include <string>
+#include <vector>
+
 #include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/coupling/run_context.hpp"
@@ -42,5 +46,38 @@ NormalCase read_normal_case(const Config& contact, const Grid2D& g);
 void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
                         const RealField& gap, const RealField& u, const bem::ContactResult& r,
                         coupling::RunContext& context);
+
+/// The frictional keys of [contact] on grid `g` (friction = `law_name`, "coulomb" or "tresca"):
+/// E, ν, the law, the mean tractions, tolerance, micro-contacts, σ_m, stress depths.
+struct FrictionalCase {
+  double young = 1.0, poisson = 0.0;
+  bem::FrictionLaw law = bem::FrictionLaw::coulomb(0.0);
+  bem::MeanTraction load;
+  std::string tangential_key = "tangential_pressure";  ///< the key a gross sliding is refused under
+  bem::FrictionalOptions options;
+  bem::Connectivity connectivity = bem::Connectivity::Four;
+  bool crack = false;
+  double sigma_m = 0.0;
+  std::vector<double> depths;
+  /// The solve the case asks for; gross sliding refused naming the tangential key.
+  bem::FrictionalResult solve(bem::FrictionalContact& contact, const Config& contact_section) const;
+};
+FrictionalCase read_frictional_case(const Config& contact, const Grid2D& g, const std::string& law_name);
+
+/// The whole fields of a solved frictional contact.
+struct FrictionalFields {
+  const RealField& height;
+  const bem::VectorField& traction;
+  const bem::VectorField& displacement;
+  const RealField& gap;
+  const bem::VectorField& slip;
+  const RealField& stick_slip;
+};
+
+/// contact.h5 (+ .xdmf, the surface and subsurface stresses, (4.25) per
+/// micro-contact) and clusters.csv from the whole fields, and the headline
+/// figures reported to `context`.
+void write_frictional_study(const Config& config, const FrictionalCase& f, const FrictionalFields& fields,
+                            const bem::FrictionalResult& r, coupling::RunContext& context);
 
 }  // namespace wearscale::studies

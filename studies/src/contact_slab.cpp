@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/core/log.hpp"
@@ -20,6 +21,10 @@ namespace {
 // what rank 0 adds to gather the four fields, find the micro-contacts and
 // write them.
 constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 88.0;
+// Frictional: the solver's 21 fields and the tensor's modes per rank (about
+// 250 B per point it holds), and on rank 0 the serial frictional study's
+// figure (bytes_per_point in contact_study.cpp: fields, stresses, outputs).
+constexpr double kFrictionalBytesPerPoint = 260.0, kFrictionalGatherBytesPerPoint = 640.0;
 
 // The whole field on rank 0 (an empty one elsewhere) from every rank's rows.
 RealField gathered(const RealField& slab, const Grid2D& g) {
@@ -32,10 +37,7 @@ RealField gathered(const RealField& slab, const Grid2D& g) {
 SlabCase read_slab_case(const Config& config) {
   const Config c = config.section("contact");
   const int ranks = mpi::size();
-  if (c.choice_or("friction", "none", {"none", "coulomb", "tresca"}) != "none")
-    throw c.error("friction",
-                  fmt::format("frictional contact is not distributed over MPI ranks ({} ranks started)", ranks),
-                  "\"none\" under mpirun; frictional contact without mpirun");
+  const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
   if (c.has("surface"))
     throw c.error("surface", fmt::format("a measured surface is not read in slabs over MPI ranks ({} ranks started)", ranks),
                   "[contact.rough] and/or [contact.sphere] under mpirun; a file without mpirun");
@@ -47,7 +49,10 @@ SlabCase read_slab_case(const Config& config) {
   if (!c.has("rough") && !c.has("sphere"))
     throw c.error("surface", "no surface: give a [contact.rough] or a [contact.sphere] table (under mpirun)",
                   "rough and/or sphere");
-  s.normal = read_normal_case(c, s.grid);
+  if (friction == "none")
+    s.normal = read_normal_case(c, s.grid);
+  else
+    s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
   if (s.normal.boundary == Boundary::Free)
     throw c.error("boundary", fmt::format("a free boundary is not distributed over MPI ranks ({} ranks started)", ranks),
                   "\"periodic\" under mpirun; \"free\" without mpirun");
@@ -55,12 +60,20 @@ SlabCase read_slab_case(const Config& config) {
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
   const double points = static_cast<double>(s.grid.size());
   const bool gather = s.grid.size() <= slab_gather_limit;
+  if (s.friction && !gather)
+    throw c.error("grid",
+                  fmt::format("a frictional contact of {} × {} points is more than rank 0 gathers ({} points): its "
+                              "stresses and files are computed from the whole fields",
+                              n, n, slab_gather_limit),
+                  fmt::format("at most {} × {} points with friction under mpirun", 4096, 4096));
+  const double share = s.friction ? kFrictionalBytesPerPoint : kBytesPerPoint;
+  const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
   // Each rank checks its own share (rank 0 adds the gathered fields) against
   // the memory of its machine: the point of the slabs is a grid larger than
   // one machine. Ranks sharing a machine each see all of its free memory, so
   // there the check is per rank, not for the job (an overcommitted job is
   // ended by the system and mpirun ends the others: no wrong answer, no hang).
-  require_memory(kBytesPerPoint * points / ranks + (mpi::is_root() && gather ? kGatherBytesPerPoint * points : 0.0),
+  require_memory(share * points / ranks + (mpi::is_root() && gather ? gathered_share * points : 0.0),
                  fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks (rank {}'s share)",
                              c.where("grid"), c.full_key("grid"), n, n, n, ranks, mpi::rank()),
                  "give a smaller grid or more ranks");
@@ -68,7 +81,41 @@ SlabCase read_slab_case(const Config& config) {
   return s;
 }
 
+namespace {
+VectorField gathered(const VectorField& slab, const Grid2D& g) {
+  VectorField whole(mpi::is_root() ? g : Grid2D(0, g.ny, 1.0, g.ly));
+  whole.x = gathered(slab.x, g);
+  whole.y = gathered(slab.y, g);
+  whole.z = gathered(slab.z, g);
+  return whole;
+}
+
+// Coulomb or Tresca friction: the one FrictionalContact on a SlabHalfSpace of
+// the whole tensor; rank 0 gathers the fields and writes the serial study's files.
+void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunContext* context) {
+  const Grid2D& g = s.grid;
+  const FrictionalCase& f = *s.friction;
+  log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction, periodic boundary, in slabs over {} MPI ranks",
+            g.to_string(), f.young, f.poisson, f.law.to_string(), mpi::size());
+  auto body = std::make_unique<SlabHalfSpace>(g, f.young, f.poisson,
+                                              s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
+  const std::size_t first = body->first_row(), rows = body->rows();
+  RealField h(body->local_grid());  // 0 + rough + sphere, as the serial study adds them
+  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, body->fft()));
+  if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
+  FrictionalContact contact(std::move(body), h, f.law);
+  const FrictionalResult r = f.solve(contact, config.section("contact"));
+  RealField whole_h = gathered(h, g);
+  h = RealField();
+  const VectorField traction = gathered(contact.traction(), g), u = gathered(contact.displacement(), g);
+  const VectorField slip = gathered(contact.slip(), g);
+  const RealField gap = gathered(contact.normal_gap(), g), map = gathered(contact.stick_slip_map(), g);
+  if (context != nullptr) write_frictional_study(config, f, {whole_h, traction, u, gap, slip, map}, r, *context);
+}
+}  // namespace
+
 void run_slab_contact(const Config& config, const SlabCase& s, coupling::RunContext* context) {
+  if (s.friction) return run_slab_friction(config, s, context);
   const Grid2D& g = s.grid;
   const NormalCase& normal = s.normal;
   log::info("contact: {} , E* = {:g} Pa, periodic boundary, in slabs over {} MPI ranks", g.to_string(), normal.e_star,

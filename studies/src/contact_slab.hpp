@@ -8,10 +8,14 @@
 // files when the grid has at most slab_gather_limit points; above it reports
 // the headline figures only (no contact.h5, no micro-contacts) and says so.
 //
-// Distributed: frictionless, periodic contact of a generated rough surface
-// and/or a sphere. Refused (InputError naming the key, the same on every rank,
-// before any work): contact.friction other than "none", contact.boundary =
-// "free", contact.surface (a measured file).
+// Distributed: periodic contact of a generated rough surface and/or a sphere,
+// frictionless (NormalContact) or with Coulomb or Tresca friction
+// (FrictionalContact on a SlabHalfSpace holding the whole tensor; rank 0
+// computes the surface and subsurface stresses from the gathered tractions).
+// Refused (InputError naming the key, the same on every rank, before any
+// work): contact.boundary = "free", contact.surface (a measured file), and a
+// frictional grid above slab_gather_limit (contact.grid: its stresses and
+// files need the whole fields on rank 0).
 #include <cstddef>
 #include <optional>
 
@@ -25,7 +29,8 @@ inline constexpr std::size_t slab_gather_limit = std::size_t{4096} * 4096;
 /// A [contact] case the slabs can run, every key read and checked.
 struct SlabCase {
   Grid2D grid;
-  NormalCase normal;
+  NormalCase normal;                     ///< frictionless (friction = "none")
+  std::optional<FrictionalCase> friction;  ///< friction = "coulomb" | "tresca"
   std::optional<RoughCase> rough;
   double sphere_radius = 0.0;  ///< 0: no sphere
   bool measured_plans = true;  ///< FFTW MEASURE plans ([run] fft_planning, and from 512²)

@@ -9,15 +9,25 @@
 //   mpi_slab_contact solve     the preconditioned and the textbook
 //                              Polonsky–Keer solve on slabs take the serial
 //                              solve's iterations and give its pressures and
-//                              figures to 1e-12 relative.
-// Every rank also computes the serial answer (the grids are small) and compares its rows.
+//                              figures to 1e-12 relative;
+//   mpi_slab_contact traction  the slab-distributed Boussinesq–Cerruti tensor
+//                              (u = F p, all components, and the blocks of
+//                              t·Ft) equals the serial HalfSpace's (1e-13);
+//   mpi_slab_contact coulomb   a Coulomb (tresca: a Tresca) frictional solve
+//                              on slabs takes the serial solve's iterations and
+//                              gives its tractions, stick/slip map and figures
+//                              to 1e-12 relative (rank 0 solves the serial case).
+// Every rank also computes the serial answer (the grids are small) and compares its rows
+// (but for the frictional solves: there rank 0 alone does).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
@@ -148,6 +158,139 @@ void test_solve(std::size_t n, ContactMethod method) {
   else
     (void)row_difference(slab.pressure(), serial.pressure(), first);  // the same collective calls as rank 0
 }
+VectorField vector_rows_of(const VectorField& whole, const Grid2D& slab, std::size_t first) {
+  VectorField r(slab);
+  r.x = rows_of(whole.x, slab, first);
+  r.y = rows_of(whole.y, slab, first);
+  r.z = rows_of(whole.z, slab, first);
+  return r;
+}
+
+void test_traction(const Grid2D& g) {
+  const double young = 2.5, poisson = 0.3;
+  VectorField p(g);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u01(-0.5, 1.0);
+  for (RealField* f : {&p.x, &p.y, &p.z})
+    for (double& v : *f) v = u01(rng);
+  HalfSpace serial(g, young, poisson, Boundary::Periodic, Response::Full);
+  auto w = serial.workspace();
+  VectorField u(g);
+  serial.displacement(p, u, w);
+  const HalfSpace::BlockForm form = serial.form(p, w);
+
+  SlabHalfSpace slab(g, young, poisson, PlanRigor::Estimate);
+  const Grid2D& lg = slab.local_grid();
+  const std::size_t first = slab.first_row();
+  VectorField u_s(lg);
+  const VectorField p_s = vector_rows_of(p, lg, first);
+  slab.vector_displacement(p_s, u_s);
+  const HalfSpace::BlockForm form_s = slab.block_form(p_s);
+  RealField uz_n(lg);
+  slab.displacement(p_s.z, uz_n, 1.0);  // the normal block of the full tensor
+  const std::string at = " on " + g.to_string();
+  check(row_difference(u_s.x, u.x, first) < 1e-13, "u_x = F p differs from the serial body's" + at);
+  check(row_difference(u_s.y, u.y, first) < 1e-13, "u_y = F p differs from the serial body's" + at);
+  check(row_difference(u_s.z, u.z, first) < 1e-13, "u_z = F p differs from the serial body's" + at);
+  RealField uz(g);
+  serial.normal_displacement(p.z, uz, w);
+  check(row_difference(uz_n, uz, first) < 1e-13, "the normal block differs from the serial body's" + at);
+  const double scale = std::max({std::abs(form.nn), std::abs(form.tt), std::abs(form.nt)});
+  check(std::abs(form_s.nn - form.nn) < 1e-13 * scale && std::abs(form_s.tt - form.tt) < 1e-13 * scale &&
+            std::abs(form_s.nt - form.nt) < 1e-13 * scale,
+        "the blocks of t·Ft differ from the serial body's" + at);
+  check(relative(slab.self_compliance(), serial.self_compliance()) < 1e-13, "self compliance differs" + at);
+  check(relative(slab.stiffness_diagonal(), serial.normal_stiffness_diagonal()) < 1e-13,
+        "S at offset 0 differs" + at);
+}
+
+// Every rank's rows of a slab field, whole on rank 0 (empty elsewhere).
+RealField whole_of(const RealField& slab, const Grid2D& g) {
+  RealField whole(mpi::is_root() ? g : Grid2D(0, g.ny, 1.0, g.ly));
+  mpi::gather(slab.values(), whole.values());
+  return whole;
+}
+
+// max |a − b| / max |b| over the whole field.
+double difference(const RealField& a, const RealField& b) {
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    scale = std::max(scale, std::abs(b[k]));
+    diff = std::max(diff, std::abs(a[k] - b[k]));
+  }
+  const double d = scale > 0.0 ? diff / scale : diff;
+  worst = std::max(worst, d);
+  return d;
+}
+
+// A rough sphere (paraboloid of radius R on a rough surface) pressed and
+// sheared along x, ν = 0.3 (normal and tangential coupled). The slab solve
+// runs on every rank; rank 0 gathers its fields and alone solves the serial
+// case to compare (P serial solves side by side would only slow the test).
+void test_friction(std::size_t n, FrictionLaw law, double tangential_share) {
+  const Grid2D g = Grid2D::square(n, 1.0);
+  RoughSurfaceSpec spec;
+  spec.grid = g;
+  spec.hurst = 0.8;
+  spec.k_l = spec.k_r = 8.0;
+  spec.k_s = static_cast<double>(n / 4);
+  spec.seed = 1;
+  RealField h = generate_surface(spec, RoughnessMeasure::HRms, 2e-4);
+  const double radius = 10.0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double x = g.x(i) - 0.5, y = g.y(j) - 0.5;
+      h(i, j) -= (x * x + y * y) / (2.0 * radius);
+    }
+  const double young = 1.0, poisson = 0.3, p_n = 1.5e-4;
+  auto body = std::make_unique<SlabHalfSpace>(g, young, poisson, PlanRigor::Estimate);
+  const std::size_t first = body->first_row();
+  const Grid2D lg = body->local_grid();
+  FrictionalContact slab(std::move(body), rows_of(h, lg, first), law);
+  // Coulomb: a share of μ p_N; Tresca: a share of σ_m,T times Hertz's contact area πa²/L² (a ≈ 0.1 here).
+  const double capacity = law.kind() == FrictionLaw::Kind::Coulomb ? law.parameter() * p_n
+                                                                    : law.parameter() * std::numbers::pi * 0.01;
+  const MeanTraction load{p_n, tangential_share * capacity, 0.0};
+  FrictionalOptions options;
+  options.tolerance = 1e-10;
+  const FrictionalResult s = slab.solve(load, options);
+  const VectorField& ps = slab.traction();
+  const RealField px = whole_of(ps.x, g), py = whole_of(ps.y, g), pz = whole_of(ps.z, g);
+  const RealField ux = whole_of(slab.displacement().x, g), uz = whole_of(slab.displacement().z, g);
+  const RealField map = whole_of(slab.stick_slip_map(), g);
+  if (!mpi::is_root()) return;
+
+  FrictionalContact serial(h, young, poisson, law);
+  const FrictionalResult r = serial.solve(load, options);
+  const std::string at = " (" + law.to_string() + ") on " + g.to_string();
+  check(s.iterations == r.iterations,
+        "iterations " + std::to_string(s.iterations) + " against serial " + std::to_string(r.iterations) + at);
+  check(s.bound_updates == r.bound_updates, "friction bound updates differ" + at);
+  const double dz = difference(pz, serial.traction().z), dx = difference(px, serial.traction().x),
+               dy = difference(py, serial.traction().y);
+  check(dz < 1e-12, "p_N differs" + at);
+  check(dx < 1e-12, "p_x differs" + at);
+  check(dy < 1e-12, "p_y differs" + at);
+  check(difference(uz, serial.displacement().z) < 1e-12, "u_z differs" + at);
+  check(difference(ux, serial.displacement().x) < 1e-12, "u_x differs" + at);
+  check(difference(map, serial.stick_slip_map()) == 0.0, "stick/slip maps differ" + at);
+  check(relative(s.mean_traction.normal, r.mean_traction.normal) < 1e-12, "⟨p_N⟩ differs" + at);
+  check(relative(s.mean_traction.x, r.mean_traction.x) < 1e-12, "⟨p_x⟩ differs" + at);
+  check(s.contact_fraction == r.contact_fraction, "contact fraction differs" + at);
+  check(s.stick_fraction == r.stick_fraction, "stick fraction differs" + at);
+  check(s.slip_fraction == r.slip_fraction, "slip fraction differs" + at);
+  check(s.unsettled_points == r.unsettled_points, "unsettled points differ" + at);
+  check(relative(s.interference, r.interference) < 1e-12, "interference differs" + at);
+  check(relative(s.tangential_displacement_x, r.tangential_displacement_x) < 1e-12, "δ_x differs" + at);
+  check(relative(s.elastic_energy, r.elastic_energy) < 1e-12, "elastic energy differs" + at);
+  check(relative(s.frictional_force_ratio, r.frictional_force_ratio) < 1e-12, "‖⟨p_T⟩‖/⟨p_N⟩ differs" + at);
+  check(s.error < 1e-10 && std::abs(s.error - r.error) < 1e-12, "ε differs or not converged" + at);
+  check(r.iterations > 5 && r.stick_fraction > 0.0 && r.slip_fraction > 0.0, "not partial slip, or trivial" + at);
+  std::printf("%s: %d iterations (serial %d), %d bound updates, stick %.4f slip %.4f, |Δp|/max p = %.2e %.2e %.2e, "
+              "Δδ/δ = %.2e, ΔE/E = %.2e\n",
+              at.c_str(), s.iterations, r.iterations, s.bound_updates, s.stick_fraction, s.slip_fraction, dz, dx, dy,
+              relative(s.interference, r.interference), relative(s.elastic_energy, r.elastic_energy));
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -164,8 +307,16 @@ int main(int argc, char** argv) {
   } else if (mode == "solve") {
     test_solve(256, ContactMethod::PreconditionedCG);
     test_solve(128, ContactMethod::PolonskyKeer);
+  } else if (mode == "traction") {
+    test_traction(Grid2D::square(64, 1.0));
+    test_traction(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
+    test_traction(Grid2D(64, 33, 1.0, 0.5));  // odd columns
+  } else if (mode == "coulomb") {
+    test_friction(64, FrictionLaw::coulomb(0.5), 0.5);
+  } else if (mode == "tresca") {
+    test_friction(64, FrictionLaw::tresca(2e-3), 0.3);
   } else {
-    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve\n");
+    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca\n");
     return 2;
   }
   const long long failed = mpi::sum(static_cast<long long>(failures));

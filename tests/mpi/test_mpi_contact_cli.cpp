@@ -1,13 +1,15 @@
 // `mpirun -np P wearscale contact`: the fields in slabs over the ranks, the
 // serial study's summary and files (rank 0 alone writes and prints); what the
 // slabs cannot do is refused on every rank (status 2, the key named, nothing
-// written). Runs mpirun itself (label "mpi"); 128² and 160², one thread a rank.
+// written). Runs mpirun itself (label "mpi"); 128² and 160², one thread a rank;
+// Coulomb and Tresca friction on 64².
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +25,7 @@ namespace {
 const ScratchDir work_scratch("wearscale_mpi_contact_cli_");
 const fs::path work = work_scratch.path();
 const std::string rough_case = "'" WEARSCALE_SOURCE_DIR "/cases/rough_contact.toml'";
+const std::string frictional_case = "'" WEARSCALE_SOURCE_DIR "/cases/frictional_contact.toml'";
 
 // `wearscale args` on `ranks` ranks (0: without mpirun); `env` adds variables.
 CliResult run(int ranks, const std::string& args, const std::string& env = {}) {
@@ -47,7 +50,8 @@ std::size_t error_lines(const std::string& err) {
 // to 1e-12 absolute (measured: 1e-16 apart, 1e-6 of its value, at 128²).
 void expect_same_results(const nlohmann::json& serial, const nlohmann::json& slab, int ranks) {
   ASSERT_EQ(serial["results"].size(), slab["results"].size());
-  const double tolerance = serial["parameters"]["contact"]["tolerance"].get<double>();
+  const auto& contact = serial["parameters"]["contact"];
+  const double tolerance = contact.contains("tolerance") ? contact["tolerance"].get<double>() : 1e-10;
   for (const auto& [name, v] : serial["results"].items()) {
     ASSERT_TRUE(slab["results"].contains(name)) << name;
     if (name == "error") {
@@ -66,12 +70,17 @@ void expect_same_results(const nlohmann::json& serial, const nlohmann::json& sla
 
 // The datasets of contact.h5 within 1e-12 of each field's largest value; the
 // contact map and the micro-contacts' table equal.
-void expect_same_files(const fs::path& serial, const fs::path& slab) {
+// (`more`: the datasets of a frictional contact besides.)
+void expect_same_files(const fs::path& serial, const fs::path& slab, const std::vector<std::string>& more = {}) {
   for (const char* f : {"run.h5", "contact.h5", "contact.xdmf", "clusters.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(slab / f)) << slab / f;
   const wearscale::H5Reader a(serial / "contact.h5"), b(slab / "contact.h5");
-  for (const char* d : {"/surface/height", "/fields/pressure", "/fields/gap", "/fields/displacement", "/fields/contact",
-                        "/clusters/area", "/clusters/centroid_x", "/clusters/centroid_y"}) {
+  std::vector<std::string> datasets = {"/surface/height", "/fields/pressure",    "/fields/gap",
+                                       "/fields/displacement", "/fields/contact", "/clusters/area",
+                                       "/clusters/centroid_x", "/clusters/centroid_y"};
+  datasets.insert(datasets.end(), more.begin(), more.end());
+  for (const std::string& name : datasets) {
+    const char* d = name.c_str();
     const auto read = [d](const wearscale::H5Reader& h5) {
       if (std::string(d).starts_with("/clusters")) return h5.read_series(d);
       const auto f = h5.read_field(d);
@@ -130,12 +139,54 @@ TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   expect_same_files(work / "sphere_serial", work / "sphere_slab");
 }
 
+// The datasets a frictional contact writes besides the normal ones.
+const std::vector<std::string> frictional_datasets = {
+    "/fields/traction_x", "/fields/traction_y", "/fields/stick_slip",       "/fields/slip_x",
+    "/fields/slip_y",     "/fields/displacement_x", "/fields/displacement_y", "/stress/surface/sigma_I",
+    "/stress/surface/tau_max", "/stress/depth_0/tau_max", "/stress/depth_1/sigma_I"};
+
+TEST(MpiContactCli, TrescaFrictionOnTwoRanksGivesTheSerialSummaryAndFiles) {
+  // The shipped frictional case (a rough sphere, Tresca, ν = 0.17, stresses at
+  // two depths and (4.25) per micro-contact) on 64²: the serial summary and files.
+  const std::string args = "contact " + frictional_case +
+                           " --set contact.grid=64 --set contact.rough.k_l=8 --set contact.rough.k_r=8 "
+                           "--set contact.rough.k_s=16 --json";
+  const auto serial = run(0, args + " -q --out tresca_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto slab = run(2, args + " --out tresca_slab");
+  ASSERT_EQ(slab.status, 0) << slab.err;
+  const auto s = nlohmann::json::parse(serial.out), p = nlohmann::json::parse(slab.out);
+  expect_same_results(s, p, 2);
+  EXPECT_EQ(s["results"]["bound_updates"], p["results"]["bound_updates"]);
+  EXPECT_EQ(s["results"]["crack_initiation_sites"], p["results"]["crack_initiation_sites"]);
+  EXPECT_EQ(count(slab.err, "contact: 64×64"), 1u) << slab.err;  // rank 0's line alone
+  expect_same_files(work / "tresca_serial", work / "tresca_slab", frictional_datasets);
+}
+
+TEST(MpiContactCli, CoulombFrictionOnThreeRanksGivesTheSerialSummaryAndFiles) {
+  const std::string args = "contact " + rough_case +
+                           " --set contact.grid=64 --set contact.rough.k_s=16 --set contact.friction=coulomb "
+                           "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
+                           "--set contact.tangential_pressure=0.006 --json -q";
+  const auto serial = run(0, args + " --out coulomb_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto slab = run(3, args + " --out coulomb_slab");
+  ASSERT_EQ(slab.status, 0) << slab.err;
+  const auto s = nlohmann::json::parse(serial.out), p = nlohmann::json::parse(slab.out);
+  expect_same_results(s, p, 3);
+  EXPECT_GT(s["results"]["stick_fraction"]["value"].get<double>(), 0.0);
+  EXPECT_GT(s["results"]["slip_fraction"]["value"].get<double>(), 0.0);
+  expect_same_files(work / "coulomb_serial", work / "coulomb_slab",
+                    {"/fields/traction_x", "/fields/stick_slip", "/fields/slip_x", "/stress/surface/sigma_I"});
+}
+
 TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
   const std::string args = "contact " + rough_case + " --set contact.grid=128 -q";
   const std::pair<const char*, const char*> cases[] = {
       {"--set contact.boundary=free", "contact.boundary"},
-      {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5",
-       "contact.friction"},
+      {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
+       "--set contact.grid=4100",
+       "contact.grid"},  // friction above the gather limit
       {"--set contact.surface=rough.h5", "contact.surface"},
       {"--set contact.grid=7", "contact.grid"},
       {"--resume elsewhere", "--resume"}};

@@ -40,22 +40,53 @@ void check_material(double e, double nu) {
     throw InputError(fmt::format(
         "frictional contact: Poisson's ratio ν = {} is not allowed; allowed: −1 < ν ≤ 0.5", nu));
 }
+
+std::unique_ptr<TractionOperator> serial_body(const Grid2D& g, double young, double poisson) {
+  check_material(young, poisson);
+  check_grid(g);
+  return std::make_unique<HalfSpaceTraction>(g, young, poisson);
+}
 }  // namespace
 
+template <class... T>
+void FrictionalContact::sum(T&... values) const {
+  double v[] = {static_cast<double>(values)...};
+  body_->sum(v);
+  std::size_t k = 0;
+  ((values = static_cast<T>(v[k++])), ...);
+}
+
 FrictionalContact::FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law)
-    : h_(surface), young_(young), poisson_(poisson), law_(law), p_(surface.grid()), u_(surface.grid()),
-      t_(surface.grid()), t_old_(surface.grid()), d_(surface.grid()), slip_(surface.grid()), gap_(surface.grid()),
-      map_(surface.grid()), bound_(surface.grid()), state_(surface.size(), kOpen),
-      body_((check_material(young, poisson), check_grid(surface.grid()), HalfSpace(surface.grid(), young, poisson))),
-      work_(body_.workspace()) {
-  double max = -INFINITY;
+    : FrictionalContact(serial_body(surface.grid(), young, poisson), surface, law) {}
+
+FrictionalContact::FrictionalContact(std::unique_ptr<TractionOperator> body, const RealField& surface,
+                                     FrictionLaw law)
+    : h_(surface), young_(body->young()), poisson_(body->poisson()), law_(law), p_(surface.grid()),
+      u_(surface.grid()), t_(surface.grid()), t_old_(surface.grid()), d_(surface.grid()), slip_(surface.grid()),
+      gap_(surface.grid()), map_(surface.grid()), bound_(surface.grid()), state_(surface.size(), kOpen),
+      body_(std::move(body)) {
+  if (!(surface.grid() == body_->local_grid()))
+    throw std::invalid_argument("FrictionalContact: the surface is not on the rows the body holds");
+  check_material(young_, poisson_);
+  check_grid(body_->grid());
+  double max = -INFINITY, bad = 0.0;
   for (double v : h_) {
-    if (!std::isfinite(v)) throw InputError("frictional contact: the surface has a NaN or infinite height");
+    bad += std::isfinite(v) ? 0.0 : 1.0;
     max = std::max(max, v);
   }
-  h_rms_ = h_rms(h_);  // the scale of the convergence measure
+  sum(bad);  // every process refuses alike
+  if (bad > 0.0) throw InputError("frictional contact: the surface has a NaN or infinite height");
+  // h_rms, the scale of the convergence measure: (1.5), the sums in storage order (as roughness.hpp's h_rms).
+  double total = 0.0;
+  for (const double v : h_) total += v;
+  sum(total);
+  const double mean = total / points();
+  double squares = 0.0;
+  for (const double v : h_) squares += (v - mean) * (v - mean);
+  sum(squares);
+  h_rms_ = std::sqrt(squares / points());
   if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
-  h_max_ = max;
+  h_max_ = body_->max(max);
 }
 
 void FrictionalContact::reset() {
@@ -87,7 +118,8 @@ bool FrictionalContact::project_tangential(double target_x, double target_y, int
       n_free += 1;
     }
   }
-  const double nn = static_cast<double>(n);
+  sum(cap, cap_free, fixed_x, fixed_y, n_free);
+  const double nn = points();
   capacity_ = cap / nn;
   const double q0 = norm(target_x, target_y);
   all_sliding_ = false;
@@ -142,6 +174,7 @@ bool FrictionalContact::project_tangential(double target_x, double target_y, int
         jxy -= s * nx * ny;
       }
     }
+    sum(fx, fy, jxx, jyy, jxy);
     fx -= goal_x;
     fy -= goal_y;
     const double f_norm = norm(fx, fy);
@@ -159,6 +192,7 @@ bool FrictionalContact::project_tangential(double target_x, double target_y, int
         py[k] = s * vy;
         n_in += (shifted && b > 0.0 && r < b * (1.0 - 1e-6)) ? 1.0 : 0.0;
       }
+      sum(n_in);
       if (n_in > 0.0) {
         double sum_x = 0.0, sum_y = 0.0;
 #pragma omp parallel for reduction(+ : sum_x, sum_y) schedule(static)
@@ -166,6 +200,7 @@ bool FrictionalContact::project_tangential(double target_x, double target_y, int
           sum_x += px[k];
           sum_y += py[k];
         }
+        sum(sum_x, sum_y);
         const double cx = (target_x * nn - sum_x) / n_in, cy = (target_y * nn - sum_y) / n_in;
 #pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
@@ -232,7 +267,8 @@ void FrictionalContact::warm_start(const MeanTraction& load) {
   double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
   double mean = 0.0;
   for (std::size_t k = 0; k < n; ++k) mean += pz[k];
-  mean /= static_cast<double>(n);
+  sum(mean);
+  mean /= points();
   if (mean > 0.0 && std::isfinite(mean)) {
     const double alpha = load.normal / mean;
     for (std::size_t k = 0; k < n; ++k) {
@@ -273,6 +309,7 @@ FrictionalContact::GapShifts FrictionalContact::measure_shifts(int iteration) co
       sum_sy += uy[k];
     }
   }
+  sum(n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p);
   if (n_c == 0.0)
     throw NumericalError(kSolver, iteration, "contact area", "the contact vanished (no point with p_N > 0)");
   GapShifts s;
@@ -355,6 +392,7 @@ FrictionalContact::Residual FrictionalContact::gradient(const GapShifts& shifts)
     rn_new += an * an;
     rt_new += ax * ax + ay * ay;
   }
+  sum(err_n, err_t, b_sum, rn_new, rt_new, penetrating);
   Residual r;
   r.error_n = err_n / (shifts.pressure_sum * h_rms_);
   r.error_t = (sliding || !(b_sum > 0.0)) ? 0.0 : err_t / (b_sum * h_rms_);
@@ -375,7 +413,7 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
       state.settled ? tolerance : std::max(tolerance, 1e-2 * state.bound_change);
   if (!(res.error < subproblem_tolerance && !res.penetrates)) return Subproblem::Open;
   const std::size_t n = h_.size();
-  const double nn = static_cast<double>(n), q0 = norm(load.x, load.y);
+  const double nn = points(), q0 = norm(load.x, load.y);
   double *px = p_.x.data(), *py = p_.y.data();
   const double* pz = p_.z.data();
   double* bound = bound_.data();
@@ -389,6 +427,7 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
       change += std::abs(b - bound[k]);
       total += b;
     }
+    sum(change, total);
     change = total > 0.0 ? change / total : 0.0;
     // A subproblem whose bound cannot carry the load while the law's can
     // is not a solution of the law: move on to the law's bound.
@@ -425,6 +464,7 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
   double law_capacity = 0.0;
 #pragma omp parallel for reduction(+ : law_capacity) schedule(static)
   for (std::size_t k = 0; k < n; ++k) law_capacity += law.max_tangential(pz[k]);
+  sum(law_capacity);
   law_capacity /= nn;
   if (overloaded_ && q0 <= law_capacity * (1.0 + 1e-9))
     throw NumericalError(kSolver, it, "mean tangential traction",
@@ -454,6 +494,7 @@ double FrictionalContact::normal_direction(double beta, double n_c) {
     tz[k] = state[k] == kOpen ? 0.0 : dz[k] + beta * tz_old[k];
     sum += tz[k];
   }
+  this->sum(sum);
   const double shift = sum / n_c;
   double slope = 0.0;
 #pragma omp parallel for reduction(+ : slope) schedule(static)
@@ -462,6 +503,7 @@ double FrictionalContact::normal_direction(double beta, double n_c) {
     tz[k] -= shift;
     slope += dz[k] * tz[k];
   }
+  this->sum(slope);
   return slope;
 }
 
@@ -500,6 +542,7 @@ double FrictionalContact::tangential_direction(double beta, const GapShifts& shi
     sum_x += ax;
     sum_y += ay;
   }
+  sum(sum_x, sum_y, n_free);
   const bool shift = n_free > 0.0 && !sliding;
   const double cx = shift ? sum_x / n_free : 0.0, cy = shift ? sum_y / n_free : 0.0;
   double slope = 0.0, curvature = 0.0;
@@ -518,6 +561,7 @@ double FrictionalContact::tangential_direction(double beta, const GapShifts& shi
     }
     if (state[k] != kOpen) slope += gx * tx[k] + gy * ty[k];
   }
+  sum(slope, curvature);
   turn_curvature = curvature;
   return slope;
 }
@@ -551,7 +595,7 @@ FrictionalContact::Slopes FrictionalContact::search_directions(const GapShifts& 
 //   [t_T·Ft_N  t_T·Ft_T] [τ_T] = [Σ ∂J/∂p_T·t_T],
 // the forms by Parseval from the spectra of t (decoupled for ν = 0.5).
 std::pair<double, double> FrictionalContact::step_lengths(const Slopes& slopes, int it) {
-  HalfSpace::BlockForm form = body_.form(t_, work_);
+  HalfSpace::BlockForm form = body_->block_form(t_);
   form.tt += slopes.turn_curvature;
   const double slope_n = slopes.normal, slope_t = slopes.tangential;
   double tau_n = 0.0, tau_t = 0.0;
@@ -568,7 +612,7 @@ std::pair<double, double> FrictionalContact::step_lengths(const Slopes& slopes, 
   } else if (slope_n == 0.0) {
     // No descent direction (a contact of one point) while points outside
     // still penetrate: admit them with a cell's own stiffness.
-    tau_n = 1.0 / body_.self_compliance();
+    tau_n = 1.0 / body_->self_compliance();
   }
   if (!std::isfinite(tau_n) || !std::isfinite(tau_t) || tau_n < 0.0 || tau_t < 0.0)
     throw NumericalError(kSolver, it, "step length",
@@ -582,7 +626,7 @@ std::pair<double, double> FrictionalContact::step_lengths(const Slopes& slopes, 
 // rescaled to its mean (A.8c) and p_T into the friction cone with its mean (line 15).
 void FrictionalContact::descend(double tau_n, double tau_t, const MeanTraction& load, int it, Iterate& st) {
   const std::size_t n = h_.size();
-  const double nn = static_cast<double>(n);
+  const double nn = points();
   double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data(), *bound = bound_.data();
   const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data(), *h = h_.data();
   const double *tx = t_.x.data(), *ty = t_.y.data(), *tz = t_.z.data();
@@ -618,6 +662,7 @@ void FrictionalContact::descend(double tau_n, double tau_t, const MeanTraction& 
     py[k] = s * ay;
     new_sum += pz[k];
   }
+  sum(overlap, new_sum);
   if (!(new_sum > 0.0)) throw NumericalError(kSolver, it, "normal traction", "all pressures vanished");
   const double alpha = load.normal * nn / new_sum;  // impose ⟨p_N⟩ = p_N,0   (A.8c)
 #pragma omp parallel for schedule(static)
@@ -645,7 +690,7 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
   warm_start(load);
   Iterate state;
   for (int it = 0; it < opt.max_iterations; ++it) {
-    body_.displacement(p_, u_, work_);  // u = F * p   (Algorithm 1, line 5)
+    body_->vector_displacement(p_, u_);  // u = F * p   (Algorithm 1, line 5)
     const GapShifts shifts = measure_shifts(it);
     if (shifts.stick_zone_lost) {
       restart_tangential(load, it, state);
@@ -676,7 +721,7 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
 FrictionalResult FrictionalContact::finish(int iterations, double error, double error_n, double error_t,
                                            const MeanTraction& load) {
   const std::size_t n = h_.size();
-  const double nn = static_cast<double>(n);
+  const double nn = points();
   double sum_x = 0.0, sum_y = 0.0, sum_z = 0.0, contact = 0.0, stick = 0.0, work = 0.0, unsettled = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double pn = p_.z[k];
@@ -697,6 +742,7 @@ FrictionalResult FrictionalContact::finish(int iterations, double error, double 
     stick += sticks ? 1.0 : 0.0;
     work += p_.x[k] * u_.x[k] + p_.y[k] * u_.y[k] + pn * u_.z[k];
   }
+  sum(sum_x, sum_y, sum_z, contact, stick, work, unsettled);
   FrictionalResult r;
   r.iterations = iterations;
   r.bound_updates = bound_updates_;

@@ -128,25 +128,38 @@ HalfSpace::HalfSpace(const Grid2D& grid, double young, double poisson, double sh
 
 void HalfSpace::build_periodic_kernel(double e_star_normal) {
   const Grid2D& g = grid_;
-  const double inv_n = 1.0 / static_cast<double>(g.size());
   if (response_ == Response::Normal) {  // (2.39) with E*, 1/N folded in
     const double e_star = e_star_normal > 0.0 ? e_star_normal : contact_modulus();
     for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t m) { zz_[m] = normal_mode(g, i, j, e_star); });
     return;
   }
-  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
   for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t m) {
-    // The odd coupling dropped at Nyquist frequencies (their sign is ambiguous).
-    const GreenTensor f = green_tensor(g.wavenumber_x(i), g.wavenumber_y(j), shear_, poisson_,
-                                       !(nyq_x && i == g.nx / 2), !(nyq_y && j == g.ny / 2));
-    xx_[m] = f[0][0].real() * inv_n;
+    const TensorMode f = tensor_mode(g, i, j, shear_, poisson_);
+    xx_[m] = f.xx;
     if (response_ == Response::ShearX) return;
-    yy_[m] = f[1][1].real() * inv_n;
-    xy_[m] = f[0][1].real() * inv_n;
-    zz_[m] = f[2][2].real() * inv_n;
-    xz_[m] = f[0][2].imag() * inv_n;
-    yz_[m] = f[1][2].imag() * inv_n;
+    yy_[m] = f.yy;
+    xy_[m] = f.xy;
+    zz_[m] = f.zz;
+    xz_[m] = f.xz;
+    yz_[m] = f.yz;
   });
+}
+
+HalfSpace::TensorMode HalfSpace::tensor_mode(const Grid2D& g, std::size_t i, std::size_t j, double shear,
+                                             double poisson) {
+  const double inv_n = 1.0 / static_cast<double>(g.size());
+  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
+  // The odd coupling dropped at Nyquist frequencies (their sign is ambiguous).
+  const GreenTensor f = green_tensor(g.wavenumber_x(i), g.wavenumber_y(j), shear, poisson, !(nyq_x && i == g.nx / 2),
+                                     !(nyq_y && j == g.ny / 2));
+  TensorMode t;
+  t.xx = f[0][0].real() * inv_n;
+  t.yy = f[1][1].real() * inv_n;
+  t.xy = f[0][1].real() * inv_n;
+  t.zz = f[2][2].real() * inv_n;
+  t.xz = f[0][2].imag() * inv_n;
+  t.yz = f[1][2].imag() * inv_n;
+  return t;
 }
 
 void HalfSpace::build_free_kernel() {
@@ -266,16 +279,8 @@ void HalfSpace::displacement(const VectorField& p, VectorField& u, Workspace& w)
   double* c = reinterpret_cast<double*>(w.sz.data());
   const std::size_t modes = zz_.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t m = 0; m < modes; ++m) {
-    const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
-    const double fxx = xx_[m], fyy = yy_[m], fxy = xy_[m], fzz = zz_[m], gx = xz_[m], gy = yz_[m];
-    a[2 * m] = fxx * xr + fxy * yr - gx * zi;  // i g z = (−g z_i, g z_r)
-    a[2 * m + 1] = fxx * xi + fxy * yi + gx * zr;
-    b[2 * m] = fxy * xr + fyy * yr - gy * zi;
-    b[2 * m + 1] = fxy * xi + fyy * yi + gy * zr;
-    c[2 * m] = gx * xi + gy * yi + fzz * zr;  // −i g x = (g x_i, −g x_r)
-    c[2 * m + 1] = -gx * xr - gy * yr + fzz * zi;
-  }
+  for (std::size_t m = 0; m < modes; ++m)
+    apply_mode({xx_[m], yy_[m], xy_[m], zz_[m], xz_[m], yz_[m]}, a + 2 * m, b + 2 * m, c + 2 * m);
   backward(w.sx, u.x, w);
   backward(w.sy, u.y, w);
   backward(w.sz, u.z, w);
@@ -332,11 +337,7 @@ HalfSpace::BlockForm HalfSpace::form(const VectorField& t, Workspace& w) const {
   const double* b = reinterpret_cast<const double*>(w.sy.data());
   const double* c = reinterpret_cast<const double*>(w.sz.data());
   return hermitian_sum<BlockForm>(fft_grid_, [&](std::size_t m, double wt, BlockForm& f) {
-    const double xr = a[2 * m], xi = a[2 * m + 1], yr = b[2 * m], yi = b[2 * m + 1], zr = c[2 * m], zi = c[2 * m + 1];
-    // The blocks of t̂ᴴ F t̂ (F Hermitian: each is real); Im(conj(x) z) = x_r z_i − x_i z_r.
-    f.nn += wt * zz_[m] * (zr * zr + zi * zi);
-    f.tt += wt * (xx_[m] * (xr * xr + xi * xi) + yy_[m] * (yr * yr + yi * yi) + 2.0 * xy_[m] * (xr * yr + xi * yi));
-    f.nt -= wt * (xz_[m] * (xr * zi - xi * zr) + yz_[m] * (yr * zi - yi * zr));
+    add_form_mode({xx_[m], yy_[m], xy_[m], zz_[m], xz_[m], yz_[m]}, wt, a + 2 * m, b + 2 * m, c + 2 * m, f);
   });
 }
 

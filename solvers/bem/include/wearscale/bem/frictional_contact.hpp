@@ -45,11 +45,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "wearscale/bem/friction_law.hpp"
 #include "wearscale/bem/half_space.hpp"
+#include "wearscale/bem/traction_operator.hpp"
 
 namespace wearscale::bem {
 
@@ -96,6 +98,13 @@ class FrictionalContact {
   /// `surface` heights on a periodic grid; E and ν of the elastic flat (the
   /// rigid surface's own compliance folded in beforehand, (A.1)).
   FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law);
+  /// The same solver on any body (E and ν its own): `surface` holds the
+  /// heights of the rows the body holds here (body->local_grid()), and so do
+  /// the fields below; every pass reduces its sums through body->sum, so with
+  /// a SlabHalfSpace every rank of the job, constructing it with its slab and
+  /// making the same calls, takes the same steps and stops at the same
+  /// iteration. A solve's result is the whole grid's on every rank.
+  FrictionalContact(std::unique_ptr<TractionOperator> body, const RealField& surface, FrictionLaw law);
 
   /// Solves for the imposed mean tractions. InputError if ⟨p_N⟩ < 0 or if the
   /// tangential load exceeds what friction can carry (‖⟨p_T⟩‖ > μ⟨p_N⟩ for
@@ -118,7 +127,9 @@ class FrictionalContact {
   const RealField& stick_slip_map() const { return map_; }
 
   const RealField& surface() const { return h_; }
-  const Grid2D& grid() const { return h_.grid(); }
+  /// The whole grid of the contact; the fields above are on local_grid(), the rows held here.
+  const Grid2D& grid() const { return body_->grid(); }
+  const Grid2D& local_grid() const { return h_.grid(); }
   const FrictionLaw& law() const { return law_; }
   double young() const { return young_; }
   double poisson() const { return poisson_; }
@@ -168,6 +179,10 @@ class FrictionalContact {
   // it); returns false if the discs cannot carry it (gross sliding).
   bool project_tangential(double target_x, double target_y, int iteration, bool free_only);
   FrictionalResult finish(int iterations, double error, double error_n, double error_t, const MeanTraction& load);
+  // Partial sums of this process → the totals over every point (body_->sum; serial: unchanged).
+  template <class... T>
+  void sum(T&... values) const;
+  double points() const { return static_cast<double>(body_->grid().size()); }
 
   RealField h_;
   double young_, poisson_;
@@ -176,8 +191,7 @@ class FrictionalContact {
   RealField gap_, map_;
   RealField bound_;                  // p_T,max of the current subproblem at points in contact
   std::vector<std::uint8_t> state_;  // per point: open, stick, slip (on the cone), released
-  HalfSpace body_;                   // the Green tensor (A.4), all blocks
-  HalfSpace::Workspace work_;
+  std::unique_ptr<TractionOperator> body_;  // the Green tensor (A.4), all blocks (whole grid or a slab)
   double h_rms_ = 1.0, h_max_ = 0.0;
   double shift_n_ = 0.0, shift_x_ = 0.0, shift_y_ = 0.0;  // gap shifts of the last iteration
   bool all_sliding_ = false, overloaded_ = false;

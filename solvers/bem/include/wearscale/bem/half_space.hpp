@@ -139,6 +139,34 @@ class HalfSpace {
   static double normal_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star);
   static double stiffness_mode(const Grid2D& g, std::size_t i, std::size_t j, double e_star);
 
+  /// The periodic tensor (all blocks) at r2c mode (i, j) of `g`, 1/N folded in,
+  /// as kept: F = [[xx, xy, i xz], [xy, yy, i yz], [−i xz, −i yz, zz]], the odd
+  /// coupling dropped at Nyquist rows and columns. Every body that holds these
+  /// modes (whole or in slabs) takes them from here.
+  struct TensorMode {
+    double xx = 0.0, yy = 0.0, xy = 0.0, zz = 0.0, xz = 0.0, yz = 0.0;
+  };
+  static TensorMode tensor_mode(const Grid2D& g, std::size_t i, std::size_t j, double shear_modulus, double poisson);
+  /// û = F p̂ at one mode, in place: a, b, c the (re, im) of the x, y, z spectra there.
+  static void apply_mode(const TensorMode& f, double* a, double* b, double* c) {
+    const double xr = a[0], xi = a[1], yr = b[0], yi = b[1], zr = c[0], zi = c[1];
+    a[0] = f.xx * xr + f.xy * yr - f.xz * zi;  // i g z = (−g z_i, g z_r)
+    a[1] = f.xx * xi + f.xy * yi + f.xz * zr;
+    b[0] = f.xy * xr + f.yy * yr - f.yz * zi;
+    b[1] = f.xy * xi + f.yy * yi + f.yz * zr;
+    c[0] = f.xz * xi + f.yz * yi + f.zz * zr;  // −i g x = (g x_i, −g x_r)
+    c[1] = -f.xz * xr - f.yz * yr + f.zz * zi;
+  }
+  /// Adds weight × the blocks of t̂ᴴ F t̂ at one mode (F Hermitian: each is real) to `form`.
+  static void add_form_mode(const TensorMode& f, double weight, const double* a, const double* b, const double* c,
+                            BlockForm& form) {
+    const double xr = a[0], xi = a[1], yr = b[0], yi = b[1], zr = c[0], zi = c[1];
+    // Im(conj(x) z) = x_r z_i − x_i z_r.
+    form.nn += weight * f.zz * (zr * zr + zi * zi);
+    form.tt += weight * (f.xx * (xr * xr + xi * xi) + f.yy * (yr * yr + yi * yi) + 2.0 * f.xy * (xr * yr + xi * yi));
+    form.nt -= weight * (f.xz * (xr * zi - xi * zr) + f.yz * (yr * zi - yi * zr));
+  }
+
   /// E_el = ½ ∫ p·u dA   (4.1)
   static double elastic_energy(const VectorField& traction, const VectorField& u);
   static double elastic_energy(const RealField& p, const RealField& u);
