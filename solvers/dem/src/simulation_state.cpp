@@ -119,7 +119,7 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   old_offset_.clear();
   old_neighbor_.clear();
   old_shift_.clear();
-  old_history_.clear();
+  several_images_ = true;  // not known: the next carry-over checks its order
 }
 
 void Simulation::save_state(CheckpointState& out) const {

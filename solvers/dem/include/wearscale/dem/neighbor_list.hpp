@@ -84,23 +84,23 @@ class NeighborList {
                int history_size = 3);
 
  private:
-  void sort_and_keep_history(const Particles& p, const Box& box);
+  void search(const Particles& p, double range, int threads);
+  void sort_rows(int threads);
+  void carry_history(const Particles& p, const Box& box, int threads);
 
   std::vector<std::uint32_t> offset_, neighbor_;
   std::vector<std::uint8_t> shift_;
   std::vector<double> history_;
   PeriodicImages images_;
-  // Previous list, for carrying history over a rebuild.
+  // Previous list's pairs, for carrying the histories (kept in history_
+  // until they move) over a rebuild; its arrays are reused by the next build.
   std::vector<std::uint32_t> old_offset_, old_neighbor_;
   std::vector<std::uint8_t> old_shift_;
-  std::vector<double> old_history_;
   PeriodicImages old_images_;
-  // Scratch reused between builds.
-  struct Candidate {
-    std::uint32_t i, j;
-    std::uint8_t shift;
-  };
-  std::vector<std::vector<Candidate>> thread_candidates_;  // one per building thread
+  // A row of the list (of the previous one) holds a neighbour through more
+  // than one image: the carry-over then checks its moves' order.
+  bool several_images_ = true, old_several_images_ = true;
+  // Scratch reused between builds: each row's count, then its cursor.
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
   std::vector<Vec3> built_at_;
