@@ -81,39 +81,67 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   }
 }
 
-// The pairs written straight into their rows, without a candidate buffer: a
-// first pass over the cells counts each row's pairs, a second writes them
-// (the rows are sorted afterwards, so the list is the same whatever order
-// the threads wrote in). The search is split over the threads by cell
-// layers; a row may get pairs from two threads (the pairs under the lower
-// index), so there the counts and cursors are atomic.
+// One walk over the cells, split over the threads by cell layers. A pair
+// belongs to the row of its lower index; the home particle's pairs with
+// higher indices (most pairs, when particles are numbered along the cells)
+// are kept as a stream of neighbours with a count per home particle (5 bytes
+// a pair), the others as (row, neighbour, image) — there is no buffer of
+// every candidate (12 bytes a pair). Then the rows' offsets, and each
+// thread copies its stream to the front of its home particles' rows and
+// its other pairs to the back of theirs (atomic cursors when threads share
+// a row). The rows are sorted afterwards, so the list is the same bits on
+// any thread count.
 void NeighborList::search(const Particles& p, double range, int threads) {
   const std::size_t n = p.size();
   threads = std::max(1, std::min(threads, grid_.layers()));
   const int layers = grid_.layers();
-  auto each_pair = [&](int t, auto&& emit) {
+  streams_.resize(static_cast<std::size_t>(threads));
+  for (auto& st : streams_) {
+    st.neighbor.clear();
+    st.shift.clear();
+    st.home.clear();
+    st.other.clear();
+  }
+  // Split by the threads the team has (fewer than asked in a nested region).
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num(), team = omp_get_num_threads();
+    Stream& out = streams_[static_cast<std::size_t>(t)];
     grid_.for_each_candidate(
         p.position,
         [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
           if (p.wall[i] != no_wall && p.wall[i] == p.wall[j]) return;  // rigid within a wall
           const double reach_ij = p.radius[i] + p.radius[j] + range;
           if (dot(d, d) >= reach_ij * reach_ij) return;
-          if (i <= j)
-            emit(i, j, s);
-          else
-            emit(j, i, images_.mirrored(s));
+          if (i <= j) {  // i is the home particle: its visits come together
+            out.neighbor.push_back(j);
+            out.shift.push_back(s);
+            if (out.home.empty() || out.home.back().i != i) out.home.push_back({i, 0});
+            ++out.home.back().pairs;
+          } else {
+            out.other.push_back({j, i, images_.mirrored(s)});
+          }
         },
-        layers * t / threads, layers * (t + 1) / threads);
-  };
+        layers * t / team, layers * (t + 1) / team);
+  }
+  // The rows' counts: each home particle in one stream; the other pairs from any.
   count_.assign(n + 1, 0);
   std::uint32_t* count = count_.data();
-  if (threads == 1) {
-    each_pair(0, [&](std::uint32_t i, std::uint32_t, std::uint8_t) { ++count[i]; });
-  } else {
+  const bool shared = threads > 1;
+  const auto streams = static_cast<std::ptrdiff_t>(streams_.size());
 #pragma omp parallel num_threads(threads)
-    each_pair(omp_get_thread_num(), [&](std::uint32_t i, std::uint32_t, std::uint8_t) {
-      std::atomic_ref<std::uint32_t>(count[i]).fetch_add(1, std::memory_order_relaxed);
-    });
+  {
+#pragma omp for schedule(static, 1)
+    for (std::ptrdiff_t t = 0; t < streams; ++t)
+      for (const auto& h : streams_[static_cast<std::size_t>(t)].home) count[h.i] += h.pairs;
+#pragma omp for schedule(static, 1)
+    for (std::ptrdiff_t t = 0; t < streams; ++t)
+      for (const auto& c : streams_[static_cast<std::size_t>(t)].other) {
+        if (shared)
+          std::atomic_ref<std::uint32_t>(count[c.i]).fetch_add(1, std::memory_order_relaxed);
+        else
+          ++count[c.i];
+      }
   }
   offset_.resize(n + 1);
   offset_[0] = 0;
@@ -121,22 +149,25 @@ void NeighborList::search(const Particles& p, double range, int threads) {
   const std::size_t total = offset_[n];
   neighbor_.resize(total);
   shift_.resize(total);
-  std::copy_n(offset_.begin(), n, count_.begin());  // the rows' cursors
+  std::copy(offset_.begin() + 1, offset_.end(), count_.begin());  // each row's back cursor
   std::uint32_t* nb = neighbor_.data();
   std::uint8_t* sh = shift_.data();
-  if (threads == 1) {
-    each_pair(0, [&](std::uint32_t i, std::uint32_t j, std::uint8_t s) {
-      const std::uint32_t k = count[i]++;
-      nb[k] = j;
-      sh[k] = s;
-    });
-  } else {
-#pragma omp parallel num_threads(threads)
-    each_pair(omp_get_thread_num(), [&](std::uint32_t i, std::uint32_t j, std::uint8_t s) {
-      const std::uint32_t k = std::atomic_ref<std::uint32_t>(count[i]).fetch_add(1, std::memory_order_relaxed);
-      nb[k] = j;
-      sh[k] = s;
-    });
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (std::ptrdiff_t t = 0; t < streams; ++t) {
+    const Stream& in = streams_[static_cast<std::size_t>(t)];
+    std::size_t from = 0;
+    for (const auto& h : in.home) {
+      std::copy_n(in.neighbor.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, nb + offset_[h.i]);
+      std::copy_n(in.shift.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, sh + offset_[h.i]);
+      from += h.pairs;
+    }
+    for (const auto& c : in.other) {
+      const std::uint32_t k =
+          (shared ? std::atomic_ref<std::uint32_t>(count[c.i]).fetch_sub(1, std::memory_order_relaxed) : count[c.i]--) -
+          1;
+      nb[k] = c.j;
+      sh[k] = c.shift;
+    }
   }
 }
 

@@ -100,7 +100,22 @@ class NeighborList {
   // A row of the list (of the previous one) holds a neighbour through more
   // than one image: the carry-over then checks its moves' order.
   bool several_images_ = true, old_several_images_ = true;
-  // Scratch reused between builds: each row's count, then its cursor.
+  // Scratch reused between builds: each thread's search results (search()),
+  // each row's count, then its cursor.
+  struct Stream {
+    std::vector<std::uint32_t> neighbor;  // the home particles' pairs with higher indices, in order
+    std::vector<std::uint8_t> shift;
+    struct Home {
+      std::uint32_t i, pairs;
+    };
+    std::vector<Home> home;
+    struct Pair {
+      std::uint32_t i, j;
+      std::uint8_t shift;
+    };
+    std::vector<Pair> other;  // pairs under a lower index than the home particle's
+  };
+  std::vector<Stream> streams_;
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
   std::vector<Vec3> built_at_;
