@@ -107,6 +107,14 @@ void NeighborList::search(const Particles& p, double range, int threads) {
   {
     const int t = omp_get_thread_num(), team = omp_get_num_threads();
     Stream& out = streams_[static_cast<std::size_t>(t)];
+    // Room for a dense packing's pairs from the start: a vector that grows
+    // leaves its old blocks resident in the thread's heap (untouched room
+    // is not).
+    const std::size_t share = n / static_cast<std::size_t>(team) + 64;
+    out.neighbor.reserve(8 * share);
+    out.shift.reserve(8 * share);
+    out.home.reserve(share);
+    out.other.reserve(2 * share);
     grid_.for_each_candidate(
         p.position,
         [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
