@@ -30,8 +30,7 @@ void NeighborList::clear() {
 
 void NeighborList::build(const Particles& p, const Box& box, double reach, double skin, int history_size) {
   const std::size_t n = p.size();
-  const bool carry =
-      built_at_.size() == n && built_image_.size() == n && !offset_.empty() && history_size == history_size_;
+  const bool carry = built_image_.size() == n && !offset_.empty() && history_size == history_size_;
   history_size_ = history_size;
   // The previous list's pairs stay for the carry-over; its histories stay
   // in history_ and move in place to their new slots (carry_history). The
@@ -72,11 +71,14 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
     if (size > history_.capacity()) history_.reserve(with_slack(size));
     history_.assign(size, 0.0);
   }
-  built_at_.resize(n);
+  if (keep_positions_)
+    built_at_.resize(n);
+  else
+    std::vector<Vec3>().swap(built_at_);
   built_image_.resize(n);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::size_t i = 0; i < n; ++i) {
-    built_at_[i] = p.position[i];
+    if (keep_positions_) built_at_[i] = p.position[i];
     built_image_[i] = p.image[i];
   }
 }

@@ -35,6 +35,7 @@ Simulation::Simulation(Particles particles, Box box, std::unique_ptr<ContactLaw>
     if (box_.periodic[static_cast<std::size_t>(a)] && !(box_.hi[a] > box_.lo[a]))
       throw InputError(fmt::format("DEM box: periodic axis {} has hi ≤ lo", "xyz"[a]));
   neighbors_.set_history_of_touching_pairs_only(settings_.history_of_touching_pairs_only);
+  neighbors_.set_keep_build_positions(settings_.check_displacement);
 }
 
 int Simulation::add_wall(std::vector<std::size_t> members, WallMotion motion) {

@@ -49,6 +49,10 @@ class NeighborList {
   void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
   /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
   void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
+  /// Keep the positions of the last build for moved_beyond_half_skin() (24
+  /// bytes a particle); NeighborSettings::check_displacement. Without them
+  /// moved_beyond_half_skin() is always true.
+  void set_keep_build_positions(bool on) { keep_positions_ = on; }
 
   std::size_t pairs() const { return neighbor_.size(); }
   const std::vector<std::uint32_t>& offsets() const { return offset_; }
@@ -65,7 +69,8 @@ class NeighborList {
   /// Their separation offsets for this box (images().count() of them).
   void shift_vectors(const Box& box, Vec3* out) const { images_.vectors(box, out); }
 
-  /// Largest displacement since the last build exceeds half the skin.
+  /// Largest displacement since the last build exceeds half the skin (true
+  /// when the build's positions were not kept).
   bool moved_beyond_half_skin(const Particles& p) const;
   long builds() const { return builds_; }
   /// Forgets all pairs and histories.
@@ -124,6 +129,7 @@ class NeighborList {
   double half_skin_ = 0.0;
   long builds_ = 0;
   bool touching_only_ = false;
+  bool keep_positions_ = true;
 };
 
 }  // namespace wearscale::dem
