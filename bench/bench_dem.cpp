@@ -3,20 +3,30 @@
 // same block with the thesis' cohesive law. Reports particle-steps per
 // CPU-second and per wall-second (and as items/s), the neighbour pairs, the
 // peak resident set (of the whole process so far: run one benchmark per
-// process for a size's own figure) and it per particle.
+// process for a size's own figure) and it per particle. On threads also the
+// CPU time of the busiest thread (the main one, which runs the serial parts):
+// particle-steps per second of it are what the wall clock would show if each
+// thread had a core of its own and never waited at a barrier — an upper bound
+// of the speed on a quiet machine that a loaded one can still measure, and
+// the CPU time of all threads over it shows the serial part and imbalance
+// (2 for none on two threads).
 //
 //   OMP_NUM_THREADS=1 build/bench/bench_dem --benchmark_filter=Hooke
 //   OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive build/bench/bench_dem --benchmark_filter=Hooke/20
 // (passive: threads waiting at a barrier sleep instead of spinning, which on
 // cores shared with other jobs keeps a waiting thread from taking the core
 // the other one needs; docs/dem.md, Speed.)
+#include <algorithm>
 #include <benchmark/benchmark.h>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <fstream>
 #include <numbers>
+#include <omp.h>
 #include <string>
+#include <sys/resource.h>
+#include <vector>
 
 #include "wearscale/dem/anchor_block.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
@@ -35,13 +45,29 @@ double peak_rss_mib() {
   return 0.0;
 }
 
-void report(benchmark::State& state, const Simulation& sim, long steps, double cpu, double wall) {
+// CPU seconds so far of each thread of the OpenMP team (the same threads
+// run every parallel region of the same size).
+std::vector<double> thread_cpu_seconds() {
+  std::vector<double> out(static_cast<std::size_t>(omp_get_max_threads()), 0.0);
+#pragma omp parallel
+  {
+    rusage u{};
+    getrusage(RUSAGE_THREAD, &u);
+    out[static_cast<std::size_t>(omp_get_thread_num())] =
+        static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  }
+  return out;
+}
+
+void report(benchmark::State& state, const Simulation& sim, long steps, double cpu, double wall, double busiest) {
   const double work = static_cast<double>(sim.particles().size()) * static_cast<double>(steps);
   state.SetItemsProcessed(static_cast<std::int64_t>(work));
   state.counters["N"] = static_cast<double>(sim.particles().size());
   state.counters["pairs"] = static_cast<double>(sim.neighbor_list().pairs());
   state.counters["Mpsteps_per_cpu_s"] = work / cpu / 1e6;
   state.counters["Mpsteps_per_wall_s"] = work / wall / 1e6;
+  state.counters["Mpsteps_per_busiest_thread_cpu_s"] = work / busiest / 1e6;
+  state.counters["cpu_over_busiest_thread"] = cpu / busiest;
   state.counters["peak_RSS_MiB"] = peak_rss_mib();
   state.counters["peak_RSS_B_per_particle"] = peak_rss_mib() * 1048576.0 / static_cast<double>(sim.particles().size());
 }
@@ -53,15 +79,19 @@ void time_steps(benchmark::State& state, Simulation& sim) {
   sim.run(10);
   double cpu = 0.0, wall = 0.0;
   long done = 0;
+  std::vector<double> per_thread(static_cast<std::size_t>(omp_get_max_threads()), 0.0);
   for (auto _ : state) {
+    const auto t0 = thread_cpu_seconds();
     const double c0 = cpu_seconds();
     const auto w0 = std::chrono::steady_clock::now();
     sim.run(steps);
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     cpu += cpu_seconds() - c0;
+    const auto t1 = thread_cpu_seconds();
+    for (std::size_t t = 0; t < per_thread.size(); ++t) per_thread[t] += t1[t] - t0[t];
     done += steps;
   }
-  report(state, sim, done, cpu, wall);
+  report(state, sim, done, cpu, wall, *std::max_element(per_thread.begin(), per_thread.end()));
 }
 
 // The deck's block: N = 4 n³, rebuild every 10 steps without a check.

@@ -7,7 +7,9 @@
 # average beside each figure (on shared cores the CPU-time figures are the
 # ones to read), and wearscale's Hooke block on two threads (wall clock,
 # OMP_WAIT_POLICY=passive: waiting threads sleep, see docs/dem.md) against
-# one: that speed-up means something only on a quiet machine (load < 1).
+# one: that speed-up means something only on a quiet machine (load < 1); on a
+# loaded one read the busiest thread's CPU figure against one thread's (an
+# upper bound: no waiting counted). Each benchmark runs in its own process.
 set -u
 bench=${1:-build/bench/bench_dem}
 rounds=${2:-2}
@@ -25,14 +27,21 @@ engine() {  # name n steps cmd...
   awk -v n=$((4 * n * n * n)) -v s="$steps" -v name="$name" -v load="$(load)" \
     '{ printf "%-28s %6.2f M particle-steps per CPU-second  (load %s)\n", name, n * s / $1 / 1e6, load }' "$work/time"
 }
-ours() {  # filter [threads]: one line per benchmark, CPU- and wall-second figures and bytes per particle
-  OMP_NUM_THREADS=${2:-1} OMP_WAIT_POLICY=passive "$bench" --benchmark_filter="$1" 2>/dev/null |
-    awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = 0
-      for (i = 1; i <= NF; ++i) { split($i, a, "=")
-        if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
-        if (a[1] == "peak_RSS_B_per_particle") b = a[2] }
-      printf "wearscale %-18s %dT %6.2f M particle-steps per CPU-second, %6.2f per wall-second, %4.0f B/particle  (load %s)\n",
-        $1, t, c, w, b, load }'
+ours() {  # filter [threads]: one line per benchmark, each in its own process (the peak RSS is then its own):
+  # CPU- and wall-second figures, bytes per particle, and on threads the busiest thread's CPU figure
+  # (an upper bound of the wall-clock speed with a core per thread) and all threads' CPU over it
+  local f
+  for f in $(echo "$1" | tr '|' ' '); do
+    OMP_NUM_THREADS=${2:-1} OMP_WAIT_POLICY=passive "$bench" --benchmark_filter="$f" 2>/dev/null |
+      awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = u = r = 0
+        for (i = 1; i <= NF; ++i) { split($i, a, "=")
+          if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
+          if (a[1] == "peak_RSS_B_per_particle") b = a[2]
+          if (a[1] == "Mpsteps_per_busiest_thread_cpu_s") u = a[2]; if (a[1] == "cpu_over_busiest_thread") r = a[2] }
+        extra = t > 1 ? sprintf(", %6.2f per busiest-thread CPU-second (CPU / busiest %.2f)", u, r) : ""
+        printf "wearscale %-18s %dT %6.2f M particle-steps per CPU-second, %6.2f per wall-second%s, %4.0f B/particle  (load %s)\n",
+          $1, t, c, w, extra, b, load }'
+  done
 }
 for r in $(seq "$rounds"); do
   echo "== round $r"
@@ -49,8 +58,9 @@ awk 'function v() { match($0, /[0-9.]+ M particle/); return substr($0, RSTART, R
      function wall() { match($0, /[0-9.]+ per wall/); return substr($0, RSTART, RLENGTH - 9) + 0 }
      /^wearscale Hooke\/20.* 1T/ { w20 = v(); s20 = wall() } /^wearscale Hooke\/40.* 1T/ { w40 = v(); s40 = wall() }
      /^wearscale Cohesive\/20.* 1T/ { c20 = v() } /^wearscale Cohesive\/40.* 1T/ { c40 = v() }
-     /^wearscale Hooke\/20.* 2T/ { printf "32 000:  2 threads / 1 thread (wall)   = %.2f\n", wall() / s20 }
-     /^wearscale Hooke\/40.* 2T/ { printf "256 000: 2 threads / 1 thread (wall)   = %.2f\n", wall() / s40 }
+     function busiest() { match($0, /[0-9.]+ per busiest/); return substr($0, RSTART, RLENGTH - 12) + 0 }
+     /^wearscale Hooke\/20.* 2T/ { printf "32 000:  2 threads / 1 thread (wall)   = %.2f, busiest thread CPU / 1 thread CPU = %.2f\n", wall() / s20, busiest() / w20 }
+     /^wearscale Hooke\/40.* 2T/ { printf "256 000: 2 threads / 1 thread (wall)   = %.2f, busiest thread CPU / 1 thread CPU = %.2f\n", wall() / s40, busiest() / w40 }
      /^LAMMPS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w20 / v(), c20 / v() }
      /^LAMMPS.*n=40.*M particle/ { printf "256 000: wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w40 / v(), c40 / v() }
      /^LIGGGHTS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LIGGGHTS  = %.2f\n", w20 / v() }

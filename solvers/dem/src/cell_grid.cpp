@@ -5,7 +5,7 @@
 
 namespace wearscale::dem {
 
-void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut) {
+void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int threads) {
   const std::size_t n = x.size();
   images_ = PeriodicImages::within(box, cut);
   images_.vectors(box, shift_.data());
@@ -60,9 +60,14 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut) {
     const int c = static_cast<int>(std::floor((xi[a] - lo[a]) / size[a]));
     return std::clamp(c, 0, cells_[static_cast<std::size_t>(a)] - 1);
   };
-  // Inserted in reverse so that each cell's list runs in increasing index.
+  // Each particle's cell (over the threads, kept in next_ until it is
+  // linked), then inserted in reverse so that each cell's list runs in
+  // increasing index.
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < n; ++k)
+    next_[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
   for (std::size_t k = n; k-- > 0;) {
-    const std::size_t c = flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2));
+    const std::size_t c = next_[k];
     next_[k] = head_[c];
     head_[c] = static_cast<std::uint32_t>(k);
   }

@@ -1,6 +1,7 @@
 #include "wearscale/dem/neighbor_list.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <omp.h>
@@ -12,6 +13,10 @@ namespace wearscale::dem {
 namespace {
 // From this many particles the list is built on all threads.
 constexpr std::size_t parallel_build = 8192;
+
+// Spare capacity of the history array (untouched pages, so not resident):
+// the next builds' histories move within it instead of into a new array.
+std::size_t with_slack(std::size_t doubles) { return doubles + doubles / 8 + 64; }
 }  // namespace
 
 void NeighborList::clear() {
@@ -25,18 +30,20 @@ void NeighborList::clear() {
 
 void NeighborList::build(const Particles& p, const Box& box, double reach, double skin, int history_size) {
   const std::size_t n = p.size();
-  const bool carry =
-      built_at_.size() == n && built_image_.size() == n && !offset_.empty() && history_size == history_size_;
+  const bool carry = built_image_.size() == n && !offset_.empty() && history_size == history_size_;
   history_size_ = history_size;
-  if (carry) {
-    old_offset_.swap(offset_);
-    old_neighbor_.swap(neighbor_);
-    old_shift_.swap(shift_);
-    old_history_.swap(history_);
-    old_images_ = images_;
-  } else {
+  // The previous list's pairs stay for the carry-over; its histories stay
+  // in history_ and move in place to their new slots (carry_history). The
+  // arrays of the list before that are reused for the new one.
+  old_offset_.swap(offset_);
+  old_neighbor_.swap(neighbor_);
+  old_shift_.swap(shift_);
+  old_several_images_ = several_images_;
+  if (!carry) {
     old_offset_.clear();
+    history_.clear();
   }
+  old_images_ = images_;
   half_skin_ = 0.5 * skin;
   ++builds_;
 
@@ -52,64 +59,137 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
           "particle would overlap its own image. Allowed: periodic lengths ≥ {:.6g}",
           "xyz"[a], l, 2.0 * max_radius, 2.0 * max_radius));
   }
-  grid_.build(p.position, box, cut);
+  const int threads = n >= parallel_build ? std::max(1, omp_get_max_threads()) : 1;
+  grid_.build(p.position, box, cut, threads);
   images_ = grid_.images();
-  // The search split by cell layers over the threads, each into its own
-  // candidates; the rows are sorted below, so the list is the same on any
-  // number of threads.
-  const int threads = n >= parallel_build ? std::max(1, std::min(omp_get_max_threads(), grid_.layers())) : 1;
-  thread_candidates_.resize(static_cast<std::size_t>(threads));
+  search(p, range, threads);
+  sort_rows(threads);
+  if (carry)
+    carry_history(p, box, threads);
+  else {
+    const std::size_t size = static_cast<std::size_t>(history_size_) * neighbor_.size();
+    if (size > history_.capacity()) history_.reserve(with_slack(size));
+    history_.assign(size, 0.0);
+  }
+  if (keep_positions_)
+    built_at_.resize(n);
+  else
+    std::vector<Vec3>().swap(built_at_);
+  built_image_.resize(n);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (keep_positions_) built_at_[i] = p.position[i];
+    built_image_[i] = p.image[i];
+  }
+}
+
+// One walk over the cells, split over the threads by cell layers. A pair
+// belongs to the row of its lower index; the home particle's pairs with
+// higher indices (most pairs, when particles are numbered along the cells)
+// are kept as a stream of neighbours with a count per home particle (5 bytes
+// a pair), the others as (row, neighbour, image) — there is no buffer of
+// every candidate (12 bytes a pair). Then the rows' offsets, and each
+// thread copies its stream to the front of its home particles' rows and
+// its other pairs to the back of theirs (atomic cursors when threads share
+// a row). The rows are sorted afterwards, so the list is the same bits on
+// any thread count.
+void NeighborList::search(const Particles& p, double range, int threads) {
+  const std::size_t n = p.size();
+  threads = std::max(1, std::min(threads, grid_.layers()));
+  const int layers = grid_.layers();
+  streams_.resize(static_cast<std::size_t>(threads));
+  for (auto& st : streams_) {
+    st.neighbor.clear();
+    st.shift.clear();
+    st.home.clear();
+    st.other.clear();
+  }
+  // Split by the threads the team has (fewer than asked in a nested region).
 #pragma omp parallel num_threads(threads)
   {
-    const int t = omp_get_thread_num();
-    auto& out = thread_candidates_[static_cast<std::size_t>(t)];
-    out.clear();
-    const int layers = grid_.layers();
+    const int t = omp_get_thread_num(), team = omp_get_num_threads();
+    Stream& out = streams_[static_cast<std::size_t>(t)];
+    // Room for a dense packing's pairs from the start: a vector that grows
+    // leaves its old blocks resident in the thread's heap (untouched room
+    // is not).
+    const std::size_t share = n / static_cast<std::size_t>(team) + 64;
+    out.neighbor.reserve(8 * share);
+    out.shift.reserve(8 * share);
+    out.home.reserve(share);
+    out.other.reserve(2 * share);
     grid_.for_each_candidate(
         p.position,
         [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
           if (p.wall[i] != no_wall && p.wall[i] == p.wall[j]) return;  // rigid within a wall
           const double reach_ij = p.radius[i] + p.radius[j] + range;
           if (dot(d, d) >= reach_ij * reach_ij) return;
-          if (i <= j)
-            out.push_back({i, j, s});
-          else
-            out.push_back({j, i, images_.mirrored(s)});
+          if (i <= j) {  // i is the home particle: its visits come together
+            out.neighbor.push_back(j);
+            out.shift.push_back(s);
+            if (out.home.empty() || out.home.back().i != i) out.home.push_back({i, 0});
+            ++out.home.back().pairs;
+          } else {
+            out.other.push_back({j, i, images_.mirrored(s)});
+          }
         },
-        layers * t / threads, layers * (t + 1) / threads);
+        layers * t / team, layers * (t + 1) / team);
   }
-  sort_and_keep_history(p, box);
-  built_at_.assign(p.position.begin(), p.position.end());
-  built_image_.assign(p.image.begin(), p.image.end());
-}
-
-void NeighborList::sort_and_keep_history(const Particles& p, const Box& box) {
-  const std::size_t n = p.size();
-  // Counting sort of the candidates by their lower index.
+  // The rows' counts: each home particle in one stream; the other pairs from any.
   count_.assign(n + 1, 0);
-  std::size_t total = 0;
-  for (const auto& part : thread_candidates_) {
-    for (const auto& c : part) ++count_[c.i + 1];
-    total += part.size();
+  std::uint32_t* count = count_.data();
+  const bool shared = threads > 1;
+  const auto streams = static_cast<std::ptrdiff_t>(streams_.size());
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static, 1)
+    for (std::ptrdiff_t t = 0; t < streams; ++t)
+      for (const auto& h : streams_[static_cast<std::size_t>(t)].home) count[h.i] += h.pairs;
+#pragma omp for schedule(static, 1)
+    for (std::ptrdiff_t t = 0; t < streams; ++t)
+      for (const auto& c : streams_[static_cast<std::size_t>(t)].other) {
+        if (shared)
+          std::atomic_ref<std::uint32_t>(count[c.i]).fetch_add(1, std::memory_order_relaxed);
+        else
+          ++count[c.i];
+      }
   }
   offset_.resize(n + 1);
   offset_[0] = 0;
-  for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + count_[i + 1];
+  for (std::size_t i = 0; i < n; ++i) offset_[i + 1] = offset_[i] + count[i];
+  const std::size_t total = offset_[n];
   neighbor_.resize(total);
   shift_.resize(total);
-  for (std::size_t i = 0; i < n; ++i) count_[i] = offset_[i];
-  for (const auto& part : thread_candidates_)
-    for (const auto& c : part) {
-      const std::uint32_t k = count_[c.i]++;
-      neighbor_[k] = c.j;
-      shift_[k] = c.shift;
+  std::copy(offset_.begin() + 1, offset_.end(), count_.begin());  // each row's back cursor
+  std::uint32_t* nb = neighbor_.data();
+  std::uint8_t* sh = shift_.data();
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (std::ptrdiff_t t = 0; t < streams; ++t) {
+    const Stream& in = streams_[static_cast<std::size_t>(t)];
+    std::size_t from = 0;
+    for (const auto& h : in.home) {
+      std::copy_n(in.neighbor.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, nb + offset_[h.i]);
+      std::copy_n(in.shift.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, sh + offset_[h.i]);
+      from += h.pairs;
     }
+    for (const auto& c : in.other) {
+      const std::uint32_t k =
+          (shared ? std::atomic_ref<std::uint32_t>(count[c.i]).fetch_sub(1, std::memory_order_relaxed) : count[c.i]--) -
+          1;
+      nb[k] = c.j;
+      sh[k] = c.shift;
+    }
+  }
+}
+
+void NeighborList::sort_rows(int threads) {
+  const std::size_t n = offset_.empty() ? 0 : offset_.size() - 1;
   // Each particle's neighbours in increasing (index, image): memory order,
-  // and the merge with the previous list below.
+  // and the merge with the previous list in the carry-over.
   auto before = [&](std::uint32_t a, std::uint8_t sa, std::uint32_t b, std::uint8_t sb) {
     return a < b || (a == b && sa < sb);
   };
-#pragma omp parallel for schedule(static) if (n >= parallel_build)
+  bool several = false;
+#pragma omp parallel for schedule(static) reduction(|| : several) num_threads(threads)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t b = offset_[i], e = offset_[i + 1];
     for (std::uint32_t k = b + 1; k < e; ++k) {
@@ -124,10 +204,25 @@ void NeighborList::sort_and_keep_history(const Particles& p, const Box& box) {
       neighbor_[m] = j;
       shift_[m] = s;
     }
+    for (std::uint32_t k = b + 1; k < e; ++k) several = several || neighbor_[k] == neighbor_[k - 1];
   }
+  several_images_ = several;
+}
+
+// The histories of the previous build, in history_ at the old list's slots,
+// moved to the slots of the same contacts in the new list; every other pair
+// starts afresh. Rows keep their order and each row's contacts keep theirs,
+// so a history only moves within its row's drift: the moves towards lower
+// slots go in increasing order, then those towards higher ones (and the
+// fresh zeros) in decreasing order, and no history is overwritten before it
+// has moved — in place, without a copy of the old histories (which would
+// be 24 bytes a pair at the peak of the build). Over threads the rows are
+// cut into chunks; where a chunk's old slots overlap another chunk's new
+// ones (the drift at its ends), those few histories are saved first.
+void NeighborList::carry_history(const Particles& p, const Box& box, int threads) {
+  const std::size_t n = p.size();
   const auto stride = static_cast<std::size_t>(history_size_);
-  history_.assign(stride * neighbor_.size(), 0.0);
-  if (old_offset_.size() != n + 1) return;
+  const std::size_t old_pairs = old_neighbor_.size(), new_pairs = neighbor_.size();
   // A contact is the pair and the image of j met by i in unwrapped terms:
   // x_j + s L − x_i with X = x + image L is X_j − X_i + (s − image_j + image_i) L,
   // so its shift changes by the periods j and i were wrapped by since the
@@ -140,8 +235,9 @@ void NeighborList::sort_and_keep_history(const Particles& p, const Box& box) {
   const bool same_images = old_images_ == images_;
   std::array<Vec3, PeriodicImages::max_count> shift_vector{};
   if (touching_only_) images_.vectors(box, shift_vector.data());
-#pragma omp parallel for schedule(static) if (n >= parallel_build)
-  for (std::size_t i = 0; i < n; ++i) {
+  // visit(k, b) for each pair k of row i whose contact was old pair b, in
+  // increasing k.
+  auto match_row = [&](std::size_t i, auto&& visit) {
     const std::array<int, 3> di = wrapped(i);
     std::uint32_t a = old_offset_[i];
     const std::uint32_t a_end = old_offset_[i + 1];
@@ -164,12 +260,99 @@ void NeighborList::sort_and_keep_history(const Particles& p, const Box& box) {
           const double contact = p.radius[i] + p.radius[j];
           if (!(dot(d, d) < contact * contact)) break;  // not touching: starts afresh
         }
-        std::copy_n(old_history_.begin() + static_cast<std::ptrdiff_t>(stride * b), stride,
-                    history_.begin() + static_cast<std::ptrdiff_t>(stride * k));
+        visit(k, b);
         break;
       }
     }
+  };
+  // In place needs each row's matches in increasing old slot. They are when
+  // no row meets a neighbour through several images (the rows are sorted by
+  // neighbour); otherwise checked (the images' order may have changed with
+  // the image table), and when not, the moves go through a copy of the old
+  // histories.
+  bool ordered = true;
+#pragma omp parallel for schedule(static) reduction(&& : ordered) num_threads(threads) \
+    if (several_images_ || old_several_images_)
+  for (std::size_t i = 0; i < (several_images_ || old_several_images_ ? n : 0); ++i) {
+    std::int64_t last = -1;
+    match_row(i, [&](std::uint32_t, std::uint32_t b) {
+      ordered = ordered && static_cast<std::int64_t>(b) > last;
+      last = b;
+    });
   }
+  if (!ordered) {
+    const std::vector<double> old(history_.begin(), history_.begin() + static_cast<std::ptrdiff_t>(stride * old_pairs));
+    history_.assign(stride * new_pairs, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::size_t i = 0; i < n; ++i)
+      match_row(i, [&](std::uint32_t k, std::uint32_t b) {
+        std::copy_n(old.begin() + static_cast<std::ptrdiff_t>(stride * b), stride,
+                    history_.begin() + static_cast<std::ptrdiff_t>(stride * k));
+      });
+    return;
+  }
+  const std::size_t size = stride * std::max(old_pairs, new_pairs);
+  if (size > history_.capacity()) history_.reserve(with_slack(size));
+  history_.resize(size);
+  // Chunks of rows, and the windows of each chunk's old slots that other
+  // chunks write to: [oo[R_t], no[R_t]) when the list grew before R_t,
+  // [no[R_t+1], oo[R_t+1]) when it shrank before R_t+1.
+  const auto& oo = old_offset_;
+  const auto& no = offset_;
+  std::size_t chunks = static_cast<std::size_t>(threads);
+  auto drift = [&](std::size_t r) {
+    return static_cast<std::size_t>(std::abs(static_cast<std::int64_t>(no[r]) - static_cast<std::int64_t>(oo[r])));
+  };
+  std::size_t saved = 0;
+  for (std::size_t t = 1; t < chunks; ++t) saved += drift(n * t / chunks);
+  if (saved > new_pairs / 8 + 1024) chunks = 1;  // the list changed a lot: one chunk, nothing saved
+  double* h = history_.data();
+  struct Chunk {
+    std::size_t r0, r1, lo_begin, lo_end, hi_begin, hi_end;
+    std::vector<double> lo, hi;  // the saved windows
+  };
+  std::vector<Chunk> part(chunks);
+  for (std::size_t t = 0; t < chunks; ++t) {
+    Chunk& c = part[t];
+    c.r0 = n * t / chunks;
+    c.r1 = n * (t + 1) / chunks;
+    c.lo_begin = oo[c.r0];
+    c.hi_end = oo[c.r1];
+    c.lo_end = t > 0 ? std::clamp<std::size_t>(no[c.r0], c.lo_begin, c.hi_end) : c.lo_begin;
+    c.hi_begin = t + 1 < chunks ? std::clamp<std::size_t>(no[c.r1], c.lo_end, c.hi_end) : c.hi_end;
+    c.lo.assign(h + stride * c.lo_begin, h + stride * c.lo_end);
+    c.hi.assign(h + stride * c.hi_begin, h + stride * c.hi_end);
+  }
+#pragma omp parallel for schedule(static, 1) num_threads(static_cast<int>(chunks))
+  for (std::size_t t = 0; t < chunks; ++t) {
+    const Chunk& c = part[t];
+    const std::size_t r0 = c.r0, r1 = c.r1;
+    auto source = [&](std::size_t b) -> const double* {
+      if (b < c.lo_end) return c.lo.data() + stride * (b - c.lo_begin);
+      if (b >= c.hi_begin) return c.hi.data() + stride * (b - c.hi_begin);
+      return h + stride * b;
+    };
+    // Towards lower slots, in increasing order.
+    for (std::size_t i = r0; i < r1; ++i)
+      match_row(i, [&](std::uint32_t k, std::uint32_t b) {
+        if (b > k) std::copy_n(source(b), stride, h + stride * k);
+      });
+    // Towards higher slots and the fresh pairs' zeros, in decreasing order.
+    std::vector<std::int64_t> from;
+    for (std::size_t i = r1; i-- > r0;) {
+      const std::uint32_t k0 = no[i], k1 = no[i + 1];
+      from.assign(k1 - k0, -1);
+      match_row(i, [&](std::uint32_t k, std::uint32_t b) { from[k - k0] = b; });
+      for (std::uint32_t k = k1; k-- > k0;) {
+        const std::int64_t b = from[k - k0];
+        if (b < 0)
+          std::fill_n(h + stride * k, stride, 0.0);
+        else if (static_cast<std::size_t>(b) < k)
+          std::copy_n(source(static_cast<std::size_t>(b)), stride, h + stride * k);
+      }
+    }
+  }
+  history_.resize(stride * new_pairs);
 }
 
 bool NeighborList::moved_beyond_half_skin(const Particles& p) const {

@@ -35,6 +35,7 @@ Simulation::Simulation(Particles particles, Box box, std::unique_ptr<ContactLaw>
     if (box_.periodic[static_cast<std::size_t>(a)] && !(box_.hi[a] > box_.lo[a]))
       throw InputError(fmt::format("DEM box: periodic axis {} has hi ≤ lo", "xyz"[a]));
   neighbors_.set_history_of_touching_pairs_only(settings_.history_of_touching_pairs_only);
+  neighbors_.set_keep_build_positions(settings_.check_displacement);
 }
 
 int Simulation::add_wall(std::vector<std::size_t> members, WallMotion motion) {
@@ -87,7 +88,9 @@ void Simulation::throw_wrong_law() const {
 
 void Simulation::rebuild() {
   auto& p = particles_;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a) p.image[i][static_cast<std::size_t>(a)] -= box_.wrap(a, p.position[i][a]);
   neighbors_.build(p, box_, reach(), settings_.skin, law_->history_size());
   prepare_pairs();
@@ -107,10 +110,28 @@ void Simulation::prepare_pairs() {
     for (std::size_t i = 0; i < n; ++i)
       for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) span = std::max<std::size_t>(span, nb[k] - i);
   }
-  const auto t = static_cast<std::size_t>(threads);
-  block_ = std::max<std::size_t>({span, 64, n / 32});  // not of t: the same sums on any thread count
-  if (threads == 1 || n / block_ < 2 * t) block_ = 0;
-  const std::size_t buffers = threads > 1 && block_ == 0 ? static_cast<std::size_t>(threads) : 1;
+  // Blocks of about equal pair counts (walls' rows have fewer pairs), each
+  // but the last at least `span` rows; up to 32 of them, from 8 on a
+  // multiple of 4 so that two or four threads get whole blocks of each
+  // colour. Not a function of the thread count: the same sums on any.
+  const std::size_t rows = std::max<std::size_t>(span, 64);
+  std::size_t want = std::min<std::size_t>(32, n / rows);
+  if (want >= 8) want -= want % 4;
+  block_start_.clear();
+  if (threads > 1 && want >= 2 * static_cast<std::size_t>(threads)) {
+    const std::size_t pairs = off.back();
+    block_start_.push_back(0);
+    for (std::size_t b = 1; b < want; ++b) {
+      const auto target = static_cast<std::uint32_t>(pairs * b / want);
+      auto e = static_cast<std::size_t>(std::lower_bound(off.begin(), off.end(), target) - off.begin());
+      e = std::max(e, block_start_.back() + rows);
+      if (e >= n) break;
+      block_start_.push_back(e);
+    }
+    block_start_.push_back(n);
+    if (block_start_.size() - 1 < 2 * static_cast<std::size_t>(threads)) block_start_.clear();
+  }
+  const std::size_t buffers = threads > 1 && block_start_.empty() ? static_cast<std::size_t>(threads) : 1;
   thread_force_.resize(buffers);
   thread_torque_.resize(buffers);
   thread_virial_.resize(buffers);
@@ -130,9 +151,13 @@ void Simulation::forces(bool advance) {
   if (track_virial_ && virial_.size() != particles_.size()) prepare_pairs();
   auto& p = particles_;
   const std::size_t n = p.size();
-  std::fill(p.force.begin(), p.force.end(), Vec3{});
-  std::fill(p.torque.begin(), p.torque.end(), Vec3{});
-  if (track_virial_) std::fill(virial_.begin(), virial_.end(), SymTensor{});
+  const bool virial = track_virial_;
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.force[i] = {};
+    p.torque[i] = {};
+    if (virial) virial_[i] = {};
+  }
   neighbors_.shift_vectors(box_, shift_table_.data());
   PairLoop loop;
   loop.n = n;
@@ -154,7 +179,8 @@ void Simulation::forces(bool advance) {
   loop.thread_torque = &thread_torque_;
   loop.thread_virial = &thread_virial_;
   loop.threads = force_threads(n);
-  loop.block = block_;
+  loop.block_start = block_start_.data();
+  loop.blocks = block_start_.empty() ? 0 : block_start_.size() - 1;
   loop.dt = dt_;
   loop.advance = advance;
   law_->add_pair_forces(loop);

@@ -102,7 +102,8 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   from_doubles(in, prefix + "neighbors", neighbor_);
   from_doubles(in, prefix + "shifts", shift_);
   unflatten(in, prefix + "built_at", built_at_);
-  if (built && (offset_.back() != pairs || built_at_.size() != particles))
+  // A list built without keeping its positions (check_displacement off) saves none.
+  if (built && (offset_.back() != pairs || (!built_at_.empty() && built_at_.size() != particles)))
     throw InputError(fmt::format("{}: the DEM neighbour list in '{}' does not fit {} particles", in.origin, prefix,
                                  particles));
   for (std::uint32_t j : neighbor_)
@@ -119,7 +120,7 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   old_offset_.clear();
   old_neighbor_.clear();
   old_shift_.clear();
-  old_history_.clear();
+  several_images_ = true;  // not known: the next carry-over checks its order
 }
 
 void Simulation::save_state(CheckpointState& out) const {

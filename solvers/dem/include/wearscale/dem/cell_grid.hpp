@@ -24,7 +24,8 @@ class CellGrid {
   /// than `cut`; at most 4n + 64 cells (open axes spanning far get larger
   /// ones). InputError when the images within `cut` are too many
   /// (PeriodicImages::within).
-  void build(std::span<const Vec3> x, const Box& box, double cut);
+  /// The particles' cells are found on `threads` threads.
+  void build(std::span<const Vec3> x, const Box& box, double cut, int threads = 1);
 
   const PeriodicImages& images() const { return images_; }
 
@@ -73,16 +74,26 @@ void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_
       for (int cy = 0; cy < cells_[1]; ++cy)
         for (int cx = 0; cx < cells_[0]; ++cx) {
           const std::size_t home = flat(cx, cy, cz);
+          if (head_[home] == none) continue;
+          // The home cell's stencil cells and the images they are met
+          // through, once for all its particles.
+          std::uint32_t cell[13];
+          std::uint8_t image[13];
+          int m = 0;
+          for (const auto& o : stencil) {
+            std::array<int, 3> c{}, s{};
+            if (!step(0, cx, o[0], c[0], s[0]) || !step(1, cy, o[1], c[1], s[1]) || !step(2, cz, o[2], c[2], s[2]))
+              continue;
+            cell[m] = static_cast<std::uint32_t>(flat(c[0], c[1], c[2]));
+            if (head_[cell[m]] == none) continue;
+            image[m++] = images_.index(s[0], s[1], s[2]);
+          }
           for (std::uint32_t i = head_[home]; i != none; i = next_[i]) {
             const Vec3 xi = x[i];
             for (std::uint32_t j = next_[i]; j != none; j = next_[j]) visit(i, j, zero, x[j] - xi);
-            for (const auto& o : stencil) {
-              std::array<int, 3> c{}, s{};
-              if (!step(0, cx, o[0], c[0], s[0]) || !step(1, cy, o[1], c[1], s[1]) || !step(2, cz, o[2], c[2], s[2]))
-                continue;
-              const std::uint8_t sh = images_.index(s[0], s[1], s[2]);
-              const Vec3 xs = shift_[sh] - xi;
-              for (std::uint32_t j = head_[flat(c[0], c[1], c[2])]; j != none; j = next_[j]) visit(i, j, sh, x[j] + xs);
+            for (int o = 0; o < m; ++o) {
+              const Vec3 xs = shift_[image[o]] - xi;
+              for (std::uint32_t j = head_[cell[o]]; j != none; j = next_[j]) visit(i, j, image[o], x[j] + xs);
             }
           }
         }

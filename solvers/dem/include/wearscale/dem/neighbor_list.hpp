@@ -49,6 +49,10 @@ class NeighborList {
   void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
   /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
   void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
+  /// Keep the positions of the last build for moved_beyond_half_skin() (24
+  /// bytes a particle); NeighborSettings::check_displacement. Without them
+  /// moved_beyond_half_skin() is always true.
+  void set_keep_build_positions(bool on) { keep_positions_ = on; }
 
   std::size_t pairs() const { return neighbor_.size(); }
   const std::vector<std::uint32_t>& offsets() const { return offset_; }
@@ -65,7 +69,8 @@ class NeighborList {
   /// Their separation offsets for this box (images().count() of them).
   void shift_vectors(const Box& box, Vec3* out) const { images_.vectors(box, out); }
 
-  /// Largest displacement since the last build exceeds half the skin.
+  /// Largest displacement since the last build exceeds half the skin (true
+  /// when the build's positions were not kept).
   bool moved_beyond_half_skin(const Particles& p) const;
   long builds() const { return builds_; }
   /// Forgets all pairs and histories.
@@ -84,23 +89,38 @@ class NeighborList {
                int history_size = 3);
 
  private:
-  void sort_and_keep_history(const Particles& p, const Box& box);
+  void search(const Particles& p, double range, int threads);
+  void sort_rows(int threads);
+  void carry_history(const Particles& p, const Box& box, int threads);
 
   std::vector<std::uint32_t> offset_, neighbor_;
   std::vector<std::uint8_t> shift_;
   std::vector<double> history_;
   PeriodicImages images_;
-  // Previous list, for carrying history over a rebuild.
+  // Previous list's pairs, for carrying the histories (kept in history_
+  // until they move) over a rebuild; its arrays are reused by the next build.
   std::vector<std::uint32_t> old_offset_, old_neighbor_;
   std::vector<std::uint8_t> old_shift_;
-  std::vector<double> old_history_;
   PeriodicImages old_images_;
-  // Scratch reused between builds.
-  struct Candidate {
-    std::uint32_t i, j;
-    std::uint8_t shift;
+  // A row of the list (of the previous one) holds a neighbour through more
+  // than one image: the carry-over then checks its moves' order.
+  bool several_images_ = true, old_several_images_ = true;
+  // Scratch reused between builds: each thread's search results (search()),
+  // each row's count, then its cursor.
+  struct Stream {
+    std::vector<std::uint32_t> neighbor;  // the home particles' pairs with higher indices, in order
+    std::vector<std::uint8_t> shift;
+    struct Home {
+      std::uint32_t i, pairs;
+    };
+    std::vector<Home> home;
+    struct Pair {
+      std::uint32_t i, j;
+      std::uint8_t shift;
+    };
+    std::vector<Pair> other;  // pairs under a lower index than the home particle's
   };
-  std::vector<std::vector<Candidate>> thread_candidates_;  // one per building thread
+  std::vector<Stream> streams_;
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
   std::vector<Vec3> built_at_;
@@ -109,6 +129,7 @@ class NeighborList {
   double half_skin_ = 0.0;
   long builds_ = 0;
   bool touching_only_ = false;
+  bool keep_positions_ = true;
 };
 
 }  // namespace wearscale::dem

@@ -62,8 +62,10 @@ struct PairLoop {
   std::vector<std::vector<Vec3>>* thread_torque = nullptr;
   std::vector<std::vector<SymTensor>>* thread_virial = nullptr;
   int threads = 1;
-  /// Rows per block of the two-colour threaded loop (0: per-thread buffers).
-  std::size_t block = 0;
+  /// The two-colour threaded loop's blocks of rows, block b from
+  /// block_start[b] to block_start[b + 1] (blocks == 0: per-thread buffers).
+  const std::size_t* block_start = nullptr;
+  std::size_t blocks = 0;
   double dt = 0.0;
   bool advance = false;  // the step's evaluation: sliding histories move
 };
@@ -216,23 +218,24 @@ void pair_loop(const Law& law, PairLoop& a) {
     rows(0, n, a.force, a.torque, a.virial);
     return;
   }
-  if (a.block > 0) {
-    // Two colours of blocks of `block` rows: every j of a row lies in the
-    // row's block or the next (block ≥ the list's largest j − i), so the
-    // blocks of one colour write to disjoint particles and the threads share
-    // the force arrays without copies or atomics; the colours are separated
-    // by the barrier at the end of each `omp for`. The order of the sums is
-    // fixed by the blocks, not by the threads: the same result on any thread
-    // count ≥ 2.
-    const std::size_t block = a.block;
-    const std::size_t blocks = (n + block - 1) / block;
+  if (a.blocks > 0) {
+    // Two colours of blocks of rows: every j of a row lies in the row's
+    // block or the next (each block but the last spans at least the list's
+    // largest j − i), so the blocks of one colour write to disjoint
+    // particles and the threads share the force arrays without copies or
+    // atomics; the colours are separated by the barrier at the end of each
+    // `omp for`. The order of the sums is fixed by the blocks, not by the
+    // threads (which thread takes a block does not matter, so they take the
+    // next free one): the same result on any thread count ≥ 2.
+    const std::size_t blocks = a.blocks;
+    const std::size_t* start = a.block_start;
 #pragma omp parallel num_threads(a.threads)
     for (std::size_t colour = 0; colour < 2; ++colour) {
       const std::size_t count = (blocks + 1 - colour) / 2;
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic, 1)
       for (std::size_t c = 0; c < count; ++c) {
-        const std::size_t begin = (colour + 2 * c) * block, end = std::min(n, begin + block);
-        rows(begin, end, a.force, a.torque, a.virial);
+        const std::size_t b = colour + 2 * c;
+        rows(start[b], start[b + 1], a.force, a.torque, a.virial);
       }
     }
     return;

@@ -124,7 +124,8 @@ class Simulation {
   NeighborSettings settings_;
   NeighborList neighbors_;
   std::vector<Wall> walls_;
-  std::size_t block_ = 0;  // rows per colour block of the threaded pair loop (0: buffers)
+  // Row blocks of the threaded pair loop's two colours (empty: buffers).
+  std::vector<std::size_t> block_start_;
   // Per-thread force/torque/virial buffers (threads 1..T-1), only for lists
   // that reach too far in index for the colour blocks.
   std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
