@@ -48,14 +48,6 @@ std::unique_ptr<TractionOperator> serial_body(const Grid2D& g, double young, dou
 }
 }  // namespace
 
-template <class... T>
-void FrictionalContact::sum(T&... values) const {
-  double v[] = {static_cast<double>(values)...};
-  body_->sum(v);
-  std::size_t k = 0;
-  ((values = static_cast<T>(v[k++])), ...);
-}
-
 FrictionalContact::FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law)
     : FrictionalContact(serial_body(surface.grid(), young, poisson), surface, law) {}
 
@@ -69,24 +61,9 @@ FrictionalContact::FrictionalContact(std::unique_ptr<TractionOperator> body, con
     throw std::invalid_argument("FrictionalContact: the surface is not on the rows the body holds");
   check_material(young_, poisson_);
   check_grid(body_->grid());
-  double max = -INFINITY, bad = 0.0;
-  for (double v : h_) {
-    bad += std::isfinite(v) ? 0.0 : 1.0;
-    max = std::max(max, v);
-  }
-  sum(bad);  // every process refuses alike
-  if (bad > 0.0) throw InputError("frictional contact: the surface has a NaN or infinite height");
-  // h_rms, the scale of the convergence measure: (1.5), the sums in storage order (as roughness.hpp's h_rms).
-  double total = 0.0;
-  for (const double v : h_) total += v;
-  sum(total);
-  const double mean = total / points();
-  double squares = 0.0;
-  for (const double v : h_) squares += (v - mean) * (v - mean);
-  sum(squares);
-  h_rms_ = std::sqrt(squares / points());
-  if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
-  h_max_ = body_->max(max);
+  const SurfaceScale scale = surface_scale(*body_, h_, "frictional contact");
+  h_rms_ = scale.h_rms;
+  h_max_ = scale.h_max;
 }
 
 void FrictionalContact::reset() {

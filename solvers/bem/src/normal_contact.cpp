@@ -32,14 +32,6 @@ std::unique_ptr<NormalOperator> serial_body(const Grid2D& g, double e_star, Boun
 }
 }  // namespace
 
-template <class... T>
-void NormalContact::sum(T&... values) const {
-  double v[] = {values...};
-  body_->sum(v);
-  std::size_t k = 0;
-  ((values = v[k++]), ...);
-}
-
 NormalContact::NormalContact(const RealField& surface, double e_star, Boundary boundary)
     : NormalContact(serial_body(surface.grid(), e_star, boundary), surface, e_star) {
   serial_ = &static_cast<const HalfSpaceNormal&>(*body_).half_space();
@@ -61,24 +53,9 @@ const HalfSpace& NormalContact::half_space() const {
 void NormalContact::set_surface(const RealField& surface) {
   if (!(surface.grid() == h_.grid())) throw std::invalid_argument("NormalContact::set_surface: grid changed");
   h_ = surface;
-  double max = -std::numeric_limits<double>::infinity(), bad = 0.0;
-  for (double v : h_) {
-    bad += std::isfinite(v) ? 0.0 : 1.0;
-    max = std::max(max, v);
-  }
-  sum(bad);  // every process refuses alike
-  if (bad > 0.0) throw InputError("normal contact: the surface has a NaN or infinite height");
-  // h_rms, the scale of the convergence measure: (1.5), the sums in storage order (as roughness.hpp's).
-  double total = 0.0;
-  for (const double v : h_) total += v;
-  sum(total);
-  const double mean = total / points();
-  double squares = 0.0;
-  for (const double v : h_) squares += (v - mean) * (v - mean);
-  sum(squares);
-  h_rms_ = std::sqrt(squares / points());
-  if (!(h_rms_ > 0.0)) h_rms_ = 1.0;
-  h_max_ = body_->max(max);
+  const SurfaceScale scale = surface_scale(*body_, h_, "normal contact");
+  h_rms_ = scale.h_rms;
+  h_max_ = scale.h_max;
 }
 
 void NormalContact::reset() { p_.fill(0.0); }

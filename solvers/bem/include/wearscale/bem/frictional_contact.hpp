@@ -181,7 +181,9 @@ class FrictionalContact {
   FrictionalResult finish(int iterations, double error, double error_n, double error_t, const MeanTraction& load);
   // Partial sums of this process → the totals over every point (body_->sum; serial: unchanged).
   template <class... T>
-  void sum(T&... values) const;
+  void sum(T&... values) const {
+    body_->sum_each(values...);
+  }
   double points() const { return static_cast<double>(body_->grid().size()); }
 
   RealField h_;

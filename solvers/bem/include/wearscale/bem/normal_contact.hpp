@@ -152,7 +152,9 @@ class NormalContact {
 
   // Sums over every point held by any process, in place (the body's reduction).
   template <class... T>
-  void sum(T&... values) const;
+  void sum(T&... values) const {
+    body_->sum_each(values...);
+  }
   double points() const { return static_cast<double>(grid().size()); }
 
   std::unique_ptr<NormalOperator> body_;

@@ -7,6 +7,8 @@
 // one solver over either.
 #include <cstddef>
 #include <span>
+#include <string_view>
+#include <utility>
 
 #include "wearscale/bem/half_space.hpp"
 
@@ -37,13 +39,31 @@ class NormalOperator {
   virtual void sum(std::span<double> partial) const = 0;
   /// The largest of every process's `local`.
   virtual double max(double local) const = 0;
+
+  /// sum() value by value: sum_each(a, b) replaces a and b by their totals.
+  template <class... T>
+  void sum_each(T&... values) const {
+    double v[] = {static_cast<double>(values)...};
+    sum(v);
+    std::size_t k = 0;
+    ((values = static_cast<T>(v[k++])), ...);
+  }
 };
 
-/// The serial body: a whole-grid HalfSpace's normal block (periodic or free).
-class HalfSpaceNormal final : public NormalOperator {
+/// The scale of a surface held in slabs, the same on every process: its rms
+/// height about the mean (1 for a flat one) and its highest point.
+struct SurfaceScale {
+  double h_rms = 1.0, h_max = 0.0;
+};
+/// InputError naming `solver` ("normal contact") if any point is NaN or infinite.
+SurfaceScale surface_scale(const NormalOperator& body, const RealField& h, std::string_view solver);
+
+/// A whole-grid HalfSpace as the normal part of an operator `Base`
+/// (NormalOperator or one deriving from it): one process, sums unchanged.
+template <class Base>
+class WholeGridBody : public Base {
  public:
-  HalfSpaceNormal(const Grid2D& grid, double e_star, Boundary boundary)
-      : body_(HalfSpace::normal(grid, e_star, boundary)), work_(body_.workspace()) {}
+  explicit WholeGridBody(HalfSpace body) : body_(std::move(body)), work_(body_.workspace()) {}
   const HalfSpace& half_space() const { return body_; }
 
   const Grid2D& grid() const override { return body_.grid(); }
@@ -60,9 +80,16 @@ class HalfSpaceNormal final : public NormalOperator {
   void sum(std::span<double>) const override {}
   double max(double local) const override { return local; }
 
- private:
+ protected:
   HalfSpace body_;
   HalfSpace::Workspace work_;
+};
+
+/// The serial body: a whole-grid HalfSpace's normal block (periodic or free).
+class HalfSpaceNormal final : public WholeGridBody<NormalOperator> {
+ public:
+  HalfSpaceNormal(const Grid2D& grid, double e_star, Boundary boundary)
+      : WholeGridBody(HalfSpace::normal(grid, e_star, boundary)) {}
 };
 
 }  // namespace wearscale::bem

@@ -22,33 +22,15 @@ class TractionOperator : public NormalOperator {
 };
 
 /// The serial body: a whole-grid periodic HalfSpace with every block.
-class HalfSpaceTraction final : public TractionOperator {
+class HalfSpaceTraction final : public WholeGridBody<TractionOperator> {
  public:
   HalfSpaceTraction(const Grid2D& grid, double young, double poisson)
-      : body_(grid, young, poisson, Boundary::Periodic, Response::Full), work_(body_.workspace()) {}
-  const HalfSpace& half_space() const { return body_; }
+      : WholeGridBody(HalfSpace(grid, young, poisson, Boundary::Periodic, Response::Full)) {}
 
-  const Grid2D& grid() const override { return body_.grid(); }
-  std::size_t first_row() const override { return 0; }
-  const Grid2D& local_grid() const override { return body_.grid(); }
-  Boundary boundary() const override { return body_.boundary(); }
   double young() const override { return body_.young(); }
   double poisson() const override { return body_.poisson(); }
-  void displacement(const RealField& p, RealField& u, double scale) override {
-    body_.normal_displacement(p, u, work_, scale);
-  }
-  void stiffness(const RealField& g, RealField& z) override { body_.normal_stiffness(g, z, work_); }
-  double form(const RealField& t) override { return body_.normal_form(t, work_); }
-  double self_compliance() const override { return body_.self_compliance(); }
-  double stiffness_diagonal() const override { return body_.normal_stiffness_diagonal(); }
   void vector_displacement(const VectorField& p, VectorField& u) override { body_.displacement(p, u, work_); }
   HalfSpace::BlockForm block_form(const VectorField& t) override { return body_.form(t, work_); }
-  void sum(std::span<double>) const override {}
-  double max(double local) const override { return local; }
-
- private:
-  HalfSpace body_;
-  HalfSpace::Workspace work_;
 };
 
 }  // namespace wearscale::bem
