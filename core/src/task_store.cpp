@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <utility>
 #include <sstream>
 
 #include "wearscale/core/atomic_file.hpp"
@@ -87,6 +88,14 @@ void TaskStore::keep(const std::string& identity, const TaskResult& result) cons
                                     result.threads, result.seconds, sha256_hex(result.text));
   content += result.text;
   write_file_atomically(file_of(identity, ".task"), content, Commit::Now);
+}
+
+void TaskStore::keep(const std::string& identity, std::string text, double seconds) const {
+  TaskResult r;
+  r.status = TaskResult::Status::Done;
+  r.text = std::move(text);
+  r.seconds = seconds;
+  keep(identity, r);
 }
 
 void TaskStore::discard() const {

@@ -439,12 +439,7 @@ class NanoDem final : public Scale {
         bool fresh = false;
         claim.mine->set_value(compute(specs[k], keys[k], pair, ctx, fresh));
         computed[k] = fresh ? 1 : 0;
-        if (task_store != nullptr && fresh) {
-          mpi::TaskResult r;
-          r.status = mpi::TaskResult::Status::Done;
-          r.text = to_message(claim.result.get());
-          task_store->keep(identity, r);
-        }
+        if (task_store != nullptr && fresh) task_store->keep(identity, to_message(claim.result.get()));
       } catch (...) {
         JunctionRuns::instance().forget(keys[k]);
         claim.mine->set_exception(std::current_exception());
@@ -473,12 +468,7 @@ class NanoDem final : public Scale {
       if (!results[k]) continue;
       from_cache[k] = 1;
       const std::string identity = mpi::described_identity(kJunctionTask, descriptions.back());
-      if (task_store != nullptr && !task_store->find(identity)) {
-        mpi::TaskResult r;
-        r.status = mpi::TaskResult::Status::Done;
-        r.text = to_message(*results[k]);
-        task_store->keep(identity, r);
-      }
+      if (task_store != nullptr && !task_store->find(identity)) task_store->keep(identity, to_message(*results[k]));
     }
     mpi::FarmOptions options;
     options.label = "nano/dem " + pair + " junctions";

@@ -56,6 +56,8 @@ class TaskStore {
   std::optional<TaskResult> find(const std::string& identity) const;
   /// Keeps a finished task's result (Done only; others are run again).
   void keep(const std::string& identity, const TaskResult& result) const;
+  /// Keeps the result `text` of a task finished here, outside the farm (rank 0, one thread).
+  void keep(const std::string& identity, std::string text, double seconds = 0.0) const;
   /// Where the task with this identity and name ("seed 3") writes its log:
   /// logs/ beside tasks/, a file named after the task; it stays with the outputs.
   std::filesystem::path log_path(const std::string& identity, const std::string& name) const;
