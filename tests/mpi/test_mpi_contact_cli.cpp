@@ -97,6 +97,21 @@ void expect_same_files(const fs::path& serial, const fs::path& slab, const std::
   }
   EXPECT_EQ(slurp(serial / "clusters.csv").size(), slurp(slab / "clusters.csv").size());
 }
+
+// `wearscale args` serially (-q, into <name>_serial) and on `ranks` ranks (into
+// <name>_slab), both succeeding; the two summaries and the slab run's messages.
+struct SerialAndSlab {
+  nlohmann::json serial, slab;
+  std::string slab_err;
+};
+SerialAndSlab serial_and_slab(const std::string& args, int ranks, const std::string& name) {
+  const auto serial = run(0, args + " -q --out " + name + "_serial");
+  EXPECT_EQ(serial.status, 0) << serial.err;
+  const auto slab = run(ranks, args + " --out " + name + "_slab");
+  EXPECT_EQ(slab.status, 0) << slab.err;
+  if (serial.status != 0 || slab.status != 0) return {};
+  return {nlohmann::json::parse(serial.out), nlohmann::json::parse(slab.out), slab.err};
+}
 }  // namespace
 
 TEST(MpiContactCli, TwoAndThreeRanksGiveTheSerialSummaryAndFiles) {
@@ -117,25 +132,19 @@ TEST(MpiContactCli, TwoAndThreeRanksGiveTheSerialSummaryAndFiles) {
 TEST(MpiContactCli, TheCommandsFlagsCountUnderMpirunAsWithout) {
   // --pressure is the flag of contact.mean_pressure: half the case's load, under mpirun as without it.
   const std::string args = "contact " + rough_case + " --set contact.grid=128 --pressure 0.015 --json";
-  const auto serial = run(0, args + " -q --out serial_flag");
-  ASSERT_EQ(serial.status, 0) << serial.err;
-  const auto s = nlohmann::json::parse(serial.out);
-  const auto slab = run(2, args + " --out slab_flag");
-  ASSERT_EQ(slab.status, 0) << slab.err;
-  const auto p = nlohmann::json::parse(slab.out);
-  EXPECT_DOUBLE_EQ(p["parameters"]["contact"]["mean_pressure"].get<double>(), 0.015) << slab.out;
-  expect_same_results(s, p, 2);
+  const auto r = serial_and_slab(args, 2, "flag");
+  ASSERT_FALSE(r.slab.is_null());
+  EXPECT_DOUBLE_EQ(r.slab["parameters"]["contact"]["mean_pressure"].get<double>(), 0.015) << r.slab;
+  expect_same_results(r.serial, r.slab, 2);
 }
 
 TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   const std::string args = "contact " + rough_case +
                            " --set contact.grid=160 --set contact.sphere.radius=2 --set contact.rough.hprime_rms=0.2 "
                            "--set contact.mean_pressure=0.01 --json -q";
-  const auto serial = run(0, args + " --out sphere_serial");
-  ASSERT_EQ(serial.status, 0) << serial.err;
-  const auto slab = run(2, args + " --out sphere_slab");
-  ASSERT_EQ(slab.status, 0) << slab.err;
-  expect_same_results(nlohmann::json::parse(serial.out), nlohmann::json::parse(slab.out), 2);
+  const auto r = serial_and_slab(args, 2, "sphere");
+  ASSERT_FALSE(r.slab.is_null());
+  expect_same_results(r.serial, r.slab, 2);
   expect_same_files(work / "sphere_serial", work / "sphere_slab");
 }
 
@@ -151,15 +160,12 @@ TEST(MpiContactCli, TrescaFrictionOnTwoRanksGivesTheSerialSummaryAndFiles) {
   const std::string args = "contact " + frictional_case +
                            " --set contact.grid=64 --set contact.rough.k_l=8 --set contact.rough.k_r=8 "
                            "--set contact.rough.k_s=16 --json";
-  const auto serial = run(0, args + " -q --out tresca_serial");
-  ASSERT_EQ(serial.status, 0) << serial.err;
-  const auto slab = run(2, args + " --out tresca_slab");
-  ASSERT_EQ(slab.status, 0) << slab.err;
-  const auto s = nlohmann::json::parse(serial.out), p = nlohmann::json::parse(slab.out);
-  expect_same_results(s, p, 2);
-  EXPECT_EQ(s["results"]["bound_updates"], p["results"]["bound_updates"]);
-  EXPECT_EQ(s["results"]["crack_initiation_sites"], p["results"]["crack_initiation_sites"]);
-  EXPECT_EQ(count(slab.err, "contact: 64×64"), 1u) << slab.err;  // rank 0's line alone
+  const auto r = serial_and_slab(args, 2, "tresca");
+  ASSERT_FALSE(r.slab.is_null());
+  expect_same_results(r.serial, r.slab, 2);
+  EXPECT_EQ(r.serial["results"]["bound_updates"], r.slab["results"]["bound_updates"]);
+  EXPECT_EQ(r.serial["results"]["crack_initiation_sites"], r.slab["results"]["crack_initiation_sites"]);
+  EXPECT_EQ(count(r.slab_err, "contact: 64×64"), 1u) << r.slab_err;  // rank 0's line alone
   expect_same_files(work / "tresca_serial", work / "tresca_slab", frictional_datasets);
 }
 
@@ -168,14 +174,11 @@ TEST(MpiContactCli, CoulombFrictionOnThreeRanksGivesTheSerialSummaryAndFiles) {
                            " --set contact.grid=64 --set contact.rough.k_s=16 --set contact.friction=coulomb "
                            "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
                            "--set contact.tangential_pressure=0.006 --json -q";
-  const auto serial = run(0, args + " --out coulomb_serial");
-  ASSERT_EQ(serial.status, 0) << serial.err;
-  const auto slab = run(3, args + " --out coulomb_slab");
-  ASSERT_EQ(slab.status, 0) << slab.err;
-  const auto s = nlohmann::json::parse(serial.out), p = nlohmann::json::parse(slab.out);
-  expect_same_results(s, p, 3);
-  EXPECT_GT(s["results"]["stick_fraction"]["value"].get<double>(), 0.0);
-  EXPECT_GT(s["results"]["slip_fraction"]["value"].get<double>(), 0.0);
+  const auto r = serial_and_slab(args, 3, "coulomb");
+  ASSERT_FALSE(r.slab.is_null());
+  expect_same_results(r.serial, r.slab, 3);
+  EXPECT_GT(r.serial["results"]["stick_fraction"]["value"].get<double>(), 0.0);
+  EXPECT_GT(r.serial["results"]["slip_fraction"]["value"].get<double>(), 0.0);
   expect_same_files(work / "coulomb_serial", work / "coulomb_slab",
                     {"/fields/traction_x", "/fields/stick_slip", "/fields/slip_x", "/stress/surface/sigma_I"});
 }
