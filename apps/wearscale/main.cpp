@@ -149,6 +149,7 @@ int run(int argc, char** argv) {
       if (commands.count(sub) != 0) return commands.at(sub)();
     return exit_bad_input;
   } catch (const Interrupted& e) {
+    if (dynamic_cast<const mpi::JointInterruption*>(&e) != nullptr) every_rank_refused = true;  // all stopped alike
     log::error("{}", e.what());
     return exit_interrupted;
   } catch (const std::exception& e) {

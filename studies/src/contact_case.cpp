@@ -8,6 +8,7 @@
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/subsurface_stress.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/csv.hpp"
@@ -63,6 +64,7 @@ NormalCase read_normal_case(const Config& c, const Grid2D& g) {
     throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load, interference", "one load");
   n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
   n.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
+  n.options.stop = [] { return interrupt_requested(); };  // SIGINT/SIGTERM end a long solve within an iteration
   n.connectivity =
       c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
   n.boundary = contact_boundary(c);
@@ -159,6 +161,7 @@ FrictionalCase read_frictional_case(const Config& c, const Grid2D& g, const std:
                                       : c.number_or("tangential_pressure", 0.0, Range::any(), units::pressure);
   f.options.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1.0));
   f.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 20000, Range::at_least(1)));
+  f.options.stop = [] { return interrupt_requested(); };
   f.connectivity =
       c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
   f.crack = c.has("tensile_strength");

@@ -92,6 +92,16 @@ VectorField gathered(const VectorField& slab, const Grid2D& g) {
 
 // Coulomb or Tresca friction: the one FrictionalContact on a SlabHalfSpace of
 // the whole tensor; rank 0 gathers the fields and writes the serial study's files.
+// A slab solve stops on every rank at the same iteration (ContactOptions::stop).
+template <class Solve>
+auto together(Solve solve) {
+  try {
+    return solve();
+  } catch (const Interrupted& e) {
+    throw mpi::JointInterruption(e.what());
+  }
+}
+
 void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunContext* context) {
   const Grid2D& g = s.grid;
   const FrictionalCase& f = *s.friction;
@@ -104,7 +114,7 @@ void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunCon
   if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, body->fft()));
   if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
   FrictionalContact contact(std::move(body), h, f.law);
-  const FrictionalResult r = f.solve(contact, config.section("contact"));
+  const FrictionalResult r = together([&] { return f.solve(contact, config.section("contact")); });
   RealField whole_h = gathered(h, g);
   h = RealField();
   const VectorField traction = gathered(contact.traction(), g), u = gathered(contact.displacement(), g);
@@ -127,7 +137,7 @@ void run_slab_contact(const Config& config, const SlabCase& s, coupling::RunCont
   if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, fft));
   if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
   NormalContact contact(std::move(body), h, normal.e_star);
-  const ContactResult r = normal.solve(contact);
+  const ContactResult r = together([&] { return normal.solve(contact); });
 
   if (g.size() <= slab_gather_limit) {
     RealField whole_h = gathered(h, g);

@@ -304,6 +304,11 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
 // How to continue an interrupted run, added to the Interrupted message.
 [[noreturn]] void rethrow_interrupted(const Interrupted& e, const std::string& command,
                                       const std::filesystem::path& dir) {
+  std::error_code ec;
+  bool kept = false;  // anything but the folder's lock: a checkpoint, kept tasks, finished runs
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    kept = kept || entry.path().filename() != OutputLock::kFolderLockName;
+  if (!kept) throw Interrupted(fmt::format("{}; nothing was written (run it again to start afresh)", e.what()));
   throw Interrupted(fmt::format("{}; continue with: {} --resume {}", e.what(), command, dir.string()));
 }
 

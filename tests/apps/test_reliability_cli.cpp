@@ -470,3 +470,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"table_empty", with_table, {{"si.csv", ""}}, "empty strength table"},
         BadFile{"table_named_in_case", with_table, {{"si.csv", "garbage\n"}}, "scale.molecular.tables.Si"}),
     [](const auto& p) { return p.param.name; });
+
+TEST(Stop, SigtermEndsALongFrictionalContactSolveWithinAnIterationAndWritesNothing) {
+  // A contact solve of minutes hears SIGTERM at its next iteration (it used to
+  // finish the solve first): status 130, the iteration named, no folder left.
+  const auto dir = work / "sigterm_contact";
+  fs::create_directories(dir);
+  const std::string args = "contact '" WEARSCALE_SOURCE_DIR "/cases/frictional_contact.toml' --set contact.grid=512 --set contact.rough.k_s=128 "
+                           "-v --out stopped";
+  int status = 0;
+  ASSERT_TRUE(stop_when(args, dir, SIGTERM,
+                        [&] { return slurp(dir / "cli.stderr").find("iteration 10,") != std::string::npos; }, status));
+  ASSERT_TRUE(WIFEXITED(status)) << "SIGTERM must not kill the process outright";
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
+  const std::string err = slurp(dir / "cli.stderr");
+  EXPECT_THAT(err, HasSubstr("frictional-contact (Algorithm 1): stopped at iteration"));
+  EXPECT_THAT(err, HasSubstr("nothing was written")) << "no --resume hint for a folder that does not exist";
+  EXPECT_FALSE(fs::exists(dir / "stopped"));
+  fs::remove_all(dir);
+}

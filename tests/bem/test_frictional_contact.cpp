@@ -260,3 +260,31 @@ TEST(FrictionalContact, RefusesNegativeFrictionAndGrossSliding) {
   EXPECT_THAT(input_error_of([&] { tresca.solve({0.01, 1.05 * capacity, 0.0}); }), HasSubstr("σ_m,T A/A0"));
   EXPECT_THROW(FrictionalContact(h, 1.0, 0.6, FrictionLaw::coulomb(0.5)), InputError);
 }
+
+TEST(FrictionalContact, AStopAskedForEndsTheSolveAtThatIterationAndOneNeverAskedChangesNothing) {
+  const Mindlin m;
+  const RealField h = paraboloid(m.grid, m.radius, m.c);
+  const MeanTraction load{m.p_n, 0.5 * m.mu * m.p_n, 0.0};
+  FrictionalContact plain(h, m.young, m.poisson, FrictionLaw::coulomb(m.mu)),
+      asked(h, m.young, m.poisson, FrictionLaw::coulomb(m.mu)), stopped(h, m.young, m.poisson, FrictionLaw::coulomb(m.mu));
+  const auto r = plain.solve(load);
+  int questions = 0;
+  FrictionalOptions no;
+  no.stop = [&questions] { return ++questions < 0; };
+  const auto s = asked.solve(load, no);
+  EXPECT_GT(questions, s.iterations);  // at least once an iteration
+  EXPECT_EQ(r.iterations, s.iterations);
+  EXPECT_EQ(r.error, s.error);
+  for (std::size_t k = 0; k < m.grid.size(); ++k) ASSERT_EQ(plain.traction().x[k], asked.traction().x[k]) << k;
+
+  FrictionalOptions yes;
+  questions = 0;
+  yes.stop = [&questions] { return ++questions == 5; };
+  try {
+    stopped.solve(load, yes);
+    FAIL() << "the stop was not heard";
+  } catch (const Interrupted& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("stopped at iteration"));
+  }
+  EXPECT_EQ(questions, 5);
+}

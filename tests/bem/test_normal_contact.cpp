@@ -296,3 +296,30 @@ TEST(NormalContact, AFreeWindowTooSmallForItsContactIsRefused) {
   NormalContact inside(paraboloid(g, 1.0), 1.0, Boundary::Free);  // a tenth of the load: a = 0.46 a fits
   EXPECT_NO_THROW(inside.solve_mean_pressure(0.1 * hertz.load / g.area()));
 }
+
+TEST(NormalContact, AStopAskedForEndsTheSolveAtThatIterationAndOneNeverAskedChangesNothing) {
+  // ContactOptions::stop is asked once an iteration (SIGTERM on a long solve);
+  // a yes ends the solve with Interrupted there, a no leaves every bit alone.
+  const Grid2D g = Grid2D::square(64, 1.0);
+  NormalContact plain(paraboloid(g, 1.0), 1.0), asked(paraboloid(g, 1.0), 1.0), stopped(paraboloid(g, 1.0), 1.0);
+  const ContactResult r = plain.solve_mean_pressure(1e-3, {1e-10, 1000});
+  int questions = 0;
+  ContactOptions no{1e-10, 1000};
+  no.stop = [&questions] { return ++questions < 0; };
+  const ContactResult s = asked.solve_mean_pressure(1e-3, no);
+  EXPECT_EQ(questions, s.iterations + 1);  // once an iteration, the converged one too
+  EXPECT_EQ(r.iterations, s.iterations);
+  EXPECT_EQ(r.error, s.error);
+  for (std::size_t k = 0; k < g.size(); ++k) ASSERT_EQ(plain.pressure()[k], asked.pressure()[k]) << k;
+
+  ContactOptions yes{1e-10, 1000};
+  questions = 0;
+  yes.stop = [&questions] { return ++questions == 3; };
+  try {
+    stopped.solve_mean_pressure(1e-3, yes);
+    FAIL() << "the stop was not heard";
+  } catch (const Interrupted& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("stopped at iteration 2"));
+  }
+  EXPECT_EQ(questions, 3);
+}

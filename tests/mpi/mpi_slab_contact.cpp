@@ -16,7 +16,10 @@
 //   mpi_slab_contact coulomb   a Coulomb (tresca: a Tresca) frictional solve
 //                              on slabs takes the serial solve's iterations and
 //                              gives its tractions, stick/slip map and figures
-//                              to 1e-12 relative (rank 0 solves the serial case).
+//                              to 1e-12 relative (rank 0 solves the serial case);
+//   mpi_slab_contact stop      a stop asked on the last rank alone ends the
+//                              normal and the frictional solve on every rank at
+//                              the same iteration (Interrupted): none waits.
 // Every rank also computes the serial answer (the grids are small) and compares its rows
 // (but for the frictional solves: there rank 0 alone does).
 #include <algorithm>
@@ -32,6 +35,7 @@
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/bem/surface_generator.hpp"
+#include "wearscale/core/errors.hpp"
 #include "wearscale/core/mpi.hpp"
 
 namespace mpi = wearscale::mpi;
@@ -291,6 +295,53 @@ void test_friction(std::size_t n, FrictionLaw law, double tangential_share) {
               at.c_str(), s.iterations, r.iterations, s.bound_updates, s.stick_fraction, s.slip_fraction, dz, dx, dy,
               relative(s.interference, r.interference), relative(s.elastic_energy, r.elastic_energy));
 }
+
+// Solves with a stop that the last rank alone asks for at its 4th iteration:
+// every rank must end with Interrupted after asking 4 times (the answers go
+// through the iteration's own sums), not wait for the others.
+template <class Solve>
+void expect_stop_everywhere(const std::string& what, Solve solve) {
+  int asked = 0;
+  const auto stop = [&asked] { return ++asked >= 4 && mpi::rank() == mpi::size() - 1; };
+  bool interrupted = false;
+  try {
+    solve(stop);
+  } catch (const Interrupted&) {
+    interrupted = true;
+  }
+  check(interrupted, what + ": the solve did not stop");
+  check(mpi::max(static_cast<double>(asked)) == 4.0 && -mpi::max(-static_cast<double>(asked)) == 4.0,
+        what + ": the ranks stopped at different iterations (asked " + std::to_string(asked) + " times here)");
+}
+
+void test_stop(std::size_t n) {
+  const Grid2D g = Grid2D::square(n, 1.0);
+  RoughSurfaceSpec spec;
+  spec.grid = g;
+  spec.hurst = 0.8;
+  spec.k_l = spec.k_r = 4.0;
+  spec.k_s = static_cast<double>(n / 4);
+  spec.seed = 1;
+  const RealField h = generate_surface(spec, RoughnessMeasure::HPrimeRms, 1.0);
+  expect_stop_everywhere("normal contact", [&](auto stop) {
+    auto body = std::make_unique<SlabHalfSpace>(g, 1.0, PlanRigor::Estimate);
+    const std::size_t first = body->first_row();
+    const Grid2D lg = body->local_grid();
+    NormalContact slab(std::move(body), rows_of(h, lg, first), 1.0);
+    ContactOptions options;
+    options.stop = stop;
+    slab.solve_mean_pressure(0.03, options);
+  });
+  expect_stop_everywhere("frictional contact", [&](auto stop) {
+    auto body = std::make_unique<SlabHalfSpace>(g, 1.0, 0.3, PlanRigor::Estimate);
+    const std::size_t first = body->first_row();
+    const Grid2D lg = body->local_grid();
+    FrictionalContact slab(std::move(body), rows_of(h, lg, first), FrictionLaw::coulomb(0.5));
+    FrictionalOptions options;
+    options.stop = stop;
+    slab.solve(MeanTraction{0.03, 0.005, 0.0}, options);
+  });
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -315,8 +366,10 @@ int main(int argc, char** argv) {
     test_friction(64, FrictionLaw::coulomb(0.5), 0.5);
   } else if (mode == "tresca") {
     test_friction(64, FrictionLaw::tresca(2e-3), 0.3);
+  } else if (mode == "stop") {
+    test_stop(64);
   } else {
-    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca\n");
+    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | stop\n");
     return 2;
   }
   const long long failed = mpi::sum(static_cast<long long>(failures));

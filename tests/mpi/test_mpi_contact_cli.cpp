@@ -6,9 +6,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -220,4 +226,39 @@ TEST(MpiContactCli, ASolverFailureEndsEveryRankOnceWithStatus1) {
   EXPECT_EQ(error_lines(r.err), 1u) << r.err;  // message lines start with "error: "
   EXPECT_THAT(r.err, HasSubstr("no convergence"));
   EXPECT_FALSE(fs::exists(work / "failed" / "summary.json"));
+}
+
+TEST(MpiContactCli, SigtermToMpirunStopsAFrictionalSlabSolveOnEveryRankAtOnce) {
+  // The ranks sum their answers to "stop?" with each iteration's sums, so all
+  // stop at the same iteration: status 130 from every rank, said once by rank
+  // 0, no rank aborting the others, nothing written. (mpirun, signalled
+  // itself, ends with its own status 1; signalled ranks give the job 130.)
+  const std::string cmd = "cd '" + work.string() + "' && exec env CI=true OMP_NUM_THREADS=1 " WEARSCALE_MPIRUN
+                          " -np 2 '" WEARSCALE_CLI "' contact " + frictional_case +
+                          " --set contact.grid=512 --set contact.rough.k_s=128 -v --out stopped >stopped.out "
+                          "2>stopped.err";
+  fs::create_directories(work);
+  const pid_t job = ::fork();
+  if (job == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ASSERT_GT(job, 0);
+  bool sent = false, ended = false;
+  int status = 0;
+  for (int wait = 0; wait < 2400 && !sent && !ended; ++wait) {  // once the solve is under way
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (slurp(work / "stopped.err").find("iteration 10,") != std::string::npos) sent = ::kill(job, SIGTERM) == 0;
+    ended = ::waitpid(job, &status, WNOHANG) == job;
+  }
+  if (!ended) ::waitpid(job, &status, 0);
+  ASSERT_TRUE(sent) << slurp(work / "stopped.err");
+  const std::string err = slurp(work / "stopped.err");
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_NE(WEXITSTATUS(status), 0) << err;
+  EXPECT_EQ(count(err, "stopped at iteration"), 1u) << err;
+  EXPECT_EQ(error_lines(err), 1u) << err;
+  EXPECT_THAT(err, ::testing::Not(HasSubstr("MPI_ABORT"))) << err;
+  EXPECT_FALSE(fs::exists(work / "stopped" / "summary.json"));
+  EXPECT_FALSE(fs::exists(work / "stopped" / "contact.h5"));
 }

@@ -9,6 +9,7 @@
 
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
 
 namespace wearscale::bem {
 
@@ -266,7 +267,7 @@ void FrictionalContact::warm_start(const MeanTraction& load) {
 // Pass 1: gap shifts. Normal: the mean gap on the contact (Polonsky–Keer);
 // tangential: the mean displacement of the stick zone I_s, the rigid
 // tangential displacement δ_T (A.13). Without a stick zone, the contact's.
-FrictionalContact::GapShifts FrictionalContact::measure_shifts(int iteration) const {
+FrictionalContact::GapShifts FrictionalContact::measure_shifts(int iteration, bool stop) const {
   const std::size_t n = h_.size();
   const double *px = p_.x.data(), *py = p_.y.data(), *pz = p_.z.data();
   const double *ux = u_.x.data(), *uy = u_.y.data(), *uz = u_.z.data();
@@ -286,7 +287,9 @@ FrictionalContact::GapShifts FrictionalContact::measure_shifts(int iteration) co
       sum_sy += uy[k];
     }
   }
-  sum(n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p);
+  double stops = stop ? 1.0 : 0.0;  // any process asked: every one stops here
+  sum(n_c, n_s, sum_n, sum_sx, sum_sy, sum_cx, sum_cy, sum_p, stops);
+  if (stops > 0.0) throw Interrupted(fmt::format("{}: stopped at iteration {} (a stop was requested)", kSolver, iteration));
   if (n_c == 0.0)
     throw NumericalError(kSolver, iteration, "contact area", "the contact vanished (no point with p_N > 0)");
   GapShifts s;
@@ -668,7 +671,7 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
   Iterate state;
   for (int it = 0; it < opt.max_iterations; ++it) {
     body_->vector_displacement(p_, u_);  // u = F * p   (Algorithm 1, line 5)
-    const GapShifts shifts = measure_shifts(it);
+    const GapShifts shifts = measure_shifts(it, opt.stop && opt.stop());
     if (shifts.stick_zone_lost) {
       restart_tangential(load, it, state);
       continue;
@@ -679,6 +682,8 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
     const Residual res = gradient(shifts);
     if (!std::isfinite(res.error)) throw NumericalError(kSolver, it, "cost (A.14)", "not finite (NaN in u or p)");
     if (it == 0) state.first_error = res.error;
+    if (it % 10 == 0)  // long solves: -v
+      log::debug("{}: iteration {}, ε = {:.3g}, {} bound updates", kSolver, it, res.error, bound_updates_);
     history_.push_back(res.error);
     if (history_.size() > kHistory) history_.erase(history_.begin());
     const Subproblem sub = check_subproblem(res, load, it, state);

@@ -74,7 +74,7 @@ void NormalContact::set_warm_start(std::span<const double> pressure, double gap_
 // Pass 1 over the contact S = {p > 0}: mean gap ḡ, Σ_S (g − ḡ)² (by sums
 // shifted by the last ḡ, which keeps them free of cancellation), and the mean
 // of the previous direction on the new S.
-NormalContact::ContactGap NormalContact::measure_gap(int iteration) const {
+NormalContact::ContactGap NormalContact::measure_gap(int iteration, bool stop) const {
   const std::size_t n = h_.size();
   const double *p = p_.data(), *u = u_.data(), *t = t_.data(), *h = h_.data();
   const double shift = gap_shift_;
@@ -88,7 +88,9 @@ NormalContact::ContactGap NormalContact::measure_gap(int iteration) const {
     sum2 += d * d;
     t_old_sum += t[k] * in;
   }
-  sum(n_s, sum1, sum2, t_old_sum);
+  double stops = stop ? 1.0 : 0.0;  // any process asked: every one stops here
+  sum(n_s, sum1, sum2, t_old_sum, stops);
+  if (stops > 0.0) throw Interrupted(fmt::format("{}: stopped at iteration {} (a stop was requested)", kSolver, iteration));
   if (n_s == 0.0) throw NumericalError(kSolver, iteration, "contact area", "the contact vanished (no point with p > 0)");
   ContactGap gap;
   gap.points = n_s;
@@ -271,7 +273,7 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   for (int it = 0; it < opt.max_iterations; ++it) {
     body_->displacement(p_, u_, state.alpha);  // u = K (α p)
     if (added_ != nullptr) added_->add(p_, state.alpha, u_);  // + A (α p)
-    const ContactGap gap = measure_gap(it);
+    const ContactGap gap = measure_gap(it, opt.stop && opt.stop());
     gap_shift_ = gap.mean;  // the last mean gap: carried across solves (warm start)
     Descent descent;
     if (preconditioned) {

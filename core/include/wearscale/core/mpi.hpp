@@ -92,6 +92,14 @@ class JointRefusal : public InputError {
   bool speaks_;
 };
 
+/// A stop every rank reached at the same point of the same collective work
+/// (a slab solve sums the ranks' answers to "stop?" every iteration): the job
+/// ends with the stop's status on every rank, no rank aborts the others.
+class JointInterruption : public Interrupted {
+ public:
+  explicit JointInterruption(const std::string& message) : Interrupted(message) {}
+};
+
 /// Runs `checks` on every rank (collective) and agrees on the outcome: when an
 /// InputError is thrown on any rank, every rank throws a JointRefusal (the
 /// message of the lowest rank that refused, spoken there only). Other

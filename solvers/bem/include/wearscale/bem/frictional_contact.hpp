@@ -44,6 +44,7 @@
 // Convergence is measured by the cost (A.14), see FrictionalResult::error.
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -64,6 +65,9 @@ struct MeanTraction {
 struct FrictionalOptions {
   double tolerance = 1e-10;   ///< on FrictionalResult::error
   int max_iterations = 20000;
+  /// Asked once an iteration (if set): true ends the solve with Interrupted,
+  /// on every process at the same iteration (as ContactOptions::stop).
+  std::function<bool()> stop = nullptr;
 };
 
 /// What a surface point does at the solution (the stick/slip map).
@@ -165,7 +169,7 @@ class FrictionalContact {
 
   void check_load(const MeanTraction& load) const;
   void warm_start(const MeanTraction& load);
-  GapShifts measure_shifts(int iteration) const;
+  GapShifts measure_shifts(int iteration, bool stop) const;
   void restart_tangential(const MeanTraction& load, int iteration, Iterate& state);
   Residual gradient(const GapShifts& shifts);
   Subproblem check_subproblem(const Residual& residual, const MeanTraction& load, int iteration, Iterate& state);

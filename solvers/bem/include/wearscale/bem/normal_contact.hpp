@@ -18,6 +18,7 @@
 // with g shifted so that its mean over the contact is zero and h_rms the RMS
 // of h about its mean (1 for a flat surface), must fall below `tolerance`
 // while no point outside the contact penetrates (g < 0 where p = 0).
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -52,6 +53,10 @@ struct ContactOptions {
   double tolerance = 1e-12;   ///< on ε above
   int max_iterations = 10000;
   ContactMethod method = ContactMethod::PreconditionedCG;
+  /// Asked once an iteration (if set): true ends the solve with Interrupted,
+  /// on every process at the same iteration (the answers are summed with the
+  /// iteration's own sums), e.g. [] { return interrupt_requested(); }.
+  std::function<bool()> stop = nullptr;
 };
 
 struct ContactResult {
@@ -135,7 +140,7 @@ class NormalContact {
     double residual_old = 0.0; // Σ_S r z of the last iteration (z = r unpreconditioned: Σ_S (g − ḡ)²)
     bool conjugate = false;    // δ of Polonsky–Keer: false restarts steepest descent
   };
-  ContactGap measure_gap(int iteration) const;
+  ContactGap measure_gap(int iteration, bool stop) const;
   // Polonsky–Keer: the direction straight from the gap (and the error), in one pass.
   Descent search_direction(const ContactGap& gap, double beta);
   // Preconditioned: the residual r = g − ḡ on S (into gap_) and the error, then,
