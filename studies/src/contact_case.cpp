@@ -13,11 +13,22 @@
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::studies {
 
 using namespace bem;
+
+RealField read_surface_file(const Config& c) {
+  TopographyOptions read;
+  read.dataset = c.string_or("dataset", default_surface_dataset);
+  if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
+  read.missing = missing_points_from(
+      c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
+      c.full_key(MissingPointsChoice::key));
+  return read_measured_topography(c.path("surface"), read).heights;
+}
 
 RoughCase read_rough_case(const Config& r, const Grid2D& g) {
   RoughCase rough;

@@ -23,6 +23,10 @@ struct RoughCase {
 };
 RoughCase read_rough_case(const Config& rough, const Grid2D& g);
 
+/// The heights of contact.surface (a measured file: any format the io layer
+/// reads; contact.dataset, contact.size and the missing-points choice apply).
+RealField read_surface_file(const Config& contact);
+
 /// [contact] boundary: "periodic" (a cell of a periodic surface) or "free" (a window on an isolated body).
 bem::Boundary contact_boundary(const Config& contact);
 /// E* from e_star, or from young and poisson (rigid surface on an elastic flat, 1.12).

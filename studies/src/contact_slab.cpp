@@ -1,5 +1,7 @@
 #include "contact_slab.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "wearscale/bem/contact_clusters.hpp"
@@ -38,17 +40,24 @@ SlabCase read_slab_case(const Config& config) {
   const Config c = config.section("contact");
   const int ranks = mpi::size();
   const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
-  if (c.has("surface"))
-    throw c.error("surface", fmt::format("a measured surface is not read in slabs over MPI ranks ({} ranks started)", ranks),
-                  "[contact.rough] and/or [contact.sphere] under mpirun; a file without mpirun");
   SlabCase s;
-  const long n = c.integer("grid", Range::closed(8, 16384));
-  s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
+  if (c.has("surface")) {  // every rank reads the file alike (a refusal is every rank's)
+    s.measured = read_surface_file(c);
+    s.grid = s.measured.grid();
+    if (s.grid.nx < static_cast<std::size_t>(ranks))
+      throw c.error("surface",
+                    fmt::format("'{}' has {} rows, fewer than the {} ranks that would each hold a slab of them",
+                                c.path("surface").string(), s.grid.nx, ranks),
+                    fmt::format("a surface of at least {} rows, or fewer ranks", ranks));
+  } else {
+    const long n = c.integer("grid", Range::closed(8, 16384));
+    s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
+  }
   if (c.has("rough")) s.rough = read_rough_case(c.section("rough"), s.grid);
   if (c.has("sphere")) s.sphere_radius = c.number("sphere.radius", Range::positive(), units::length);
-  if (!c.has("rough") && !c.has("sphere"))
-    throw c.error("surface", "no surface: give a [contact.rough] or a [contact.sphere] table (under mpirun)",
-                  "rough and/or sphere");
+  if (!c.has("surface") && !c.has("rough") && !c.has("sphere"))
+    throw c.error("surface", "no surface: give surface = FILE, a [contact.rough] or a [contact.sphere] table",
+                  "a file, rough and/or sphere");
   if (friction == "none")
     s.normal = read_normal_case(c, s.grid);
   else
@@ -60,11 +69,14 @@ SlabCase read_slab_case(const Config& config) {
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
   const double points = static_cast<double>(s.grid.size());
   const bool gather = s.grid.size() <= slab_gather_limit;
+  const bool file = s.measured.size() > 0;
+  const char* size_key = file ? "surface" : "grid";  // what sets the grid
+  const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
   if (s.friction && !gather)
-    throw c.error("grid",
+    throw c.error(size_key,
                   fmt::format("a frictional contact of {} × {} points is more than rank 0 gathers ({} points): its "
                               "stresses and files are computed from the whole fields",
-                              n, n, slab_gather_limit),
+                              s.grid.nx, s.grid.ny, slab_gather_limit),
                   fmt::format("at most {} × {} points with friction under mpirun", 4096, 4096));
   const double share = s.friction ? kFrictionalBytesPerPoint : kBytesPerPoint;
   const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
@@ -75,7 +87,8 @@ SlabCase read_slab_case(const Config& config) {
   // ended by the system and mpirun ends the others: no wrong answer, no hang).
   require_memory(share * points / ranks + (mpi::is_root() && gather ? gathered_share * points : 0.0),
                  fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks (rank {}'s share)",
-                             c.where("grid"), c.full_key("grid"), n, n, n, ranks, mpi::rank()),
+                             c.where(size_key), c.full_key(size_key), size_value, s.grid.nx, s.grid.ny, ranks,
+                             mpi::rank()),
                  "give a smaller grid or more ranks");
   config.reject_unknown_keys();  // every check before any work
   return s;
@@ -102,7 +115,17 @@ auto together(Solve solve) {
   }
 }
 
-void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunContext* context) {
+// This rank's rows of the measured surface (zero heights without one); the whole surface is freed.
+RealField own_rows(SlabCase& s, const Grid2D& local, std::size_t first) {
+  RealField h(local);
+  if (s.measured.size() == 0) return h;
+  const auto whole = s.measured.values();
+  std::copy_n(whole.begin() + static_cast<std::ptrdiff_t>(first * local.ny), h.size(), h.values().begin());
+  s.measured = RealField();
+  return h;
+}
+
+void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* context) {
   const Grid2D& g = s.grid;
   const FrictionalCase& f = *s.friction;
   log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction, periodic boundary, in slabs over {} MPI ranks",
@@ -110,7 +133,7 @@ void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunCon
   auto body = std::make_unique<SlabHalfSpace>(g, f.young, f.poisson,
                                               s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
   const std::size_t first = body->first_row(), rows = body->rows();
-  RealField h(body->local_grid());  // 0 + rough + sphere, as the serial study adds them
+  RealField h = own_rows(s, body->local_grid(), first);  // file + rough + sphere, as the serial study adds them
   if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, body->fft()));
   if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
   FrictionalContact contact(std::move(body), h, f.law);
@@ -124,7 +147,7 @@ void run_slab_friction(const Config& config, const SlabCase& s, coupling::RunCon
 }
 }  // namespace
 
-void run_slab_contact(const Config& config, const SlabCase& s, coupling::RunContext* context) {
+void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* context) {
   if (s.friction) return run_slab_friction(config, s, context);
   const Grid2D& g = s.grid;
   const NormalCase& normal = s.normal;
@@ -133,7 +156,7 @@ void run_slab_contact(const Config& config, const SlabCase& s, coupling::RunCont
   auto body = std::make_unique<SlabHalfSpace>(g, normal.e_star, s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
   const std::size_t first = body->first_row(), rows = body->rows();
   SlabFFT& fft = body->fft();  // owned by the body, which the contact keeps
-  RealField h(body->local_grid());  // 0 + rough + sphere, as the serial study adds them
+  RealField h = own_rows(s, body->local_grid(), first);  // file + rough + sphere, as the serial study adds them
   if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, fft));
   if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
   NormalContact contact(std::move(body), h, normal.e_star);

@@ -8,12 +8,13 @@
 // files when the grid has at most slab_gather_limit points; above it reports
 // the headline figures only (no contact.h5, no micro-contacts) and says so.
 //
-// Distributed: periodic contact of a generated rough surface and/or a sphere,
+// Distributed: periodic contact of a measured surface (contact.surface: every
+// rank reads the file and keeps its rows), a generated rough surface and/or a sphere,
 // frictionless (NormalContact) or with Coulomb or Tresca friction
 // (FrictionalContact on a SlabHalfSpace holding the whole tensor; rank 0
 // computes the surface and subsurface stresses from the gathered tractions).
 // Refused (InputError naming the key, the same on every rank, before any
-// work): contact.boundary = "free", contact.surface (a measured file), and a
+// work): contact.boundary = "free", a file of fewer rows than ranks, and a
 // frictional grid above slab_gather_limit (contact.grid: its stresses and
 // files need the whole fields on rank 0).
 #include <cstddef>
@@ -31,6 +32,7 @@ struct SlabCase {
   Grid2D grid;
   NormalCase normal;                     ///< frictionless (friction = "none")
   std::optional<FrictionalCase> friction;  ///< friction = "coulomb" | "tresca"
+  RealField measured;  ///< contact.surface's heights, whole (empty: none); the slabs keep their rows
   std::optional<RoughCase> rough;
   double sphere_radius = 0.0;  ///< 0: no sphere
   bool measured_plans = true;  ///< FFTW MEASURE plans ([run] fft_planning, and from 512²)
@@ -41,7 +43,8 @@ struct SlabCase {
 SlabCase read_slab_case(const Config& config);
 
 /// Solves the case on every rank (collective). Rank 0 passes its context and
-/// writes; the other ranks pass nullptr and write nothing.
-void run_slab_contact(const Config& config, const SlabCase& slab, coupling::RunContext* context);
+/// writes; the other ranks pass nullptr and write nothing. A measured surface
+/// is freed once each rank has taken its rows.
+void run_slab_contact(const Config& config, SlabCase slab, coupling::RunContext* context);
 
 }  // namespace wearscale::studies

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -56,13 +57,7 @@ double bytes_per_point(const std::string& friction) { return friction == "none" 
 RealField build_surface(const Config& c, const std::string& friction) {
   RealField h;
   if (c.has("surface")) {
-    TopographyOptions read;
-    read.dataset = c.string_or("dataset", default_surface_dataset);
-    if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
-    read.missing = missing_points_from(
-        c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
-        c.full_key(MissingPointsChoice::key));
-    h = read_measured_topography(c.path("surface"), read).heights;
+    h = read_surface_file(c);
   } else {
     const long n = c.integer("grid", Range::closed(8, 16384));
     require_memory(bytes_per_point(friction) * static_cast<double>(n) * static_cast<double>(n),
@@ -130,9 +125,9 @@ class ContactStudy final : public Study {
     return {};
   }
   bool distributed() const override { return true; }
-  void run_other_rank(const Config& config) override { run_slab_contact(config, slab_.value(), nullptr); }
+  void run_other_rank(const Config& config) override { run_slab_contact(config, std::move(slab_.value()), nullptr); }
   void run(const Config& config, RunContext& context) override {
-    if (slab_) return run_slab_contact(config, *slab_, &context);
+    if (slab_) return run_slab_contact(config, std::move(*slab_), &context);
     const Config c = config.section("contact");
     const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
     const RealField h = build_surface(c, friction);

@@ -154,6 +154,37 @@ TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   expect_same_files(work / "sphere_serial", work / "sphere_slab");
 }
 
+TEST(MpiContactCli, AMeasuredSurfaceFileIsReadInSlabsAndGivesTheSerialSummaryAndFiles) {
+  // A rectangular surface of odd rows (99 × 64 points over 1.5 × 1 mm), read
+  // from its HDF5 file: every rank keeps its rows; P = 2 and 3 against serial.
+  ASSERT_EQ(run(0, "surface generate --nx 99 --ny 64 --size '1.5 mm,1 mm' --hurst 0.8 --kl 2 --kr 4 --ks 32 --seed 5 "
+                   "--hprime-rms 0.5 -q --out measured_surface")
+                .status,
+            0);
+  const std::string args = "contact --set contact.surface=measured_surface/surface.h5 --set 'contact.e_star=\"30 GPa\"' "
+                           "--set 'contact.mean_pressure=\"50 MPa\"' --json";
+  for (int ranks : {2, 3}) {
+    const auto r = serial_and_slab(args, ranks, "measured" + std::to_string(ranks));
+    ASSERT_FALSE(r.slab.is_null());
+    expect_same_results(r.serial, r.slab, ranks);
+    EXPECT_GT(r.serial["results"]["contact_fraction"]["value"].get<double>(), 0.01);
+    const std::string dir = "measured" + std::to_string(ranks);
+    expect_same_files(work / (dir + "_serial"), work / (dir + "_slab"));
+  }
+  // Fewer rows than ranks: refused on every rank, naming the file's key, nothing written.
+  ASSERT_EQ(run(0, "surface generate --nx 4 --ny 64 --size 1e-3 --hurst 0.8 --kl 1 --ks 2 --hprime-rms 0.5 -q "
+                   "--out thin_surface")
+                .status,
+            0);
+  const auto thin = run(5, "contact --set contact.surface=thin_surface/surface.h5 --set contact.e_star=1e9 "
+                           "--set contact.mean_pressure=1e6 -q --out thin_slab");
+  EXPECT_EQ(thin.status, 2) << thin.err;
+  EXPECT_THAT(thin.err, HasSubstr("contact.surface"));
+  EXPECT_THAT(thin.err, HasSubstr("fewer than the 5 ranks"));
+  EXPECT_EQ(error_lines(thin.err), 1u) << thin.err;
+  EXPECT_FALSE(fs::exists(work / "thin_slab"));
+}
+
 // The datasets a frictional contact writes besides the normal ones.
 const std::vector<std::string> frictional_datasets = {
     "/fields/traction_x", "/fields/traction_y", "/fields/stick_slip",       "/fields/slip_x",
@@ -196,7 +227,6 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
       {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
        "--set contact.grid=4100",
        "contact.grid"},  // friction above the gather limit
-      {"--set contact.surface=rough.h5", "contact.surface"},
       {"--set contact.grid=7", "contact.grid"},
       {"--resume elsewhere", "--resume"}};
   int k = 0;
