@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -24,6 +25,25 @@ namespace wearscale::python {
 namespace {
 
 using namespace wearscale::bem;
+
+// A stop for a solve running with the GIL released in the interpreter's main
+// thread: Ctrl-C (or a Python signal handler that raises) ends it within an
+// iteration, as KeyboardInterrupt (the solver throws Interrupted; module.cpp
+// translates it). The GIL is taken to ask Python at most ten times a second;
+// other threads never see signals, so their solves are not asked.
+std::function<bool()> python_signal_stop() {  // called with the GIL held
+  const auto main_thread = py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+  if (PyThread_get_thread_ident() != main_thread) return nullptr;
+  return [last = std::chrono::steady_clock::now()]() mutable {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::milliseconds(100)) return false;
+    last = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() == 0) return false;
+    PyErr_Clear();
+    return true;
+  };
+}
 
 Boundary boundary_from(const std::string& name) {
   if (name == "periodic") return Boundary::Periodic;
@@ -194,6 +214,7 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
              options.method = method_from(method);
+             options.stop = python_signal_stop();
              ContactResult r;
              const auto start = std::chrono::steady_clock::now();
              {
@@ -210,7 +231,8 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
            R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
-"preconditioned" (default) or "polonsky-keer". Releases the GIL. Returns a dict: iterations,
+"preconditioned" (default) or "polonsky-keer". Releases the GIL; Ctrl-C ends the solve within an
+iteration (KeyboardInterrupt). Returns a dict: iterations,
 error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
 solve_seconds (wall time of the C++ solve, GIL released).
 ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
@@ -269,6 +291,7 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
              FrictionalOptions options;
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
+             options.stop = python_signal_stop();
              FrictionalResult r;
              const auto start = std::chrono::steady_clock::now();
              {
@@ -283,7 +306,8 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
            py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 20000,
            R"(Solves for imposed mean tractions <p_N> = mean_pressure >= 0 and <p_T> = (traction_x, traction_y) [Pa].
 
-tolerance on the relative cost (A.14). Releases the GIL. A tangential load above what friction
+tolerance on the relative cost (A.14). Releases the GIL; Ctrl-C ends the solve within an iteration
+(KeyboardInterrupt). A tangential load above what friction
 carries (gross sliding) is a ValueError, never clamped. Returns a dict of scalars (units in the
 names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement_x_m, ...)")
       .def("reset", [](PyFrictionalContact& self) { self.solver.reset(); }, "Forgets the warm start.")

@@ -253,3 +253,25 @@ def test_stresses_of_a_frictional_contact_are_those_of_its_tractions():
     assert np.array_equal(a["sigma_I_Pa"], b["sigma_I_Pa"]) and a["tau_max_Pa"].shape == (32, 32)
     n = ws.contact.stresses(c.pressure, lx, ly, 0.3, [1e-5])[1e-5]
     assert not np.array_equal(a["tau_max_Pa"], n["tau_max_Pa"])  # the tangential traction counts
+
+
+def test_ctrl_c_ends_a_long_solve_within_an_iteration_as_keyboard_interrupt():
+    # A Python signal handler that raises (as Ctrl-C's does) is heard while the
+    # solve runs with the GIL released: KeyboardInterrupt long before it converges.
+    import signal
+    s = ws.surface.generate(512, 1e-4, k_l=2, k_s=128, seed=3, slope_rms=0.1)
+    c = ws.contact.FrictionalContact(s, 1e-4, young=7e10, poisson=0.17, law="coulomb", mu=0.3)
+
+    def raise_interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGALRM, raise_interrupt)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.5)
+        with pytest.raises(KeyboardInterrupt) as stopped:
+            c.solve(mean_pressure=1e7, traction_x=2e6, tolerance=1e-14, max_iterations=100000)
+        # The solver's own words: raised by the handler only after the solve, it would have none.
+        assert "stopped at iteration" in str(stopped.value)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
