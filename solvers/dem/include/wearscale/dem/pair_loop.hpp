@@ -98,7 +98,7 @@ struct alignas(64) Batch {
   double ri[batch_pairs], rj[batch_pairs], mi[batch_pairs], mj[batch_pairs];
   double fx[batch_pairs], fy[batch_pairs], fz[batch_pairs];
   double ax[batch_pairs], ay[batch_pairs], az[batch_pairs];
-  std::uint8_t active[batch_pairs];
+  std::uint64_t active[batch_pairs];  // as wide as a double: the loop keeps one lane a double
   double history[batch_pairs * max_fixed_history];  // the updated histories (fixed strides)
 };
 
@@ -126,7 +126,7 @@ WEARSCALE_INDEPENDENT_LANES
     b.ax[l] = arm.x;
     b.ay[l] = arm.y;
     b.az[l] = arm.z;
-    b.active[l] = pf.active ? 1 : 0;
+    b.active[l] = pf.active ? 1u : 0u;
   }
   if constexpr (Stride > 0) std::copy_n(b.history, Stride * m, history + Stride * k0);
 }
