@@ -319,11 +319,7 @@ TEST(OutputFolder, ASecondRunIntoAFolderInUseIsRefusedNamingTheHoldersPid) {
   const std::string slow = "run '" + pin_on_disc + "' --set scale.macro.grid=64 --set scale.macro.distance=0.3 --out out";
   const std::string cmd = "cd '" + dir.string() + "' && CI=true exec '" + std::string(WEARSCALE_CLI) + "' " + slow +
                           " >first.out 2>first.err";
-  const pid_t first = ::fork();
-  if (first == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t first = spawn_shell(cmd);
   for (int k = 0; k < 3000 && !fs::exists(dir / "out" / ".wearscale.lock"); ++k) ::usleep(10000);
   ASSERT_TRUE(fs::exists(dir / "out" / ".wearscale.lock")) << slurp(dir / "first.err");
   const auto r = run_cli(slow, dir);
@@ -356,11 +352,7 @@ TEST(OutputFolder, ADamagedCheckpointIsRefusedAndAnIntactOneResumes) {
   const std::string cmd = "cd '" + dir.string() + "' && CI=true exec '" + std::string(WEARSCALE_CLI) + "' " + args +
                           " >killed.out 2>killed.err";
   fs::create_directories(dir);
-  const pid_t run = ::fork();
-  if (run == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t run = spawn_shell(cmd);
   for (int k = 0; k < 6000 && !fs::exists(dir / "out" / "checkpoint.h5"); ++k) ::usleep(5000);
   ::kill(run, SIGKILL);
   int status = 0;
@@ -408,11 +400,7 @@ TEST(OutputFolder, ARunKilledOverAnOlderRunLeavesTheOlderSetIntact) {
   const std::string summary = slurp(dir / "out" / "summary.json"), csv = slurp(dir / "out" / "friction.csv");
   const std::string cmd = "cd '" + dir.string() + "' && CI=true exec '" + std::string(WEARSCALE_CLI) + "' " + base +
                           " --set scale.macro.distance=0.05 --set run.checkpoint_steps=20 --out out >b.out 2>b.err";
-  const pid_t b = ::fork();
-  if (b == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t b = spawn_shell(cmd);
   for (int k = 0; k < 6000 && !fs::exists(dir / "out" / "checkpoint.h5"); ++k) ::usleep(5000);
   ::kill(b, SIGKILL);
   int status = 0;

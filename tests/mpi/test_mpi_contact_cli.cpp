@@ -268,11 +268,7 @@ TEST(MpiContactCli, SigtermToMpirunStopsAFrictionalSlabSolveOnEveryRankAtOnce) {
                           " --set contact.grid=512 --set contact.rough.k_s=128 -v --out stopped >stopped.out "
                           "2>stopped.err";
   fs::create_directories(work);
-  const pid_t job = ::fork();
-  if (job == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t job = spawn_shell(cmd);
   ASSERT_GT(job, 0);
   bool sent = false, ended = false;
   int status = 0;

@@ -105,11 +105,7 @@ TEST(MpiSweepCli, ASignalToMpirunStopsTheJobAndAResumeUnderAnotherCountFinishesI
     const std::string cmd = "cd '" + work.string() + "' && exec env CI=true OMP_NUM_THREADS=1 " WEARSCALE_MPIRUN
                             " -np 3 '" + std::string(WEARSCALE_CLI) + "' " + args + " --out " + dir + " >" + dir +
                             ".out 2>" + dir + ".err";
-    const pid_t job = ::fork();
-    if (job == 0) {
-      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
+    const pid_t job = spawn_shell(cmd);
     ASSERT_GT(job, 0);
     bool sent = false;
     for (int wait = 0; wait < 600 && !sent; ++wait) {  // once the first run has finished

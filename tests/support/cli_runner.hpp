@@ -1,6 +1,8 @@
 #pragma once
 // Runs the wearscale program as a user would and captures what it prints.
+#include <sys/types.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -30,4 +32,15 @@ inline CliResult run_cli(const std::string& args, const std::filesystem::path& c
                           std::string(WEARSCALE_CLI) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int raw = std::system(cmd.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+/// Starts `cmd` through /bin/sh in the background and returns its pid (or a
+/// negative value when no process could be made); the caller waits for it.
+inline pid_t spawn_shell(const std::string& cmd) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
 }

@@ -18,6 +18,8 @@ inline std::string mpi_launcher(int ranks) {
 #include <functional>
 #include <thread>
 
+#include "cli_runner.hpp"
+
 /// What became of an MPI job one of whose worker ranks was killed.
 struct KilledJob {
   bool killed = false;  ///< a worker rank was found and sent SIGKILL
@@ -35,11 +37,7 @@ inline KilledJob kill_a_worker_rank(const std::string& cwd, int ranks, const std
                           std::to_string(ranks) + " '" + std::string(WEARSCALE_CLI) + "' " + args +
                           " >killed.out 2>killed.err";
   KilledJob out;
-  const pid_t job = ::fork();
-  if (job == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t job = spawn_shell(cmd);
   if (job < 0) return out;
   for (int wait = 0; wait < 600 && !out.killed; ++wait) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
