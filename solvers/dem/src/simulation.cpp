@@ -146,17 +146,19 @@ void Simulation::prepare_pairs() {
 
 void Simulation::compute_forces() { forces(false); }
 
-void Simulation::forces(bool advance) {
+void Simulation::forces(bool advance, bool cleared) {
   if (since_build_ < 0 || neighbors_.offsets().size() != particles_.size() + 1) rebuild();
   if (track_virial_ && virial_.size() != particles_.size()) prepare_pairs();
   auto& p = particles_;
   const std::size_t n = p.size();
   const bool virial = track_virial_;
+  if (!cleared) {
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    p.force[i] = {};
-    p.torque[i] = {};
-    if (virial) virial_[i] = {};
+    for (std::size_t i = 0; i < n; ++i) {
+      p.force[i] = {};
+      p.torque[i] = {};
+      if (virial) virial_[i] = {};
+    }
   }
   neighbors_.shift_vectors(box_, shift_table_.data());
   PairLoop loop;
@@ -202,17 +204,24 @@ double wall_acceleration(const Wall& w) {
 }
 }  // namespace
 
-void Simulation::integrate_first_half() {
+void Simulation::integrate_first_half(bool clear_forces) {
   auto& p = particles_;
   const std::size_t n = p.size();
   const double half = 0.5 * dt_;
   double max_v2 = 0.0;
+  const bool virial = clear_forces && track_virial_ && virial_.size() == n;
 #pragma omp parallel for schedule(static) reduction(max : max_v2) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 f = p.force[i], tq = p.torque[i];
+    if (clear_forces) {
+      p.force[i] = {};
+      p.torque[i] = {};
+      if (virial) virial_[i] = {};
+    }
     if (p.wall[i] != no_wall) continue;
-    p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
+    p.velocity[i] += (half * p.inv_mass[i]) * f;
     p.position[i] += dt_ * p.velocity[i];
-    p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+    p.omega[i] += (half * p.inv_inertia[i]) * tq;
     max_v2 = std::max(max_v2, dot(p.velocity[i], p.velocity[i]));
   }
   for (auto& w : walls_) {
@@ -267,12 +276,13 @@ void Simulation::integrate_second_half() {
 void Simulation::step() {
   if (!(dt_ > 0.0)) throw InputError("DEM: set a time step before running");
   if (!forces_valid_) forces(false);
-  integrate_first_half();
+  forces_valid_ = false;  // from here until the step's forces are in
+  integrate_first_half(true);
   ++since_build_;
   if ((settings_.every > 0 && since_build_ >= settings_.every) ||
       (settings_.check_displacement && neighbors_.moved_beyond_half_skin(particles_)))
     rebuild();
-  forces(true);
+  forces(true, virial_.size() == particles_.size() || !track_virial_);
   integrate_second_half();
   ++step_;
   time_ += dt_;

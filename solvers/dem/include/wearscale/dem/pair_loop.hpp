@@ -225,14 +225,19 @@ void pair_loop(const Law& law, PairLoop& a) {
     // particles and the threads share the force arrays without copies or
     // atomics; the colours are separated by the barrier at the end of each
     // `omp for`. The order of the sums is fixed by the blocks, not by the
-    // threads (which thread takes a block does not matter, so they take the
-    // next free one): the same result on any thread count ≥ 2.
+    // threads (which thread takes a block does not matter): the same result
+    // on any thread count ≥ 2. Each thread takes a contiguous run of each
+    // colour's blocks (static schedule), so it works on the same stretch of
+    // particles as in the integration's static loops and the neighbour
+    // search's layers: the particles' cache lines stay with one core (taken
+    // as they came free, 32 000 particles ran at 13.5-13.9 M particle-steps
+    // per wall-second on two threads against 15.5-15.7 now).
     const std::size_t blocks = a.blocks;
     const std::size_t* start = a.block_start;
 #pragma omp parallel num_threads(a.threads)
     for (std::size_t colour = 0; colour < 2; ++colour) {
       const std::size_t count = (blocks + 1 - colour) / 2;
-#pragma omp for schedule(dynamic, 1)
+#pragma omp for schedule(static)
       for (std::size_t c = 0; c < count; ++c) {
         const std::size_t b = colour + 2 * c;
         rows(start[b], start[b + 1], a.force, a.torque, a.virial);

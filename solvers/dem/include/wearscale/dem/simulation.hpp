@@ -111,10 +111,13 @@ class Simulation {
 
  private:
   [[noreturn]] void throw_wrong_law() const;
-  /// advance: the step's force evaluation, which moves the sliding histories.
-  void forces(bool advance);
+  /// advance: the step's force evaluation, which moves the sliding histories;
+  /// cleared: the forces, torques and virials are already zero.
+  void forces(bool advance, bool cleared = false);
   void prepare_pairs();
-  void integrate_first_half();
+  /// clear_forces: zero the forces, torques and virials once read (the step's
+  /// next force evaluation then needs no pass of its own to do it).
+  void integrate_first_half(bool clear_forces = false);
   void integrate_second_half();
   void rebuild();
 
