@@ -24,11 +24,13 @@
 #include <fstream>
 #include <numbers>
 #include <omp.h>
+#include <random>
 #include <string>
 #include <sys/resource.h>
 #include <vector>
 
 #include "wearscale/dem/anchor_block.hpp"
+#include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 
 using namespace wearscale::dem;
@@ -102,8 +104,12 @@ void Hooke(benchmark::State& state) {
 BENCHMARK(Hooke)->Args({20, 200})->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The thesis law on the same block: unit spheres of a cohesive material whose
-// d_c is above the particle size, neighbours at 0.5 % overlap.
-void Cohesive(benchmark::State& state) {
+// d_c is above the particle size, neighbours at 0.5 % overlap. Numbered as
+// the lattice is built (`Cohesive`), shuffled as a randomly inserted sample
+// would be (`CohesiveShuffled`), or shuffled and then numbered along the
+// cells (`CohesiveRenumbered`, cell_order.hpp): the same work, in three orders.
+enum class Numbering { Lattice, Shuffled, Renumbered };
+void cohesive_block(benchmark::State& state, Numbering numbering) {
   const int n = static_cast<int>(state.range(0));
   HcpLattice lattice{0.995, n, n, n};
   CohesiveMaterial m;
@@ -120,10 +126,22 @@ void Cohesive(benchmark::State& state) {
     const double h = std::sin(12.9898 * x.x + 78.2330 * x.y + 37.7190 * x.z) * 43758.5453;
     p.add({x, 0.5, m.density, {0.01 * (2.0 * (h - std::floor(h)) - 1.0), 0, 0}, 0, 0});
   }
+  if (numbering != Numbering::Lattice) {
+    std::vector<std::size_t> order(p.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(1));
+    p.reorder(order);
+  }
+  if (numbering == Numbering::Renumbered) p.reorder(cell_order(p.position, 1.2));
   Simulation sim(std::move(p), lattice.box(), CohesiveLaw({m}), NeighborSettings{0.1, 10, false});
   sim.set_time_step(0.1 * sim.law_as<CohesiveLaw>().critical_time_step(sim.particles()));
   time_steps(state, sim);
 }
+void Cohesive(benchmark::State& state) { cohesive_block(state, Numbering::Lattice); }
+void CohesiveShuffled(benchmark::State& state) { cohesive_block(state, Numbering::Shuffled); }
+void CohesiveRenumbered(benchmark::State& state) { cohesive_block(state, Numbering::Renumbered); }
 BENCHMARK(Cohesive)->Args({20, 200})->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(CohesiveShuffled)->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(CohesiveRenumbered)->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
 #include "wearscale/dem/clusters.hpp"
+#include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
@@ -178,6 +179,9 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
                                  spec.oxide.density, {}, 0, tag});
     p.set_mass(k, sm * sm * sm * sample.particles.mass[i]);  // the sample's density-matched mass
   }
+  // Numbered along the cells: the carved SiO2 keeps the random order of its
+  // insertion otherwise, and its pairs miss the cache at 10⁵ particles.
+  p.reorder(cell_order(p.position, 2.0 * largest_of(spec)));
   std::vector<std::size_t> bottom, plate, body0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.body[i] == asperity_substrate && p.position[i].z <= spec.wall_thickness * d0) bottom.push_back(i);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <stdexcept>
 
 namespace wearscale::dem {
 
@@ -58,7 +59,39 @@ void compact(std::vector<T>& v, const std::vector<char>& keep) {
     if (keep[r]) v[w++] = v[r];
   v.resize(w);
 }
+
+template <class T>
+void permute(std::vector<T>& v, std::span<const std::size_t> order) {
+  std::vector<T> out(v.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+  v.swap(out);
+}
 }  // namespace
+
+void Particles::reorder(std::span<const std::size_t> order) {
+  const std::size_t n = size();
+  std::vector<char> seen(n, 0);
+  bool permutation = order.size() == n;
+  for (std::size_t k = 0; k < order.size() && permutation; ++k) {
+    permutation = order[k] < n && seen[order[k]] == 0;
+    if (permutation) seen[order[k]] = 1;
+  }
+  if (!permutation) throw std::invalid_argument("Particles::reorder: the order is not a permutation of the particles");
+  permute(position, order);
+  permute(velocity, order);
+  permute(omega, order);
+  permute(force, order);
+  permute(torque, order);
+  permute(radius, order);
+  permute(mass, order);
+  permute(inv_mass, order);
+  permute(inv_inertia, order);
+  permute(id, order);
+  permute(material, order);
+  permute(body, order);
+  permute(wall, order);
+  permute(image, order);
+}
 
 void Particles::remove_if(const std::function<bool(std::size_t)>& remove) {
   std::vector<char> keep(size());

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "wearscale/dem/vec3.hpp"
@@ -34,6 +35,10 @@ class Particles {
   /// Removes every particle for which `remove(i)` is true, keeping the order
   /// of the others (a neighbour list built before is invalid afterwards).
   void remove_if(const std::function<bool(std::size_t)>& remove);
+  /// Renumbers the particles: the one at order[k] becomes particle k, every
+  /// array alike (ids, tags and state travel with their particle). `order`
+  /// must be a permutation of 0 … size()−1 (std::invalid_argument otherwise).
+  void reorder(std::span<const std::size_t> order);
   /// Sets the density of every particle (masses and inertias follow).
   void set_density(double density);
   /// Mass and moment of inertia from radius and density, for particle i.
