@@ -54,14 +54,26 @@ for r in $(seq "$rounds"); do
   done
 done | tee "$work/all"
 echo "== ratios (per round; wearscale one thread against the engine's CPU-time figure)"
+# Each ratio is taken within its round (figures minutes apart on the same
+# host); the median over the rounds comes last, the figure to quote from a
+# host whose speed drifts.
 awk 'function v() { match($0, /[0-9.]+ M particle/); return substr($0, RSTART, RLENGTH - 11) + 0 }
      function wall() { match($0, /[0-9.]+ per wall/); return substr($0, RSTART, RLENGTH - 9) + 0 }
+     function busiest() { match($0, /[0-9.]+ per busiest/); return substr($0, RSTART, RLENGTH - 12) + 0 }
+     function keep(name, x, fmt) { printf fmt, x; if (!(name in seen)) order[++names] = name; seen[name] = seen[name] " " sprintf("%.2f", x) }
      /^wearscale Hooke\/20.* 1T/ { w20 = v(); s20 = wall() } /^wearscale Hooke\/40.* 1T/ { w40 = v(); s40 = wall() }
      /^wearscale Cohesive\/20.* 1T/ { c20 = v() } /^wearscale Cohesive\/40.* 1T/ { c40 = v() }
-     function busiest() { match($0, /[0-9.]+ per busiest/); return substr($0, RSTART, RLENGTH - 12) + 0 }
-     /^wearscale Hooke\/20.* 2T/ { printf "32 000:  2 threads / 1 thread (wall)   = %.2f, busiest thread CPU / 1 thread CPU = %.2f\n", wall() / s20, busiest() / w20 }
-     /^wearscale Hooke\/40.* 2T/ { printf "256 000: 2 threads / 1 thread (wall)   = %.2f, busiest thread CPU / 1 thread CPU = %.2f\n", wall() / s40, busiest() / w40 }
-     /^LAMMPS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w20 / v(), c20 / v() }
-     /^LAMMPS.*n=40.*M particle/ { printf "256 000: wearscale Hooke / LAMMPS    = %.2f, cohesive / LAMMPS Hooke = %.2f\n", w40 / v(), c40 / v() }
-     /^LIGGGHTS.*n=20.*M particle/ { printf "32 000:  wearscale Hooke / LIGGGHTS  = %.2f\n", w20 / v() }
-     /^LIGGGHTS.*n=40.*M particle/ { printf "256 000: wearscale Hooke / LIGGGHTS  = %.2f\n", w40 / v() }' "$work/all"
+     /^wearscale Hooke\/20.* 2T/ { keep("32 000:  2 threads / 1 thread (wall)", wall() / s20, "32 000:  2 threads / 1 thread (wall)   = %.2f")
+                                   printf ", busiest thread CPU / 1 thread CPU = %.2f\n", busiest() / w20 }
+     /^wearscale Hooke\/40.* 2T/ { keep("256 000: 2 threads / 1 thread (wall)", wall() / s40, "256 000: 2 threads / 1 thread (wall)   = %.2f")
+                                   printf ", busiest thread CPU / 1 thread CPU = %.2f\n", busiest() / w40 }
+     /^LAMMPS.*n=20.*M particle/ { keep("32 000:  wearscale Hooke / LAMMPS", w20 / v(), "32 000:  wearscale Hooke / LAMMPS    = %.2f")
+                                   keep("32 000:  cohesive / LAMMPS Hooke", c20 / v(), ", cohesive / LAMMPS Hooke = %.2f\n") }
+     /^LAMMPS.*n=40.*M particle/ { keep("256 000: wearscale Hooke / LAMMPS", w40 / v(), "256 000: wearscale Hooke / LAMMPS    = %.2f")
+                                   keep("256 000: cohesive / LAMMPS Hooke", c40 / v(), ", cohesive / LAMMPS Hooke = %.2f\n") }
+     /^LIGGGHTS.*n=20.*M particle/ { keep("32 000:  wearscale Hooke / LIGGGHTS", w20 / v(), "32 000:  wearscale Hooke / LIGGGHTS  = %.2f\n") }
+     /^LIGGGHTS.*n=40.*M particle/ { keep("256 000: wearscale Hooke / LIGGGHTS", w40 / v(), "256 000: wearscale Hooke / LIGGGHTS  = %.2f\n") }
+     END { print "== median over the rounds"
+           for (o = 1; o <= names; ++o) { name = order[o]; m = split(substr(seen[name], 2), x, " ")
+             for (i = 2; i <= m; ++i) for (j = i; j > 1 && x[j - 1] > x[j]; --j) { t = x[j]; x[j] = x[j - 1]; x[j - 1] = t }
+             printf "%-40s %.2f  (rounds:%s)\n", name, m % 2 ? x[(m + 1) / 2] : (x[m / 2] + x[m / 2 + 1]) / 2, seen[name] } }' "$work/all"
