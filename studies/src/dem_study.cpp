@@ -583,6 +583,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   std::filesystem::create_directories(out);
   DumpWriter dump(out / "oxide_asperity.dump");
   std::unique_ptr<Progress> bar;
+  const auto hooks = study_checkpoints(&context.checkpoints(), "dem/oxide_asperity", &dump);
   // A line in the log every 10 % of the run, 1 % for runs of more than 1e10
   // particle-steps (hours), and at least every 5 minutes: a long run's partial
   // results and its speed, particle-steps per CPU second of this process
@@ -593,7 +594,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   const auto r = run_oxide_asperity(
       spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
         if (!bar) {
-          bar = std::make_unique<Progress>("oxidized asperity", static_cast<double>(planned));
+          bar = progress_bar("oxidized asperity", planned, hooks);
           log::info("oxide asperity: {} particles, Δt = {:.3g} s, {} steps", sim.particles().size(), sim.time_step(), planned);
           cpu0 = std::clock();
           step0 = step;
@@ -613,7 +614,8 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
         }
         if (dump.frames() == 0 || (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)))
           dump.write(sim, {{"rolling_body", body}});
-      });
+      },
+      hooks);
   bar.reset();
   dump.commit();
 

@@ -232,6 +232,10 @@ const std::vector<DemStudy> dem_studies = {
      "trapped_particles", "trapped_particles.dump"},
     {"patch_test", "dem patch-test --lattice hcp --nu 0.1 --length 8 --set dem.patch_test.strain_rate=1e-4",
      "patch_test", ""},
+    {"oxide_asperity",
+     "dem oxide-asperity --d0 '6 nm' --slide '12 nm' --set \"dem.oxide_asperity.box=['150 nm','150 nm','95 nm']\" "
+     "--set dem.oxide_asperity.velocity=50 --set \"dem.oxide_asperity.settle_distance='1 nm'\"",
+     "oxide_asperity", "oxide_asperity.dump"},
 };
 
 // The output of two runs of a DEM study is the same: results, history and

@@ -2,7 +2,8 @@
 // resumed (#10): each offers its state after every sample, and a run set up
 // afresh from that state ends bit for bit as the run that never stopped -
 // the sheared junction (§6.3), sheared rough surfaces (§7.2), trapped
-// particles (§7.3) and the three patch tests (§6.2), from a state taken in
+// particles (§7.3), the three patch tests (§6.2) and the oxidized asperity
+// (§9.3.3), from a state taken in
 // each of them. A state of another study is refused, naming the entry.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <map>
 
 #include "input_error_of.hpp"
+#include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
@@ -165,4 +167,60 @@ TEST(StudyResume, APatchTestResumedInEachOfItsThreeTestsEndsBitForBitAsTheUninte
     EXPECT_EQ(resumed.shear_strength, straight.shear_strength);
     EXPECT_EQ(resumed.strength_steps, straight.strength_steps);
   }
+}
+
+// The oxidized asperity (§9.3.3): a state taken while loading and one taken
+// while sliding (after the body's first window) both resume to the
+// uninterrupted run's history, body and trench, bit for bit.
+TEST(StudyResume, TheOxidizedAsperityResumedLoadingOrSlidingEndsBitForBitAsTheUninterruptedRun) {
+  OxideAsperitySpec s;
+  s.oxide = cohesive_material(materials::silica(), 0.5);
+  s.substrate = cohesive_material(materials::silicon(), 0.5, 0.9);
+  s.substrate.poisson = 0.2;
+  s.d0 = d0;
+  s.box = {150e-9, 150e-9, 95e-9};
+  s.velocity = 50.0;
+  s.sliding_distance = 3 * d0;  // a body window after 2 d0, one at the end
+  s.settle_distance = 1e-9;
+  Capture capture;
+  const auto straight = run_oxide_asperity(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 8u);
+  for (const double at : {0.05, 0.8}) {
+    SCOPED_TRACE("resumed " + std::to_string(at) + " of the way");
+    const auto resumed = run_oxide_asperity(s, {}, capture.resume(at));
+    ASSERT_EQ(resumed.history.size(), straight.history.size());
+    for (std::size_t k = 0; k < straight.history.size(); ++k) {
+      EXPECT_EQ(resumed.history[k].tangential_force, straight.history[k].tangential_force) << "sample " << k;
+      EXPECT_EQ(resumed.history[k].body_particles, straight.history[k].body_particles) << "sample " << k;
+      EXPECT_EQ(resumed.history[k].trench_depth, straight.history[k].trench_depth) << "sample " << k;
+    }
+    EXPECT_EQ(resumed.rotation, straight.rotation);
+    EXPECT_EQ(resumed.travel, straight.travel);
+    EXPECT_EQ(resumed.final_body, straight.final_body);
+    EXPECT_EQ(resumed.friction, straight.friction);
+    EXPECT_EQ(resumed.reached_substrate_at, straight.reached_substrate_at);
+  }
+}
+
+TEST(StudyResume, AnOxidizedAsperityRefusesTheStateOfAnotherStudyNamingTheEntry) {
+  ShearedJunctionSpec j;
+  j.material = cohesive_material(materials::silica(), 0.5);
+  j.diameter = 20e-9;
+  j.d0 = d0;
+  j.velocity = 50.0;
+  j.sliding_distance = d0;
+  Capture junction;
+  run_sheared_junction(j, {}, junction.hooks());
+  ASSERT_FALSE(junction.states.empty());
+  OxideAsperitySpec s;
+  s.oxide = cohesive_material(materials::silica(), 0.5);
+  s.substrate = cohesive_material(materials::silicon(), 0.5, 0.9);
+  s.substrate.poisson = 0.2;
+  s.d0 = d0;
+  s.box = {150e-9, 150e-9, 95e-9};
+  s.velocity = 50.0;
+  s.sliding_distance = 2 * d0;
+  s.settle_distance = 1e-9;
+  EXPECT_THAT(input_error_of([&] { run_oxide_asperity(s, {}, junction.resume(0.0)); }),
+              ::testing::HasSubstr("oxide.tallies"));
 }

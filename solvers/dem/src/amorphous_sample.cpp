@@ -9,6 +9,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/virial_stress.hpp"
 
 namespace wearscale::dem {
@@ -165,6 +166,7 @@ AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const Am
   std::vector<CohesiveMaterial> table(static_cast<std::size_t>(spec.material) + 1, material);
   AmorphousSample out;
   Particles inserted = insert_randomly(spec, material.density);
+  if (spec.numbered_along_cells) inserted.reorder(cell_order(inserted.position, 2.0 * spec.sizes.largest));
   const Box box = periodic_box(spec.box_size);
   out.inserted_volume_fraction = volume_fraction(inserted, box);
   Simulation sim(std::move(inserted), box, CohesiveLaw(std::move(table)),
@@ -186,8 +188,10 @@ AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const Am
 }
 
 AmorphousSample make_carving_sample(const CohesiveMaterial& material, double d0, double largest, const Vec3& box_size,
-                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps) {
+                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps,
+                                    bool numbered_along_cells) {
   AmorphousSpec sample;
+  sample.numbered_along_cells = numbered_along_cells;
   sample.sizes.mode = d0;
   sample.sizes.smallest = 0.75 * d0;
   sample.sizes.largest = largest > 0.0 ? largest : 1.25 * d0;

@@ -126,7 +126,8 @@ void check(const OxideAsperitySpec& s) {
                        h.block + 0.5 * s.d0 + need, h.block + 0.5 * s.d0, need));
 }
 
-OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const OxideAsperityObserver& observe) {
+OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const OxideAsperityObserver& observe,
+                                       const RunCheckpoints& checkpoints) {
   check(spec);
   require_hcp_spacing({spec.substrate}, spec.d0, "oxide asperity (the Si lattice)");
   const double d0 = spec.d0;
@@ -152,7 +153,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   // The SiO2 block: relaxed amorphous (§6.2.2), fitted to the lattice's
   // periodic lengths, carved into layer, cylinder and plate.
   const auto sample = make_carving_sample(spec.oxide, d0, spec.largest, {size_x, size_y, h.block}, spec.seed,
-                                          spec.relax_tolerance, spec.max_relax_steps);
+                                          spec.relax_tolerance, spec.max_relax_steps, /*numbered_along_cells=*/true);
   out.relaxation_steps = sample.relaxation.repulsion_steps + sample.relaxation.cohesion_steps;
   const Vec3 relaxed = sample.box.length();
   // The relaxed box differs from the lattice's lengths by the relaxation's
@@ -333,8 +334,44 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
     return s;
   };
 
-  out.history.push_back(sample_now(0.0, 0.0, 0));
-  for (long step = 0; step < planned;) {
+  long step = 0;
+  // The run's state: the DEM system, the body, its window and what was measured.
+  auto save = [&] {
+    CheckpointState st;
+    sim.save_state(st);
+    put_samples(st, "oxide.history", out.history);
+    put_indices(st, "oxide.members", members);
+    put_points(st, "oxide.window", window.from);
+    st.put("oxide.tallies", std::vector<double>{double(step), rotation, travel, surface0, window.sliding,
+                                                out.reached_substrate_at});
+    return st;
+  };
+  if (checkpoints.from != nullptr) {
+    const CheckpointState& st = *checkpoints.from;
+    sim.restore_state(st);
+    const auto& t = tallies(st, "oxide.tallies", 6);
+    step = static_cast<long>(t[0]);
+    rotation = t[1];
+    travel = t[2];
+    surface0 = t[3];
+    window.sliding = t[4];
+    out.reached_substrate_at = t[5];
+    out.history = samples<OxideAsperitySample>(st, "oxide.history");
+    for (std::size_t i : members) in_body[i] = 0, body_flag[i] = 0.0;
+    members = indices(st, "oxide.members");
+    for (std::size_t i : members) {
+      if (i >= n) throw InputError(fmt::format("{}: oxide.members names particle {} of {}", st.origin, i, n));
+      in_body[i] = 1;
+      body_flag[i] = 1.0;
+    }
+    window.from = points(st, "oxide.window");
+    if (out.history.empty() || (!window.from.empty() && window.from.size() != n))
+      throw InputError(fmt::format("{}: not an oxide-asperity state of this system", st.origin));
+    last = out.history.back();
+  } else {
+    out.history.push_back(sample_now(0.0, 0.0, 0));
+  }
+  while (step < planned) {
     const long chunk = std::min(spec.record_every, step < settle ? settle - step : planned - step);
     double sum_t = 0.0, sum_n = 0.0;
     long summed = 0;
@@ -370,6 +407,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
         surface0 - last.trench_max_depth <= si_top + 0.25 * d0)
       out.reached_substrate_at = last.sliding;
     if (observe) observe(sim, last, step, planned, body_flag);
+    if (step < planned) checkpoints.offer(step, save);
   }
 
   out.surface_height = surface0;

@@ -18,6 +18,10 @@ struct AmorphousSpec {
   std::uint64_t seed = 1;
   int material = 0;               ///< material tag of every particle
   int body = 0;
+  /// Number the inserted particles along the cells before relaxing them
+  /// (cell_order.hpp): the relaxation runs 2-3 times faster at 10⁵ particles;
+  /// a different (equally random) sample from the same seed.
+  bool numbered_along_cells = false;
 };
 
 struct RelaxationSettings {
@@ -79,8 +83,10 @@ AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const Am
 
 /// The relaxed box the carved studies start from (§6.3, §7.2, §7.3): sizes
 /// from d_s = 0.75 d0 to d_l (0: 1.25 d0) about the mode d0, phase 2 of the
-/// relaxation ending at `stress_tolerance` (in E) or after `max_cohesion_steps`.
+/// relaxation ending at `stress_tolerance` (in E) or after `max_cohesion_steps`;
+/// `numbered_along_cells` as in AmorphousSpec.
 AmorphousSample make_carving_sample(const CohesiveMaterial& material, double d0, double largest, const Vec3& box_size,
-                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps);
+                                    std::uint64_t seed, double stress_tolerance, long max_cohesion_steps,
+                                    bool numbered_along_cells = false);
 
 }  // namespace wearscale::dem

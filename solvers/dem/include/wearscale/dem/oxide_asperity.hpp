@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/vec3.hpp"
 
 namespace wearscale::dem {
@@ -108,6 +109,10 @@ struct OxideAsperityResult {
 using OxideAsperityObserver =
     std::function<void(const Simulation&, const OxideAsperitySample&, long step, long planned, const std::vector<double>& body)>;
 
-OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const OxideAsperityObserver& observe = {});
+/// Offers its state after every sample (run_checkpoints.hpp): a run started
+/// `from` one sets the system up as before, restores it and ends bit for bit
+/// as the run that never stopped.
+OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const OxideAsperityObserver& observe = {},
+                                       const RunCheckpoints& checkpoints = {});
 
 }  // namespace wearscale::dem
