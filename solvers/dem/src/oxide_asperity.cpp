@@ -8,8 +8,8 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
-#include "wearscale/dem/clusters.hpp"
 #include "wearscale/dem/cell_order.hpp"
+#include "wearscale/dem/clusters.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
