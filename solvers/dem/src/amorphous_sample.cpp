@@ -1,6 +1,7 @@
 #include "wearscale/dem/amorphous_sample.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -8,6 +9,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/virial_stress.hpp"
@@ -115,6 +117,13 @@ RelaxationReport relax_amorphous(Simulation& sim, const RelaxationSettings& s) {
   const double c_c = law->critical_damping(p);                 // (6.64)
   sim.set_time_step(dt);
 
+  // A relaxation of 10⁵ particles or more takes minutes to tens of minutes
+  // before the study proper starts: the log says so, and how it goes.
+  const bool lengthy = p.size() >= 100000;
+  if (lengthy)
+    log::info("amorphous sample: relaxing {} particles (§6.2.2): {} steps of repulsion, then cohesion until every "
+              "|σ_aa| < {:.3g} E (at most {} steps)",
+              p.size(), s.repulsion_steps, s.stress_tolerance, s.max_cohesion_steps);
   // Phase 1: repulsion only, c = c_c, fixed periodic box.
   law->cohesion = false;
   law->tangential = false;
@@ -131,8 +140,14 @@ RelaxationReport relax_amorphous(Simulation& sim, const RelaxationSettings& s) {
   sim.set_track_virial(true);
   sim.compute_forces();
   const double limit = s.stress_tolerance * report.modulus;
+  auto said = std::chrono::steady_clock::now();
   for (;;) {
     report.stress = box_stress(sim);
+    if (lengthy && std::chrono::steady_clock::now() - said > std::chrono::minutes(1)) {
+      said = std::chrono::steady_clock::now();
+      log::info("amorphous sample: cohesion step {}, largest |σ_aa| = {:.3g} E (to reach {:.3g} E)", report.cohesion_steps,
+                max_normal_stress(report.stress) / report.modulus, s.stress_tolerance);
+    }
     if (max_normal_stress(report.stress) < limit) {
       report.converged = true;
       break;
