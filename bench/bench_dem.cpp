@@ -3,7 +3,8 @@
 // same block with the thesis' cohesive law. Reports particle-steps per
 // CPU-second and per wall-second (and as items/s), the neighbour pairs, the
 // peak resident set (of the whole process so far: run one benchmark per
-// process for a size's own figure) and it per particle. On threads also the
+// process for a size's own figure) and it per particle, whole and above what
+// the process held when it started (its code and libraries, 8 MiB). On threads also the
 // CPU time of the busiest thread (the main one, which runs the serial parts):
 // particle-steps per second of it are what the wall clock would show if each
 // thread had a core of its own and never waited at a barrier — an upper bound
@@ -39,13 +40,18 @@ namespace {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-double peak_rss_mib() {
+// A field of /proc/self/status in MiB ("VmHWM:" the peak resident set, "VmRSS:" the current one).
+double status_mib(const std::string& field) {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+    if (line.rfind(field, 0) == 0) return std::stod(line.substr(field.size())) / 1024.0;
   return 0.0;
 }
+double peak_rss_mib() { return status_mib("VmHWM:"); }
+// What the process holds before any system is built (code, libraries, the
+// runtime's heaps): not per particle.
+const double start_rss_mib = status_mib("VmRSS:");
 
 // CPU seconds so far of each thread of the OpenMP team (the same threads
 // run every parallel region of the same size).
@@ -72,6 +78,8 @@ void report(benchmark::State& state, const Simulation& sim, long steps, double c
   state.counters["cpu_over_busiest_thread"] = cpu / busiest;
   state.counters["peak_RSS_MiB"] = peak_rss_mib();
   state.counters["peak_RSS_B_per_particle"] = peak_rss_mib() * 1048576.0 / static_cast<double>(sim.particles().size());
+  state.counters["peak_RSS_above_start_B_per_particle"] =
+      (peak_rss_mib() - start_rss_mib) * 1048576.0 / static_cast<double>(sim.particles().size());
 }
 
 // Runs state.range(1) steps per iteration after a warm-up (first build,

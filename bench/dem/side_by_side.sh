@@ -33,14 +33,14 @@ ours() {  # filter [threads]: one line per benchmark, each in its own process (t
   local f
   for f in $(echo "$1" | tr '|' ' '); do
     OMP_NUM_THREADS=${2:-1} OMP_WAIT_POLICY=passive "$bench" --benchmark_filter="$f" 2>/dev/null |
-      awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = u = r = 0
+      awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = m = u = r = 0
         for (i = 1; i <= NF; ++i) { split($i, a, "=")
           if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
-          if (a[1] == "peak_RSS_B_per_particle") b = a[2]
+          if (a[1] == "peak_RSS_B_per_particle") b = a[2]; if (a[1] == "peak_RSS_above_start_B_per_particle") m = a[2]
           if (a[1] == "Mpsteps_per_busiest_thread_cpu_s") u = a[2]; if (a[1] == "cpu_over_busiest_thread") r = a[2] }
         extra = t > 1 ? sprintf(", %6.2f per busiest-thread CPU-second (CPU / busiest %.2f)", u, r) : ""
-        printf "wearscale %-18s %dT %6.2f M particle-steps per CPU-second, %6.2f per wall-second%s, %4.0f B/particle  (load %s)\n",
-          $1, t, c, w, extra, b, load }'
+        printf "wearscale %-18s %dT %6.2f M particle-steps per CPU-second, %6.2f per wall-second%s, %4.0f B/particle (%4.0f above the start)  (load %s)\n",
+          $1, t, c, w, extra, b, m, load }'
   done
 }
 for r in $(seq "$rounds"); do
