@@ -140,7 +140,7 @@ void cohesive_block(benchmark::State& state, Numbering numbering) {
     std::shuffle(order.begin(), order.end(), std::mt19937_64(1));
     p.reorder(order);
   }
-  if (numbering == Numbering::Renumbered) p.reorder(cell_order(p.position, 1.2));
+  if (numbering == Numbering::Renumbered) p.reorder(cell_order(p.position, 0.6));
   Simulation sim(std::move(p), lattice.box(), CohesiveLaw({m}), NeighborSettings{0.1, 10, false});
   sim.set_time_step(0.1 * sim.law_as<CohesiveLaw>().critical_time_step(sim.particles()));
   time_steps(state, sim);

@@ -181,7 +181,7 @@ AmorphousSample make_amorphous_sample(const CohesiveMaterial& material, const Am
   std::vector<CohesiveMaterial> table(static_cast<std::size_t>(spec.material) + 1, material);
   AmorphousSample out;
   Particles inserted = insert_randomly(spec, material.density);
-  if (spec.numbered_along_cells) inserted.reorder(cell_order(inserted.position, 2.0 * spec.sizes.largest));
+  if (spec.numbered_along_cells) inserted.reorder(cell_order(inserted.position, 0.5 * spec.sizes.largest));
   const Box box = periodic_box(spec.box_size);
   out.inserted_volume_fraction = volume_fraction(inserted, box);
   Simulation sim(std::move(inserted), box, CohesiveLaw(std::move(table)),

@@ -182,7 +182,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   }
   // Numbered along the cells: the carved SiO2 keeps the random order of its
   // insertion otherwise, and its pairs miss the cache at 10⁵ particles.
-  p.reorder(cell_order(p.position, 2.0 * largest_of(spec)));
+  p.reorder(cell_order(p.position, 0.5 * largest_of(spec)));
   std::vector<std::size_t> bottom, plate, body0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.body[i] == asperity_substrate && p.position[i].z <= spec.wall_thickness * d0) bottom.push_back(i);
