@@ -4,7 +4,7 @@
 // CPU-second and per wall-second (and as items/s), the neighbour pairs, the
 // peak resident set (of the whole process so far: run one benchmark per
 // process for a size's own figure) and it per particle, whole and above what
-// the process held when it started (its code and libraries, 8 MiB). On threads also the
+// the process held when it started (its code and libraries, about 4 MiB). On threads also the
 // CPU time of the busiest thread (the main one, which runs the serial parts):
 // particle-steps per second of it are what the wall clock would show if each
 // thread had a core of its own and never waited at a barrier — an upper bound

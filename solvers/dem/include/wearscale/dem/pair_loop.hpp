@@ -98,7 +98,9 @@ struct alignas(64) Batch {
   double ri[batch_pairs], rj[batch_pairs], mi[batch_pairs], mj[batch_pairs];
   double fx[batch_pairs], fy[batch_pairs], fz[batch_pairs];
   double ax[batch_pairs], ay[batch_pairs], az[batch_pairs];
-  std::uint64_t active[batch_pairs];  // as wide as a double: the loop keeps one lane a double
+  // As wide as a double: GCC sizes the vectorised loop by its narrowest type,
+  // and byte flags made it 64 pairs an iteration (spilling, long epilogues).
+  std::uint64_t active[batch_pairs];
   double history[batch_pairs * max_fixed_history];  // the updated histories (fixed strides)
 };
 
