@@ -1,10 +1,11 @@
 #include "wearscale/core/task_store.hpp"
 
-#include <fmt/format.h>
-
 #include <fstream>
-#include <utility>
+#include <mutex>
 #include <sstream>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/log.hpp"
@@ -81,8 +82,15 @@ void TaskStore::keep(const std::string& identity, const TaskResult& result) cons
   if (result.status != TaskResult::Status::Done) return;
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
-  if (!case_id_.empty() && !std::filesystem::exists(dir_ / "case.txt", ec))
-    write_file_atomically(dir_ / "case.txt", case_id_ + "\n", Commit::Now);
+  if (!case_id_.empty()) {
+    // Rank 0 keeps its own results and its workers' from two threads: the
+    // case's mark is written once, under a lock (its temporary file is named
+    // by the process, so two threads writing it at once collide).
+    static std::mutex case_mark;
+    std::lock_guard guard(case_mark);
+    if (!std::filesystem::exists(dir_ / "case.txt", ec))
+      write_file_atomically(dir_ / "case.txt", case_id_ + "\n", Commit::Now);
+  }
   // The header: what it is, whose result, where and how long it ran, the result's own digest.
   std::string content = fmt::format("{} {} {} {} {:.17g} {}\n", kMagic, sha256_hex(identity), result.rank,
                                     result.threads, result.seconds, sha256_hex(result.text));

@@ -5,8 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -96,6 +98,36 @@ TEST(TaskStore, AFarmKeepsEachFinishedTaskAndARerunTakesThemInsteadOfRunning) {
   // Each task wrote its log, named after it.
   EXPECT_TRUE(fs::exists(store.log_path("case A task 2", "seed 3")));
   EXPECT_THAT(store.log_path("case A task 2", "seed 3").filename().string(), ::testing::StartsWith("seed_3-"));
+}
+
+// Rank 0 keeps its own results and those its workers send from two threads
+// at once: the first two of a run both find the case's mark missing. Every
+// result is kept and the mark written, whichever thread comes first (the
+// first keeps of a run raced on the mark's temporary file: an MPI wear map
+// ended with status 2 in CI, "cannot open tasks/.case.txt.partial-<pid>").
+TEST(TaskStore, TwoThreadsKeepingTheFirstResultsOfARunAtOnceKeepBothAndTheCase) {
+  for (int round = 0; round < 200; ++round) {
+    const TaskStore store(scratch.path() / fmt::format("race{}", round) / "tasks", TaskStore::Mode::Keep, 1, 1,
+                          "case R");
+    std::atomic<int> ready{0};
+    std::vector<std::string> errors(2);
+    auto keep = [&](int t) {
+      ++ready;
+      while (ready.load() < 2) {
+      }
+      try {
+        store.keep(fmt::format("task {}", t), done(fmt::format("r{}", t)));
+      } catch (const std::exception& e) {
+        errors[static_cast<std::size_t>(t)] = e.what();
+      }
+    };
+    std::thread a(keep, 0), b(keep, 1);
+    a.join();
+    b.join();
+    ASSERT_EQ(errors[0] + errors[1], "") << "round " << round;
+    ASSERT_EQ(TaskStore::case_of(store.dir()), "case R") << "round " << round;
+    ASSERT_TRUE(store.find("task 0") && store.find("task 1")) << "round " << round;
+  }
 }
 
 TEST(TaskStore, AShardRunsItsShareThenStopsAndAMergeTakesEveryTaskOrNamesTheMissing) {
