@@ -106,8 +106,10 @@ class NeighborList {
   // than one image: the carry-over then checks its moves' order.
   bool several_images_ = true, old_several_images_ = true;
   // Scratch reused between builds: each thread's search results (search()),
-  // each row's count, then its cursor.
-  struct Stream {
+  // each row's count, then its cursor. A stream on cache lines of its own:
+  // its vectors' ends move at every pair its thread finds, and two streams
+  // sharing a line would bounce it between the cores at each of them.
+  struct alignas(64) Stream {
     std::vector<std::uint32_t> neighbor;  // the home particles' pairs with higher indices, in order
     std::vector<std::uint8_t> shift;
     struct Home {
