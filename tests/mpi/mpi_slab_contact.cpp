@@ -102,20 +102,9 @@ void test_operator(const Grid2D& g) {
   check(rows == static_cast<long long>(g.nx), "the slabs do not cover the grid" + at);
 }
 
-// The surface spectrum of Fig. 1.3: plateau k_l…k_r, self-affine with exponent H to k_s.
-RoughSurfaceSpec rough_spec(const Grid2D& g, double hurst, double k_l, double k_r, double k_s, std::uint64_t seed) {
-  RoughSurfaceSpec spec;
-  spec.grid = g;
-  spec.hurst = hurst;
-  spec.k_l = k_l;
-  spec.k_r = k_r;
-  spec.k_s = k_s;
-  spec.seed = seed;
-  return spec;
-}
-
 void test_surface(const Grid2D& g, std::uint64_t seed) {
-  const RoughSurfaceSpec spec = rough_spec(g, 0.7, 2.0, 4.0, static_cast<double>(std::min(g.nx, g.ny) / 2), seed);
+  // {grid, H, k_l, k_r, k_s, seed}: the spectrum of Fig. 1.3.
+  const RoughSurfaceSpec spec{g, 0.7, 2.0, 4.0, static_cast<double>(std::min(g.nx, g.ny) / 2), seed};
   SlabFFT fft(g.nx, g.ny, PlanRigor::Estimate);
   const std::string at = " on " + g.to_string() + ", seed " + std::to_string(seed);
   check(row_difference(generate_surface_slab(spec, fft), generate_surface(spec), fft.first_row()) < 1e-13,
@@ -132,7 +121,7 @@ void test_surface(const Grid2D& g, std::uint64_t seed) {
 
 void test_solve(std::size_t n, ContactMethod method) {
   // The case on a smaller grid: H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1, p̄ = 0.03 E*.
-  const RoughSurfaceSpec spec = rough_spec(Grid2D::square(n, 1.0), 0.8, 4.0, 4.0, std::min(64.0, static_cast<double>(n / 2)), 1);
+  const RoughSurfaceSpec spec{Grid2D::square(n, 1.0), 0.8, 4.0, 4.0, std::min(64.0, static_cast<double>(n / 2)), 1};
   const RealField h = generate_surface(spec, RoughnessMeasure::HPrimeRms, 1.0);
   ContactOptions options;
   options.tolerance = 1e-10;
@@ -234,7 +223,7 @@ double difference(const RealField& a, const RealField& b) {
 // case to compare (P serial solves side by side would only slow the test).
 void test_friction(std::size_t n, FrictionLaw law, double tangential_share) {
   const Grid2D g = Grid2D::square(n, 1.0);
-  const RoughSurfaceSpec spec = rough_spec(g, 0.8, 8.0, 8.0, static_cast<double>(n / 4), 1);
+  const RoughSurfaceSpec spec{g, 0.8, 8.0, 8.0, static_cast<double>(n / 4), 1};
   RealField h = generate_surface(spec, RoughnessMeasure::HRms, 2e-4);
   const double radius = 10.0;
   for (std::size_t i = 0; i < n; ++i)
@@ -312,7 +301,7 @@ void expect_stop_everywhere(const std::string& what, Solve solve) {
 
 void test_stop(std::size_t n) {
   const Grid2D g = Grid2D::square(n, 1.0);
-  const RoughSurfaceSpec spec = rough_spec(g, 0.8, 4.0, 4.0, static_cast<double>(n / 4), 1);
+  const RoughSurfaceSpec spec{g, 0.8, 4.0, 4.0, static_cast<double>(n / 4), 1};
   const RealField h = generate_surface(spec, RoughnessMeasure::HPrimeRms, 1.0);
   expect_stop_everywhere("normal contact", [&](auto stop) {
     auto body = std::make_unique<SlabHalfSpace>(g, 1.0, PlanRigor::Estimate);
