@@ -38,13 +38,7 @@ void Particles::set_density(double density) {
 }
 
 void Particles::reserve(std::size_t n) {
-  for (auto* v : {&position, &velocity, &omega, &force, &torque}) v->reserve(n);
-  for (auto* v : {&radius, &mass, &inv_mass, &inv_inertia}) v->reserve(n);
-  id.reserve(n);
-  material.reserve(n);
-  body.reserve(n);
-  wall.reserve(n);
-  image.reserve(n);
+  for_each_array([n](auto& v) { v.reserve(n); });
 }
 
 std::size_t Particles::count_mobile() const {
@@ -77,39 +71,13 @@ void Particles::reorder(std::span<const std::size_t> order) {
     if (permutation) seen[order[k]] = 1;
   }
   if (!permutation) throw std::invalid_argument("Particles::reorder: the order is not a permutation of the particles");
-  permute(position, order);
-  permute(velocity, order);
-  permute(omega, order);
-  permute(force, order);
-  permute(torque, order);
-  permute(radius, order);
-  permute(mass, order);
-  permute(inv_mass, order);
-  permute(inv_inertia, order);
-  permute(id, order);
-  permute(material, order);
-  permute(body, order);
-  permute(wall, order);
-  permute(image, order);
+  for_each_array([&](auto& v) { permute(v, order); });
 }
 
 void Particles::remove_if(const std::function<bool(std::size_t)>& remove) {
   std::vector<char> keep(size());
   for (std::size_t i = 0; i < size(); ++i) keep[i] = remove(i) ? 0 : 1;
-  compact(position, keep);
-  compact(velocity, keep);
-  compact(omega, keep);
-  compact(force, keep);
-  compact(torque, keep);
-  compact(radius, keep);
-  compact(mass, keep);
-  compact(inv_mass, keep);
-  compact(inv_inertia, keep);
-  compact(id, keep);
-  compact(material, keep);
-  compact(body, keep);
-  compact(wall, keep);
-  compact(image, keep);
+  for_each_array([&](auto& v) { compact(v, keep); });
 }
 
 }  // namespace wearscale::dem

@@ -60,6 +60,14 @@ class Particles {
   std::vector<std::array<std::int32_t, 3>> image;  ///< periodic images crossed
 
  private:
+  /// Calls f on every per-particle array: what moves or drops particles
+  /// (reorder, remove_if, reserve) treats them all alike, named once here.
+  template <class F>
+  void for_each_array(F&& f) {
+    f(position), f(velocity), f(omega), f(force), f(torque);
+    f(radius), f(mass), f(inv_mass), f(inv_inertia);
+    f(id), f(material), f(body), f(wall), f(image);
+  }
   std::int64_t next_id_ = 1;
 };
 
