@@ -209,7 +209,7 @@ void Simulation::integrate_first_half(bool clear_forces) {
   const std::size_t n = p.size();
   const double half = 0.5 * dt_;
   double max_v2 = 0.0;
-  const bool virial = clear_forces && track_virial_ && virial_.size() == n;
+  const bool virial = clear_forces && track_virial_;
 #pragma omp parallel for schedule(static) reduction(max : max_v2) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 f = p.force[i], tq = p.torque[i];
@@ -277,12 +277,14 @@ void Simulation::step() {
   if (!(dt_ > 0.0)) throw InputError("DEM: set a time step before running");
   if (!forces_valid_) forces(false);
   forces_valid_ = false;  // from here until the step's forces are in
-  integrate_first_half(true);
+  // The half-kick zeroes what it has read, unless the virials are yet to be sized.
+  const bool clear = !track_virial_ || virial_.size() == particles_.size();
+  integrate_first_half(clear);
   ++since_build_;
   if ((settings_.every > 0 && since_build_ >= settings_.every) ||
       (settings_.check_displacement && neighbors_.moved_beyond_half_skin(particles_)))
     rebuild();
-  forces(true, virial_.size() == particles_.size() || !track_virial_);
+  forces(true, clear);
   integrate_second_half();
   ++step_;
   time_ += dt_;

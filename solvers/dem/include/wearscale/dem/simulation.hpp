@@ -115,8 +115,8 @@ class Simulation {
   /// cleared: the forces, torques and virials are already zero.
   void forces(bool advance, bool cleared = false);
   void prepare_pairs();
-  /// clear_forces: zero the forces, torques and virials once read (the step's
-  /// next force evaluation then needs no pass of its own to do it).
+  /// clear_forces: zero the forces, torques and (tracked, sized) virials once
+  /// read (the step's next force evaluation then needs no pass of its own).
   void integrate_first_half(bool clear_forces = false);
   void integrate_second_half();
   void rebuild();
