@@ -227,11 +227,17 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
 
   const Particles& q = sim.particles();
   const std::size_t n = q.size();
+  // The rolling body: its members, and each particle's membership as a flag
+  // (the search's) and as a number (the dumps' column), kept together.
+  std::vector<std::size_t> members;
   std::vector<char> in_body(n, 0);
-  std::vector<std::size_t> members = body0;
-  for (std::size_t i : members) in_body[i] = 1;
   std::vector<double> body_flag(n, 0.0);
-  for (std::size_t i : members) body_flag[i] = 1.0;
+  auto set_members = [&](std::vector<std::size_t> next) {
+    for (std::size_t i : members) in_body[i] = 0, body_flag[i] = 0.0;
+    members = std::move(next);
+    for (std::size_t i : members) in_body[i] = 1, body_flag[i] = 1.0;
+  };
+  set_members(body0);
   std::vector<std::size_t> all(n);
   for (std::size_t i = 0; i < n; ++i) all[i] = i;
   const double tol = 0.25 * d0;
@@ -282,15 +288,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
       if (old_in[best] > 0)
         for (std::size_t k : clusters.clusters[best].members) next.push_back(index[k]);
     }
-    for (std::size_t i : members) {
-      in_body[i] = 0;
-      body_flag[i] = 0.0;
-    }
-    members = std::move(next);
-    for (std::size_t i : members) {
-      in_body[i] = 1;
-      body_flag[i] = 1.0;
-    }
+    set_members(std::move(next));
     window.from = now;
     window.sliding = sliding;
   };
@@ -357,13 +355,10 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
     window.sliding = t[4];
     out.reached_substrate_at = t[5];
     out.history = samples<OxideAsperitySample>(st, "oxide.history");
-    for (std::size_t i : members) in_body[i] = 0, body_flag[i] = 0.0;
-    members = indices(st, "oxide.members");
-    for (std::size_t i : members) {
+    auto kept = indices(st, "oxide.members");
+    for (std::size_t i : kept)
       if (i >= n) throw InputError(fmt::format("{}: oxide.members names particle {} of {}", st.origin, i, n));
-      in_body[i] = 1;
-      body_flag[i] = 1.0;
-    }
+    set_members(std::move(kept));
     window.from = points(st, "oxide.window");
     if (out.history.empty() || (!window.from.empty() && window.from.size() != n))
       throw InputError(fmt::format("{}: not an oxide-asperity state of this system", st.origin));
