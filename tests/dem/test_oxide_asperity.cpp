@@ -21,28 +21,17 @@
 
 #include <cmath>
 
+#include "reduced_oxide_asperity.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/oxide_asperity.hpp"
-#include "wearscale/materials/material.hpp"
 
 using namespace wearscale;
 using namespace wearscale::dem;
 
 namespace {
-constexpr double d0 = 6e-9;
+constexpr double d0 = test_support::reduced_oxide_d0;
 
-OxideAsperitySpec reduced() {
-  OxideAsperitySpec s;
-  s.oxide = cohesive_material(materials::silica(), 0.5);            // Table 6.5
-  s.substrate = cohesive_material(materials::silicon(), 0.5, 0.9);  // Table 2.1, η as the case
-  s.substrate.poisson = 0.2;  // as the case: pair forces model ν ≤ 1/4
-  s.d0 = d0;
-  s.box = {150e-9, 150e-9, 95e-9};
-  s.velocity = 50.0;
-  s.sliding_distance = 60e-9;
-  s.settle_distance = 1e-9;
-  return s;
-}
+OxideAsperitySpec reduced() { return test_support::reduced_oxide_asperity(60e-9); }
 }  // namespace
 
 TEST(OxideAsperity, TheCylinderRollsGrowsFromTheLayerAndLeavesATrench) {

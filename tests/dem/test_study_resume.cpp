@@ -11,6 +11,7 @@
 #include <map>
 
 #include "input_error_of.hpp"
+#include "reduced_oxide_asperity.hpp"
 #include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -51,6 +52,17 @@ SlidingCellSpec coarse_cell() {
   return c;
 }
 
+// A junction of D = 20 nm slid by one d0.
+ShearedJunctionSpec coarse_junction() {
+  ShearedJunctionSpec s;
+  s.material = cohesive_material(materials::silica(), 0.5);
+  s.diameter = 20e-9;
+  s.d0 = d0;
+  s.velocity = 50.0;
+  s.sliding_distance = d0;
+  return s;
+}
+
 void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<SlidingSample>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -66,12 +78,7 @@ void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<
 }  // namespace
 
 TEST(StudyResume, AShearedJunctionResumedMidSlideEndsBitForBitAsTheUninterruptedRun) {
-  ShearedJunctionSpec s;
-  s.material = cohesive_material(materials::silica(), 0.5);
-  s.diameter = 20e-9;
-  s.d0 = d0;
-  s.velocity = 50.0;
-  s.sliding_distance = d0;
+  const ShearedJunctionSpec s = coarse_junction();
   Capture capture;
   const auto straight = run_sheared_junction(s, {}, capture.hooks());
   ASSERT_GE(capture.states.size(), 3u);
@@ -173,15 +180,7 @@ TEST(StudyResume, APatchTestResumedInEachOfItsThreeTestsEndsBitForBitAsTheUninte
 // while sliding (after the body's first window) both resume to the
 // uninterrupted run's history, body and trench, bit for bit.
 TEST(StudyResume, TheOxidizedAsperityResumedLoadingOrSlidingEndsBitForBitAsTheUninterruptedRun) {
-  OxideAsperitySpec s;
-  s.oxide = cohesive_material(materials::silica(), 0.5);
-  s.substrate = cohesive_material(materials::silicon(), 0.5, 0.9);
-  s.substrate.poisson = 0.2;
-  s.d0 = d0;
-  s.box = {150e-9, 150e-9, 95e-9};
-  s.velocity = 50.0;
-  s.sliding_distance = 3 * d0;  // a body window after 2 d0, one at the end
-  s.settle_distance = 1e-9;
+  const auto s = test_support::reduced_oxide_asperity(3 * d0);  // a body window after 2 d0, one at the end
   Capture capture;
   const auto straight = run_oxide_asperity(s, {}, capture.hooks());
   ASSERT_GE(capture.states.size(), 8u);
@@ -203,24 +202,10 @@ TEST(StudyResume, TheOxidizedAsperityResumedLoadingOrSlidingEndsBitForBitAsTheUn
 }
 
 TEST(StudyResume, AnOxidizedAsperityRefusesTheStateOfAnotherStudyNamingTheEntry) {
-  ShearedJunctionSpec j;
-  j.material = cohesive_material(materials::silica(), 0.5);
-  j.diameter = 20e-9;
-  j.d0 = d0;
-  j.velocity = 50.0;
-  j.sliding_distance = d0;
   Capture junction;
-  run_sheared_junction(j, {}, junction.hooks());
+  run_sheared_junction(coarse_junction(), {}, junction.hooks());
   ASSERT_FALSE(junction.states.empty());
-  OxideAsperitySpec s;
-  s.oxide = cohesive_material(materials::silica(), 0.5);
-  s.substrate = cohesive_material(materials::silicon(), 0.5, 0.9);
-  s.substrate.poisson = 0.2;
-  s.d0 = d0;
-  s.box = {150e-9, 150e-9, 95e-9};
-  s.velocity = 50.0;
-  s.sliding_distance = 2 * d0;
-  s.settle_distance = 1e-9;
+  const auto s = test_support::reduced_oxide_asperity(2 * d0);
   EXPECT_THAT(input_error_of([&] { run_oxide_asperity(s, {}, junction.resume(0.0)); }),
               ::testing::HasSubstr("oxide.tallies"));
 }
