@@ -181,13 +181,7 @@ void Simulation::restore_state(const CheckpointState& in) {
                                  kFormat, kFormat1));
   const std::size_t n = in.array("dem.radius").size();
   Particles& p = particles_;
-  for (auto* v : {&p.position, &p.velocity, &p.omega, &p.force, &p.torque}) v->resize(n);
-  for (auto* v : {&p.radius, &p.mass, &p.inv_mass, &p.inv_inertia}) v->resize(n);
-  p.id.resize(n);
-  p.material.resize(n);
-  p.body.resize(n);
-  p.wall.resize(n);
-  p.image.resize(n);
+  p.for_each_array([n](auto& v) { v.resize(n); });
   unflatten(in, "dem.position", p.position);
   unflatten(in, "dem.velocity", p.velocity);
   unflatten(in, "dem.omega", p.omega);

@@ -59,15 +59,17 @@ class Particles {
   std::vector<std::int16_t> wall;         ///< wall index or no_wall
   std::vector<std::array<std::int32_t, 3>> image;  ///< periodic images crossed
 
- private:
-  /// Calls f on every per-particle array: what moves or drops particles
-  /// (reorder, remove_if, reserve) treats them all alike, named once here.
+  /// Calls f on every per-particle array: what moves, drops or sizes particles
+  /// (reorder, remove_if, reserve, a restored state) treats them all alike,
+  /// named once here.
   template <class F>
   void for_each_array(F&& f) {
     f(position), f(velocity), f(omega), f(force), f(torque);
     f(radius), f(mass), f(inv_mass), f(inv_inertia);
     f(id), f(material), f(body), f(wall), f(image);
   }
+
+ private:
   std::int64_t next_id_ = 1;
 };
 
