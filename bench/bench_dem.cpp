@@ -13,10 +13,11 @@
 // (2 for none on two threads).
 //
 //   OMP_NUM_THREADS=1 build/bench/bench_dem --benchmark_filter=Hooke
-//   OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive build/bench/bench_dem --benchmark_filter=Hooke/20
-// (passive: threads waiting at a barrier sleep instead of spinning, which on
-// cores shared with other jobs keeps a waiting thread from taking the core
-// the other one needs; docs/dem.md, Speed.)
+//   OMP_NUM_THREADS=2 build/bench/bench_dem --benchmark_filter=Hooke/20
+// Waiting threads spin briefly, then sleep, as in the CLI (thread_waiting.hpp;
+// the context line "threads_wait" says what was in force): on cores shared
+// with other jobs a waiting thread then does not take the core the other one
+// needs; OMP_WAIT_POLICY or GOMP_SPINCOUNT override it (docs/dem.md, Speed).
 #include <algorithm>
 #include <benchmark/benchmark.h>
 #include <chrono>
@@ -30,6 +31,7 @@
 #include <sys/resource.h>
 #include <vector>
 
+#include "wearscale/core/thread_waiting.hpp"
 #include "wearscale/dem/anchor_block.hpp"
 #include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
@@ -52,6 +54,8 @@ double peak_rss_mib() { return status_mib("VmHWM:"); }
 // What the process holds before any system is built (code, libraries, the
 // runtime's heaps): not per particle.
 const double start_rss_mib = status_mib("VmRSS:");
+// How the threads wait, in the run's context lines.
+const bool waiting_shown = (benchmark::AddCustomContext("threads_wait", wearscale::thread_waiting()), true);
 
 // CPU seconds so far of each thread of the OpenMP team (the same threads
 // run every parallel region of the same size).

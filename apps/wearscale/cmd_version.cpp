@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "wearscale/core/thread_waiting.hpp"
 #include "wearscale/core/version.hpp"
 #include "wearscale/io/library_versions.hpp"
 
@@ -18,11 +19,13 @@ Command add_version(CLI::App& app) {
     if (*json) {
       nlohmann::json libs = nlohmann::json::object();
       for (const auto& [name, v] : library_versions()) libs[name] = v;
-      std::cout << nlohmann::json{{"wearscale", version()}, {"libraries", libs}}.dump(2) << '\n';
+      std::cout << nlohmann::json{{"wearscale", version()}, {"libraries", libs}, {"threads_wait", thread_waiting()}}.dump(2)
+                << '\n';
       return 0;
     }
     std::cout << "wearscale " << version() << '\n';
     for (const auto& [name, v] : library_versions()) std::cout << fmt::format("  {:<14} {}\n", name, v);
+    std::cout << fmt::format("threads wait: {}\n", thread_waiting());
     return 0;
   };
 }

@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/thread_waiting.hpp"
 #include "wearscale/core/version.hpp"
 
 namespace py = pybind11;
@@ -36,6 +37,8 @@ PYBIND11_MODULE(_wearscale, m) {
     }
   });
   m.attr("__version__") = WEARSCALE_VERSION;
+  // What the package's __init__.py sets GOMP_SPINCOUNT to (the CLI's value).
+  m.attr("_waiting_spin_count") = wearscale::waiting_spin_count;
 
   auto surface = m.def_submodule("surface", "Rough surfaces: generation, roughness measures, PSD, topography files.");
   wearscale::python::bind_surface(surface);

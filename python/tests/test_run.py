@@ -114,3 +114,21 @@ def test_shards_of_a_wear_maps_surfaces_then_merge_give_the_map_run_at_once(tmp_
     untimed = lambda results: {k: v for k, v in results.items() if "seconds" not in k}  # noqa: E731
     assert untimed(merged.results) == untimed(whole.results)
     assert (tmp_path / "shards" / "wearmap_rough.csv").read_text() == (tmp_path / "whole" / "wearmap_rough.csv").read_text()
+
+
+def _libgomp_settings(env_extra):
+    """What libgomp reports it read (OMP_DISPLAY_ENV) in a fresh interpreter that imports wearscale."""
+    import os, subprocess, sys
+    env = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+    env.update(env_extra, OMP_DISPLAY_ENV="verbose")
+    r = subprocess.run([sys.executable, "-c", "import wearscale"], env=env, capture_output=True, text=True,
+                       check=True)
+    return r.stderr
+
+
+def test_threads_spin_briefly_then_sleep_as_in_the_cli_unless_the_user_chose():
+    from wearscale import _wearscale
+    assert ws._WAITING_SPIN_COUNT == _wearscale._waiting_spin_count  # the C++ constant the CLI sets
+    assert f"GOMP_SPINCOUNT = '{ws._WAITING_SPIN_COUNT}'" in _libgomp_settings({})
+    chosen = _libgomp_settings({"OMP_WAIT_POLICY": "active"})
+    assert "OMP_WAIT_POLICY = 'ACTIVE'" in chosen and f"GOMP_SPINCOUNT = '{ws._WAITING_SPIN_COUNT}'" not in chosen

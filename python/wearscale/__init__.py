@@ -14,6 +14,15 @@ All quantities are SI (m, Pa, N, J). Bad input raises :class:`InputError` (a Val
 naming the key, value and allowed range; a numerical failure raises :class:`NumericalError`
 (an ArithmeticError). Solves release the GIL, so threads run them in parallel.
 """
+import os as _os
+
+# How idle OpenMP threads wait: spin briefly, then sleep, as the CLI's do (docs/dem.md, "Waiting
+# threads"). libgomp reads this once, when the compiled module below loads it; a user's
+# OMP_WAIT_POLICY or GOMP_SPINCOUNT wins, and a libgomp already loaded by another module keeps its own.
+_WAITING_SPIN_COUNT = "1000"  # wearscale::waiting_spin_count
+if "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ:
+    _os.environ["GOMP_SPINCOUNT"] = _WAITING_SPIN_COUNT
+
 from ._wearscale import InputError, NumericalError, OutputError, __version__
 from . import contact, dem, io, materials, surface, wear
 from .run import RunResult, merge, run

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "wearscale/core/thread_waiting.hpp"
 #include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -69,6 +70,27 @@ TEST(Cli, VersionNamesTheLibraries) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["libraries"].contains("FFTW"));
   EXPECT_TRUE(j["libraries"].contains("HDF5"));
+}
+
+// libgomp reads how its threads wait once, when it loads; the program chooses
+// before that (thread_waiting.hpp) unless the user did. OMP_DISPLAY_ENV makes
+// libgomp print what it read.
+TEST(Cli, ThreadsSpinBrieflyThenSleepUnlessTheUserChose) {
+  const std::string clean = "env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT OMP_DISPLAY_ENV=verbose";
+  const auto r = run_cli("version", work, "", clean);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr(std::string("GOMP_SPINCOUNT = '") + wearscale::waiting_spin_count + "'"));
+  EXPECT_THAT(r.out, HasSubstr(std::string("threads wait: spin ") + wearscale::waiting_spin_count +
+                               " times, then sleep (GOMP_SPINCOUNT=" + wearscale::waiting_spin_count +
+                               ", set by wearscale)"));
+  const auto passive = run_cli("version --json", work, "", clean + " OMP_WAIT_POLICY=passive");
+  ASSERT_EQ(passive.status, 0) << passive.err;
+  EXPECT_THAT(passive.err, HasSubstr("OMP_WAIT_POLICY = 'PASSIVE'"));
+  EXPECT_THAT(passive.err, HasSubstr("GOMP_SPINCOUNT = '0'"));
+  EXPECT_EQ(nlohmann::json::parse(passive.out)["threads_wait"], "OMP_WAIT_POLICY=passive (set by the user)");
+  const auto spins = run_cli("version", work, "", clean + " GOMP_SPINCOUNT=7");
+  EXPECT_THAT(spins.err, HasSubstr("GOMP_SPINCOUNT = '7'"));
+  EXPECT_THAT(spins.out, HasSubstr("GOMP_SPINCOUNT=7, set by the user"));
 }
 
 TEST(Cli, DashDashVersionPrintsTheVersionAndSucceeds) {

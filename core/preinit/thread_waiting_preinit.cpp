@@ -1,0 +1,47 @@
+// The pre-initialisation that chooses how OpenMP threads wait
+// (thread_waiting.hpp). Linked into executables only: a shared object may
+// not have a .preinit_array.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstring>
+#include <iterator>
+
+#include "wearscale/core/thread_waiting.hpp"
+
+namespace {
+constexpr char spin_count_entry[] = "GOMP_SPINCOUNT=";
+constexpr char marker_entry[] = "WEARSCALE_THREAD_WAITING=1";
+
+bool names(const char* entry, const char* name) {
+  const std::size_t n = std::strlen(name);
+  return std::strncmp(entry, name, n) == 0 && entry[n] == '=';
+}
+
+// Runs before any library is initialised, the C library's included: the
+// environment is read from `envp` (getenv and setenv do not work yet), and a
+// variable could not be set for libgomp anyway (the C library's
+// initialisation takes the environment the process was started with). So
+// the program starts itself again with the variable added, before anything
+// is open or written; if that fails (no /proc), it goes on with the
+// runtime's default.
+void choose_thread_waiting(int, char** argv, char** envp) {
+  if (argv == nullptr || envp == nullptr) return;
+  static char* env[4096];  // no allocator is ready yet; a larger environment keeps the default
+  std::size_t count = 0;
+  for (; envp[count] != nullptr; ++count)
+    if (count + 3 > std::size(env) || names(envp[count], "OMP_WAIT_POLICY") || names(envp[count], "GOMP_SPINCOUNT"))
+      return;
+  static char spin_count[sizeof spin_count_entry + sizeof wearscale::waiting_spin_count];
+  std::strcpy(spin_count, spin_count_entry);
+  std::strcat(spin_count, wearscale::waiting_spin_count);
+  for (std::size_t k = 0; k < count; ++k) env[k] = envp[k];
+  env[count] = spin_count;
+  env[count + 1] = const_cast<char*>(marker_entry);
+  env[count + 2] = nullptr;
+  ::execve("/proc/self/exe", argv, env);
+}
+}  // namespace
+
+__attribute__((section(".preinit_array"), used)) static void (*const wearscale_thread_waiting)(int, char**, char**) =
+    choose_thread_waiting;
