@@ -297,7 +297,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
     const long chunk = std::min({spec.record_every, planned - step, step < settle_steps ? settle_steps - step : planned});
     sum_t = sum_n = 0.0;
     summed = 0;
-    sim.run(chunk, accumulate);
+    sim.run(chunk, accumulate, Simulation::StopInside::No);
     step += chunk;
     JunctionSample s;
     s.time = sim.time();

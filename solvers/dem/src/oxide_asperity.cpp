@@ -374,7 +374,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
       sum_t += 0.5 * (sim.wall(bottom_wall).force.x - sim.wall(top_wall).force.x);
       sum_n += 0.5 * (sim.wall(top_wall).force.z - sim.wall(bottom_wall).force.z);
       ++summed;
-    });
+    }, Simulation::StopInside::No);
     step += chunk;
     const double sliding = sim.wall(top_wall).displacement.x;
     if (step == settle) {

@@ -242,7 +242,7 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
     previous = t[1];
   }
   while (steps < spec.max_elastic_steps) {
-    l.sim.run(chunk);
+    l.sim.run(chunk, {}, Simulation::StopInside::No);
     steps += chunk;
     if (progress) progress("elastic", steps, spec.max_elastic_steps);
     const double now = l.sim.wall(l.top).displacement[load_axis];
@@ -290,7 +290,7 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, Pa
   }
   const long chunk = 100;
   while (done < planned) {
-    l.sim.run(chunk);
+    l.sim.run(chunk, {}, Simulation::StopInside::No);
     done += chunk;
     const double stress = inner_stress(l)[static_cast<std::size_t>(component)];
     peak = std::max(peak, stress);

@@ -153,7 +153,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
   }
   while (step < planned) {
     const long chunk = std::min(spec.record_every, planned - step);
-    sim.run(chunk);
+    sim.run(chunk, {}, Simulation::StopInside::No);
     step += chunk;
     const auto s = sample_now();
     out.history.push_back(s);

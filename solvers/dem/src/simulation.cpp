@@ -290,14 +290,18 @@ void Simulation::step() {
   time_ += dt_;
 }
 
-void Simulation::run(long steps, const std::function<void(long)>& observe) {
+void Simulation::run(long steps, const std::function<void(long)>& observe, StopInside inside) {
   const auto start = std::chrono::steady_clock::now();
+  const bool within = inside == StopInside::Yes;
   for (long s = 0; s < steps; ++s) {
     // SIGINT/SIGTERM: at the start of a call, so that a study running in
-    // chunks stops between them (where it checkpoints), and every 1024 steps;
-    // in a call that has run for more than 5 s, at the next step (1024 steps
-    // of 500 000 particles take minutes).
-    if (s % 1024 == 0 || (interrupt_requested() && std::chrono::steady_clock::now() - start > std::chrono::seconds(5)))
+    // chunks stops between them (where it checkpoints); unless the caller
+    // says so, also every 1024 steps and, in a call that has run for more
+    // than 5 s, at the next step (1024 steps of 500 000 particles take
+    // minutes). A chunk of a checkpointing driver runs to its end: stopped
+    // inside it, the run would lose everything since its last checkpoint.
+    if (s == 0 || (within && (s % 1024 == 0 || (interrupt_requested() &&
+                                                 std::chrono::steady_clock::now() - start > std::chrono::seconds(5)))))
       throw_if_interrupted(fmt::format("dem (step {})", step_));
     step();
     if (observe) observe(step_);

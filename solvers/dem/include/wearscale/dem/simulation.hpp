@@ -71,10 +71,15 @@ class Simulation {
   /// One velocity-Verlet step (6.1). Throws NumericalError when a velocity
   /// becomes non-finite or a particle jumps further than the skin in a step.
   void step();
+  /// Where run() may stop on SIGINT/SIGTERM besides the start of the call.
+  enum class StopInside {
+    Yes,  ///< also every 1024 steps, and at the next step once the call has run 5 s
+    No,   ///< never: a driver that runs in chunks and checkpoints between them
+          ///< (its checkpoint, saved after the chunk, then holds the stop's state)
+  };
   /// `steps` steps; `observe(step)` after each when given. Throws
-  /// Interrupted when SIGINT/SIGTERM arrived (checked at the start of the
-  /// call and every 1024 steps).
-  void run(long steps, const std::function<void(long)>& observe = {});
+  /// Interrupted when SIGINT/SIGTERM arrived (see StopInside).
+  void run(long steps, const std::function<void(long)>& observe = {}, StopInside inside = StopInside::Yes);
 
   long step_count() const { return step_; }
   double time() const { return time_; }
