@@ -66,11 +66,25 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t k = 0; k < n; ++k)
     next_[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
+  const std::size_t layer_cells = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]);
+  layer_start_.assign(static_cast<std::size_t>(cells_[2]) + 1, 0);
   for (std::size_t k = n; k-- > 0;) {
     const std::size_t c = next_[k];
     next_[k] = head_[c];
     head_[c] = static_cast<std::uint32_t>(k);
+    ++layer_start_[c / layer_cells + 1];
   }
+  for (std::size_t l = 1; l < layer_start_.size(); ++l) layer_start_[l] += layer_start_[l - 1];
+}
+
+std::pair<int, int> CellGrid::layer_range(int part, int parts) const {
+  auto begin = [&](int t) {
+    if (t <= 0) return 0;
+    if (t >= parts) return cells_[2];
+    const std::size_t share = layer_start_.back() * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
+    return static_cast<int>(std::lower_bound(layer_start_.begin(), layer_start_.end() - 1, share) - layer_start_.begin());
+  };
+  return {begin(part), begin(part + 1)};
 }
 
 }  // namespace wearscale::dem

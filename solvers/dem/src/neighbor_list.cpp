@@ -83,7 +83,8 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   }
 }
 
-// One walk over the cells, split over the threads by cell layers. A pair
+// One walk over the cells, split over the threads by runs of cell layers
+// holding about equal numbers of particles (CellGrid::layer_range). A pair
 // belongs to the row of its lower index; the home particle's pairs with
 // higher indices (most pairs, when particles are numbered along the cells)
 // are kept as a stream of neighbours with a count per home particle (5 bytes
@@ -96,7 +97,6 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
 void NeighborList::search(const Particles& p, double range, int threads) {
   const std::size_t n = p.size();
   threads = std::max(1, std::min(threads, grid_.layers()));
-  const int layers = grid_.layers();
   streams_.resize(static_cast<std::size_t>(threads));
   for (auto& st : streams_) {
     st.neighbor.clear();
@@ -109,6 +109,7 @@ void NeighborList::search(const Particles& p, double range, int threads) {
   {
     const int t = omp_get_thread_num(), team = omp_get_num_threads();
     Stream& out = streams_[static_cast<std::size_t>(t)];
+    const auto [z_begin, z_end] = grid_.layer_range(t, team);  // about equal particle counts
     // Room for a dense packing's pairs from the start: a vector that grows
     // leaves its old blocks resident in the thread's heap (untouched room
     // is not).
@@ -132,7 +133,7 @@ void NeighborList::search(const Particles& p, double range, int threads) {
             out.other.push_back({j, i, images_.mirrored(s)});
           }
         },
-        layers * t / team, layers * (t + 1) / team);
+        z_begin, z_end);
   }
   // The rows' counts: each home particle in one stream; the other pairs from any.
   count_.assign(n + 1, 0);

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "wearscale/dem/box.hpp"
@@ -40,6 +41,11 @@ class CellGrid {
   void for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_begin = 0, int z_end = -1) const;
   /// Cell layers along z.
   int layers() const { return cells_[2]; }
+  /// The layers [begin, end) of part `part` of `parts` runs of consecutive
+  /// layers holding about equal numbers of particles (a system denser at
+  /// one end, e.g. a substrate under empty space, splits where its particles
+  /// are, not where its layers are).
+  std::pair<int, int> layer_range(int part, int parts) const;
 
  private:
   static constexpr std::uint32_t none = 0xffffffffu;
@@ -60,6 +66,7 @@ class CellGrid {
   PeriodicImages images_;
   std::array<Vec3, PeriodicImages::max_count> shift_{};
   std::vector<std::uint32_t> head_, next_;
+  std::vector<std::size_t> layer_start_;  // particles in the layers below each layer, then all
 };
 
 template <class Visit>
