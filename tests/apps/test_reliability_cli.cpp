@@ -297,6 +297,18 @@ TEST(Resume, SigintStopsADemStudyCleanlyAndItResumes) {
   EXPECT_EQ(left[1], "checkpoint.h5");
   EXPECT_THAT(left[0], testing::StartsWith(".junction.dump.partial-"));
 
+  // Stopped again once resumed: the hint is the resumed command, --resume once.
+  ASSERT_TRUE(stop_when(args + " --resume stopped", dir, SIGINT,
+                        [&] { return has_partial_file(dir / "stopped", ".run.h5.partial-"); }, status));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir / "cli.stderr");
+  const std::string again = slurp(dir / "cli.stderr");
+  const auto hint = again.find("continue with:");
+  ASSERT_NE(hint, std::string::npos) << again;
+  const std::string line = again.substr(hint, again.find('\n', hint) - hint);
+  EXPECT_THAT(line, HasSubstr("--resume stopped"));
+  EXPECT_EQ(line.find("--resume"), line.rfind("--resume")) << line;
+
   auto r = run_cli(args + " --resume stopped", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   expect_same_dem_outputs(study, dir / "reference", dir / "stopped");

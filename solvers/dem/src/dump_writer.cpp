@@ -116,7 +116,12 @@ bool DumpWriter::resume(const DumpPosition& at) {
   if (ec || size < at.bytes || at.partial.empty() || previous == partial_) return false;
   std::fclose(file_);
   file_ = nullptr;
-  std::filesystem::rename(previous, partial_);
+  std::filesystem::remove(partial_, ec);  // the empty one this writer had opened
+  // Continued under its own name, and kept whatever happens: the checkpoint
+  // on disk refers to it until a newer one is saved (renamed, a resumed run
+  // stopped before its first checkpoint lost the snapshots of the runs before).
+  partial_ = previous;
+  keep_partial_ = true;
   std::filesystem::resize_file(partial_, at.bytes);
   file_ = std::fopen(partial_.c_str(), "ab");
   if (!file_) throw OutputError(fmt::format("cannot write {}: {}", partial_.string(), std::strerror(errno)));

@@ -56,9 +56,11 @@ class DumpWriter {
   /// temporary file is kept if the writer is destroyed uncommitted.
   DumpPosition position();
   /// Continues the file of a killed or interrupted run from `at` (what its
-  /// checkpoint recorded): its temporary file becomes this writer's, cut back
-  /// to `at.bytes` (frames written after the checkpoint are dropped). False,
-  /// and an empty file, if that file is gone or shorter than `at.bytes`.
+  /// checkpoint recorded): its temporary file becomes this writer's, under
+  /// its own name and kept if this run stops too (the checkpoint refers to
+  /// it), cut back to `at.bytes` (frames written after the checkpoint are
+  /// dropped). False, and an empty file, if that file is gone or shorter than
+  /// `at.bytes`.
   bool resume(const DumpPosition& at);
   /// Closes the file and moves it to its final name.
   void commit();
