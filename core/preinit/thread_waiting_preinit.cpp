@@ -39,7 +39,13 @@ void choose_thread_waiting(int, char** argv, char** envp) {
   env[count] = spin_count;
   env[count + 1] = const_cast<char*>(marker_entry);
   env[count + 2] = nullptr;
-  ::execve("/proc/self/exe", argv, env);
+  // The program's own path (not /proc/self/exe, whose name would become
+  // the process's: `ps` and `killall wearscale` would see "exe").
+  static char self[4096];
+  const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  if (length <= 0) return;
+  self[length] = '\0';
+  ::execve(self, argv, env);
 }
 }  // namespace
 
