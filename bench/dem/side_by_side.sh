@@ -5,11 +5,15 @@
 #   bench/dem/side_by_side.sh [build/bench/bench_dem] [rounds]
 # Skips an engine that is not installed, with a message. Prints the load
 # average beside each figure (on shared cores the CPU-time figures are the
-# ones to read), and wearscale's Hooke block on two threads (wall clock,
-# OMP_WAIT_POLICY=passive: waiting threads sleep, see docs/dem.md) against
-# one: that speed-up means something only on a quiet machine (load < 1); on a
-# loaded one read the busiest thread's CPU figure against one thread's (an
-# upper bound: no waiting counted). Each benchmark runs in its own process.
+# ones to read), and wearscale's Hooke block on two threads (wall clock;
+# waiting threads spin briefly, then sleep, as bench_dem and the CLI set it:
+# docs/dem.md) against one: that speed-up means something only on a quiet
+# machine (load < 1); on a loaded one read the busiest thread's CPU figure
+# against one thread's (an upper bound: no waiting counted). Beside it, what
+# the machine itself gives two cores: two one-thread runs at once against one
+# alone (their summed wall-clock figures; shared caches, memory bandwidth and
+# clocks make it less than 2), and LAMMPS on two MPI ranks against one (when
+# mpirun is there). Each benchmark runs in its own process.
 set -u
 bench=${1:-build/bench/bench_dem}
 rounds=${2:-2}
@@ -32,7 +36,7 @@ ours() {  # filter [threads]: one line per benchmark, each in its own process (t
   # (an upper bound of the wall-clock speed with a core per thread) and all threads' CPU over it
   local f
   for f in $(echo "$1" | tr '|' ' '); do
-    OMP_NUM_THREADS=${2:-1} OMP_WAIT_POLICY=passive "$bench" --benchmark_filter="$f" 2>/dev/null |
+    OMP_NUM_THREADS=${2:-1} "$bench" --benchmark_filter="$f" 2>/dev/null |
       awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = m = u = r = 0
         for (i = 1; i <= NF; ++i) { split($i, a, "=")
           if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
@@ -43,12 +47,35 @@ ours() {  # filter [threads]: one line per benchmark, each in its own process (t
           $1, t, c, w, extra, b, m, load }'
   done
 }
+two_alone() {  # filter: two one-thread runs at once, their summed wall-clock figures
+  local f=$1
+  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" > "$work/a" 2>/dev/null &
+  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" > "$work/b" 2>/dev/null
+  wait
+  cat "$work/a" "$work/b" | awk -v f="$f" -v load="$(load)" '/Mpsteps_per_wall_s/ { for (i = 1; i <= NF; ++i) {
+      split($i, a, "="); if (a[1] == "Mpsteps_per_wall_s") w += a[2] } }
+    END { printf "two 1T runs at once %-9s %6.2f M particle-steps per wall-second, summed  (load %s)\n", f, w, load }'
+}
+lammps_ranks() {  # n steps: LAMMPS's wall seconds on 1 and 2 MPI ranks
+  local n=$1 steps=$2 np t1 t2
+  if ! command -v lmp > /dev/null || ! command -v mpirun > /dev/null; then echo "LAMMPS on 2 ranks: lmp or mpirun not installed, skipped"; return; fi
+  for np in 1 2; do
+    /usr/bin/time -f %e -o "$work/time$np" mpirun --allow-run-as-root --oversubscribe -np $np lmp \
+      -in "$decks/in.dem_anchor.lammps" -var n "$n" -var nsteps "$steps" -var model hooke -log "$work/log" -screen none \
+      > /dev/null 2>&1 || { echo "LAMMPS on $np ranks n=$n: failed"; return; }
+  done
+  t1=$(cat "$work/time1"); t2=$(cat "$work/time2")
+  awk -v n="$n" -v a="$t1" -v b="$t2" -v load="$(load)" \
+    'BEGIN { printf "LAMMPS 2 ranks / 1 rank n=%s (wall, MPI start included) %.2f  (%.1f s, %.1f s; load %s)\n", n, a / b, a, b, load }'
+}
 for r in $(seq "$rounds"); do
   echo "== round $r"
   for size in "20 1000 Hooke/20|Cohesive/20" "40 500 Hooke/40|Cohesive/40"; do
     set -- $size
     ours "$3"
     ours "Hooke/$1" 2
+    two_alone "Hooke/$1/"
+    lammps_ranks "$1" "$2"
     engine "LAMMPS gran/hooke/history n=$1" "$1" "$2" lmp -in "$decks/in.dem_anchor.lammps" -var n "$1" -var nsteps "$2" -var model hooke
     engine "LIGGGHTS hooke/history n=$1" "$1" "$2" liggghts -in "$decks/in.dem_anchor.liggghts" -var n "$1" -var nsteps "$2"
   done
@@ -63,6 +90,10 @@ awk 'function v() { match($0, /[0-9.]+ M particle/); return substr($0, RSTART, R
      function keep(name, x, fmt) { printf fmt, x; if (!(name in seen)) order[++names] = name; seen[name] = seen[name] " " sprintf("%.2f", x) }
      /^wearscale Hooke\/20.* 1T/ { w20 = v(); s20 = wall() } /^wearscale Hooke\/40.* 1T/ { w40 = v(); s40 = wall() }
      /^wearscale Cohesive\/20.* 1T/ { c20 = v() } /^wearscale Cohesive\/40.* 1T/ { c40 = v() }
+     /^two 1T runs at once Hooke\/20/ { keep("32 000:  two 1T runs at once / one alone", v() / s20, "32 000:  two 1T runs at once / one     = %.2f  (the machine'"'"'s own two-core figure)\n") }
+     /^two 1T runs at once Hooke\/40/ { keep("256 000: two 1T runs at once / one alone", v() / s40, "256 000: two 1T runs at once / one     = %.2f  (the machine'"'"'s own two-core figure)\n") }
+     /^LAMMPS 2 ranks.*n=20/ { match($0, /\) [0-9.]+/); keep("32 000:  LAMMPS 2 ranks / 1 rank (wall)", substr($0, RSTART + 2, RLENGTH - 2) + 0, "32 000:  LAMMPS 2 ranks / 1 rank (wall) = %.2f\n") }
+     /^LAMMPS 2 ranks.*n=40/ { match($0, /\) [0-9.]+/); keep("256 000: LAMMPS 2 ranks / 1 rank (wall)", substr($0, RSTART + 2, RLENGTH - 2) + 0, "256 000: LAMMPS 2 ranks / 1 rank (wall) = %.2f\n") }
      /^wearscale Hooke\/20.* 2T/ { keep("32 000:  2 threads / 1 thread (wall)", wall() / s20, "32 000:  2 threads / 1 thread (wall)   = %.2f")
                                    printf ", busiest thread CPU / 1 thread CPU = %.2f\n", busiest() / w20 }
      /^wearscale Hooke\/40.* 2T/ { keep("256 000: 2 threads / 1 thread (wall)", wall() / s40, "256 000: 2 threads / 1 thread (wall)   = %.2f")
