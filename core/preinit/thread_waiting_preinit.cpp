@@ -10,12 +10,16 @@
 #include "wearscale/core/thread_waiting.hpp"
 
 namespace {
-constexpr char spin_count_entry[] = "GOMP_SPINCOUNT=";
-constexpr char marker_entry[] = "WEARSCALE_THREAD_WAITING=1";
-
 bool names(const char* entry, const char* name) {
   const std::size_t n = std::strlen(name);
   return std::strncmp(entry, name, n) == 0 && entry[n] == '=';
+}
+
+// "NAME=value" into `out`, which holds it (sized by the caller at compile time).
+char* entry(char* out, const char* name, const char* value) {
+  std::strcpy(out, name);
+  std::strcat(out, "=");
+  return std::strcat(out, value);
 }
 
 // Runs before any library is initialised, the C library's included: the
@@ -32,12 +36,11 @@ void choose_thread_waiting(int, char** argv, char** envp) {
   for (; envp[count] != nullptr; ++count)
     if (count + 3 > std::size(env) || names(envp[count], "OMP_WAIT_POLICY") || names(envp[count], "GOMP_SPINCOUNT"))
       return;
-  static char spin_count[sizeof spin_count_entry + sizeof wearscale::waiting_spin_count];
-  std::strcpy(spin_count, spin_count_entry);
-  std::strcat(spin_count, wearscale::waiting_spin_count);
+  static char spin_count[sizeof "GOMP_SPINCOUNT=" + sizeof wearscale::waiting_spin_count];
+  static char marker[sizeof wearscale::detail::thread_waiting_marker + sizeof "=1"];
   for (std::size_t k = 0; k < count; ++k) env[k] = envp[k];
-  env[count] = spin_count;
-  env[count + 1] = const_cast<char*>(marker_entry);
+  env[count] = entry(spin_count, "GOMP_SPINCOUNT", wearscale::waiting_spin_count);
+  env[count + 1] = entry(marker, wearscale::detail::thread_waiting_marker, "1");  // what thread_waiting() reads
   env[count + 2] = nullptr;
   // The program's own path (not /proc/self/exe, whose name would become
   // the process's: `ps` and `killall wearscale` would see "exe").

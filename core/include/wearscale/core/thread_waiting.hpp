@@ -5,9 +5,10 @@
 // the object library `wearscale::thread_waiting`, whose ELF pre-initialisation
 // function, unless the user set OMP_WAIT_POLICY or GOMP_SPINCOUNT, sets
 // GOMP_SPINCOUNT to `waiting_spin_count` and starts the program again with it
-// (once, before anything else; the child processes it starts inherit it). A thread then spins briefly (the gaps between a time
-// step's regions are microseconds) and sleeps if nothing comes: quick on
-// dedicated cores, no collapse on shared ones (docs/dem.md, "Waiting threads").
+// (once, before anything else; the child processes it starts inherit it).
+// A thread then spins briefly (the gaps between a time step's regions are
+// microseconds) and sleeps if nothing comes: quick on dedicated cores, no
+// collapse on shared ones (docs/dem.md, "#23 V").
 // The Python package does the same from its __init__.py.
 #include <string>
 
