@@ -22,18 +22,12 @@ std::vector<Vec3> substrate_under_space(int dense, int sparse) {
   return x;
 }
 
-Box plane_box() {
-  Box b;
-  b.lo = {0.0, 0.0, 0.0};
-  b.hi = {10.0, 10.0, 40.0};
-  b.periodic = {true, true, false};
-  return b;
-}
+const Box plane_box{{0.0, 0.0, 0.0}, {10.0, 10.0, 40.0}, {true, true, false}};
 }  // namespace
 
 TEST(CellGrid, ThePartsRunThroughEveryLayerOnceInOrder) {
   CellGrid grid;
-  grid.build(substrate_under_space(3000, 300), plane_box(), 1.0);
+  grid.build(substrate_under_space(3000, 300), plane_box, 1.0);
   for (int parts : {1, 2, 3, 7}) {
     int end = 0;
     for (int t = 0; t < parts; ++t) {
@@ -48,7 +42,7 @@ TEST(CellGrid, ThePartsRunThroughEveryLayerOnceInOrder) {
 
 TEST(CellGrid, TwoThreadsSplitADenseSubstrateWhereItsParticlesAreNotHalfwayUp) {
   CellGrid grid;
-  grid.build(substrate_under_space(3000, 300), plane_box(), 1.0);
+  grid.build(substrate_under_space(3000, 300), plane_box, 1.0);
   // 3000 of 3301 particles lie in the lowest eighth: half of them lie below
   // z ≈ 2.75 (about the 7 % of the height), so the split is in the lowest
   // eighth of the layers (halfway up it would hand one thread 91 % of them).
@@ -59,6 +53,6 @@ TEST(CellGrid, TwoThreadsSplitADenseSubstrateWhereItsParticlesAreNotHalfwayUp) {
   // Spread evenly, the split is halfway (to two layers; an open axis's
   // layers span the particles' extent, here z in [5, 40]).
   CellGrid even;
-  even.build(substrate_under_space(0, 4000), plane_box(), 1.0);
+  even.build(substrate_under_space(0, 4000), plane_box, 1.0);
   EXPECT_NEAR(even.layer_range(0, 2).second, even.layers() / 2, 2);
 }

@@ -45,13 +45,7 @@ Particles three() {
   return p;
 }
 
-Box box_xy_periodic() {
-  Box b;
-  b.lo = {0, 0, 0};
-  b.hi = {10, 10, 10};
-  b.periodic = {true, true, false};
-  return b;
-}
+const Box box_xy_periodic{{0, 0, 0}, {10, 10, 10}, {true, true, false}};
 }  // namespace
 
 TEST(DumpWriter, LammpsDumpParsesBackFrameByFrame) {
@@ -60,9 +54,9 @@ TEST(DumpWriter, LammpsDumpParsesBackFrameByFrame) {
   const std::vector<double> worn{0.0, 1.0, 0.0};
   {
     DumpWriter out(path);
-    out.write(0, 0.0, p, box_xy_periodic(), {{"worn", worn}});
+    out.write(0, 0.0, p, box_xy_periodic, {{"worn", worn}});
     p.position[0].x = 1.25;
-    out.write(100, 0.5, p, box_xy_periodic(), {{"worn", worn}});
+    out.write(100, 0.5, p, box_xy_periodic, {{"worn", worn}});
     EXPECT_FALSE(fs::exists(path));  // not before commit
     EXPECT_EQ(out.frames(), 2u);
     out.commit();
@@ -108,8 +102,8 @@ TEST(DumpWriter, ExtendedXyzParsesBack) {
   const auto p = three();
   {
     DumpWriter out(path, DumpFormat::extended_xyz);
-    out.write(7, 1.5, p, box_xy_periodic());
-    out.write(8, 2.0, p, box_xy_periodic());
+    out.write(7, 1.5, p, box_xy_periodic);
+    out.write(8, 2.0, p, box_xy_periodic);
     out.commit();
   }
   const auto lines = lines_of(path);
@@ -138,7 +132,7 @@ TEST(DumpWriter, NothingAppearsWithoutCommit) {
   const auto path = scratch("abandoned.dump");
   {
     DumpWriter out(path);
-    out.write(0, 0.0, three(), box_xy_periodic());
+    out.write(0, 0.0, three(), box_xy_periodic);
   }
   EXPECT_FALSE(fs::exists(path));
   EXPECT_TRUE(fs::is_empty(path.parent_path()));  // the temporary file is gone too
@@ -150,9 +144,9 @@ TEST(DumpWriter, RefusesAColumnOfTheWrongLength) {
   {
     DumpWriter out(path);
     const std::vector<double> two{1.0, 2.0};
-    EXPECT_THROW(out.write(0, 0.0, three(), box_xy_periodic(), {{"worn", two}}), std::invalid_argument);
+    EXPECT_THROW(out.write(0, 0.0, three(), box_xy_periodic, {{"worn", two}}), std::invalid_argument);
     const std::vector<double> ok{1.0, 2.0, 3.0};
-    EXPECT_THROW(out.write(0, 0.0, three(), box_xy_periodic(), {{"has space", ok}}), std::invalid_argument);
+    EXPECT_THROW(out.write(0, 0.0, three(), box_xy_periodic, {{"has space", ok}}), std::invalid_argument);
   }
   fs::remove_all(path.parent_path());
 }
@@ -165,16 +159,16 @@ TEST(DumpWriter, AResumedWriterContinuesTheFileFromTheCheckpointedPosition) {
   const Particles p = three();
   {
     DumpWriter w(straight);
-    for (long step = 0; step < 3; ++step) w.write(step, 0.0, p, box_xy_periodic());
+    for (long step = 0; step < 3; ++step) w.write(step, 0.0, p, box_xy_periodic);
     w.commit();
   }
   DumpPosition at;
   {
     DumpWriter killed(resumed);
-    killed.write(0, 0.0, p, box_xy_periodic());
-    killed.write(1, 0.0, p, box_xy_periodic());
+    killed.write(0, 0.0, p, box_xy_periodic);
+    killed.write(1, 0.0, p, box_xy_periodic);
     at = killed.position();                          // the checkpoint, after frame 1
-    killed.write(7, 0.0, p, box_xy_periodic());      // written after it: dropped on resume
+    killed.write(7, 0.0, p, box_xy_periodic);      // written after it: dropped on resume
   }  // destroyed uncommitted, as by an interrupt: the file a checkpoint refers to stays
   EXPECT_EQ(at.frames, 2u);
   EXPECT_TRUE(fs::exists(resumed.parent_path() / at.partial));
@@ -187,7 +181,7 @@ TEST(DumpWriter, AResumedWriterContinuesTheFileFromTheCheckpointedPosition) {
   DumpWriter w(resumed);
   ASSERT_TRUE(w.resume(at));
   EXPECT_EQ(w.frames(), 2u);
-  w.write(2, 0.0, p, box_xy_periodic());
+  w.write(2, 0.0, p, box_xy_periodic);
   w.commit();
   EXPECT_EQ(lines_of(resumed), lines_of(straight));
 
