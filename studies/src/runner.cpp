@@ -309,7 +309,8 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
     kept = kept || entry.path().filename() != OutputLock::kFolderLockName;
   if (!kept) throw Interrupted(fmt::format("{}; nothing was written (run it again to start afresh)", e.what()));
-  const bool resuming = command.find(" --resume ") != std::string::npos;  // a resumed run's own line says it already
+  // A resumed run's own line says it already (as `--resume DIR` or `--resume=DIR`).
+  const bool resuming = command.find(" --resume") != std::string::npos;
   throw Interrupted(fmt::format("{}; continue with: {}{}", e.what(), command,
                                 resuming ? std::string() : " --resume " + dir.string()));
 }
