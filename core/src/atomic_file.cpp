@@ -61,6 +61,42 @@ void write_all(int fd, const void* data, std::size_t size, const std::filesystem
   }
 }
 
+void reserve_space(const std::filesystem::path& path, std::uint64_t size) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) io_error("cannot write", path, errno);
+  int error = 0;
+  do {
+    error = ::posix_fallocate(fd, 0, static_cast<off_t>(size));  // returns the error, does not set errno
+  } while (error == EINTR);
+  ::close(fd);
+  if (error != 0) io_error("cannot reserve space for", path, error);
+}
+
+void write_in_place(const std::filesystem::path& path, std::uint64_t offset, const void* data, std::size_t size) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) io_error("cannot write", path, errno);
+  const char* p = static_cast<const char*>(data);
+  auto at = static_cast<off_t>(offset);
+  try {
+    while (size > 0) {
+      const ssize_t n = ::pwrite(fd, p, size, at);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        io_error("cannot write", path, errno);
+      }
+      if (n == 0) io_error("cannot write", path, ENOSPC);
+      p += n;
+      at += n;
+      size -= static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 && errno != EINVAL) io_error("cannot write", path, errno);  // EINVAL: a file system without fsync
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) io_error("cannot write", path, errno);
+}
+
 void commit_file(const std::filesystem::path& partial, const std::filesystem::path& final_path, Commit mode) {
   try {
     fsync_path(partial, O_RDONLY, true);

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <omp.h>
@@ -163,6 +164,28 @@ void gather(std::span<const double> local, std::span<double> all) {
 #endif
   if (all.size() != local.size()) throw std::invalid_argument("mpi::gather: the values do not fill the destination");
   std::copy(local.begin(), local.end(), all.begin());
+}
+
+void broadcast(std::span<double> values) {
+#ifdef WEARSCALE_MPI
+  if (active() && size() > 1)
+    MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+#else
+  (void)values;
+#endif
+}
+
+void broadcast(std::string& text) {
+#ifdef WEARSCALE_MPI
+  if (active() && size() > 1) {
+    unsigned long long length = text.size();
+    MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    text.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(text.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+  }
+#else
+  (void)text;
+#endif
 }
 
 void refuse_together(const std::function<void()>& checks) {

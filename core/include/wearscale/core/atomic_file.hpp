@@ -7,6 +7,7 @@
 //
 // The outputs of one run go further: they reach their final names together,
 // when the run's OutputSet commits (output_set.hpp).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -42,6 +43,16 @@ void write_temporary_file(const std::filesystem::path& path, std::string_view co
 /// Writes all of `size` bytes to the open file `fd` (retrying short writes
 /// and EINTR); OutputError naming `name` if the disk refuses.
 void write_all(int fd, const void* data, std::size_t size, const std::filesystem::path& name);
+
+/// Reserves the first `size` bytes of the existing file `path` on disk
+/// (posix_fallocate: a sparse region gets its blocks now), so that writes into
+/// them cannot meet a full disk later; OutputError naming it if they do not fit.
+void reserve_space(const std::filesystem::path& path, std::uint64_t size);
+
+/// Writes `size` bytes at byte `offset` of the existing file `path` (a region
+/// another process laid out, e.g. one rank's rows of a field) and flushes them
+/// to disk, every write checked; OutputError naming it.
+void write_in_place(const std::filesystem::path& path, std::uint64_t offset, const void* data, std::size_t size);
 
 /// Creates the folder `dir` and its parents; OutputError naming it if that
 /// fails (a file in the way, a read-only file system, no permission).

@@ -79,6 +79,12 @@ double max(double local);
 /// distributed in slabs of rows becomes the whole field on rank 0. Serial: a copy.
 void gather(std::span<const double> local, std::span<double> all);
 
+/// Rank 0's `values` (the same count on every rank) and `text` on every rank
+/// (MPI_Bcast); serial: unchanged. What rank 0 alone decided, e.g. where in a
+/// file it laid out the fields every rank then writes.
+void broadcast(std::span<double> values);
+void broadcast(std::string& text);
+
 /// The refusal of a job that every rank reached together (refuse_together):
 /// every rank ends with status 2 and no rank needs MPI_Abort. `speaks` on the
 /// one rank that prints the message (the lowest that refused); the others
