@@ -181,22 +181,27 @@ std::string read_string(hid_t attr, hid_t type, const std::string& where) {
 
 // ---------------------------------------------------------------- writer ---
 
-H5Writer::H5Writer(std::filesystem::path final_path, Commit mode) : final_(std::move(final_path)), mode_(mode) {
+H5Writer::H5Writer(std::filesystem::path final_path, Commit mode, H5Storage storage, std::filesystem::path partial)
+    : final_(std::move(final_path)), partial_(std::move(partial)), mode_(mode), storage_(storage) {
   std::lock_guard lock(hdf5_mutex());
   silence_hdf5();
   if (!final_.parent_path().empty()) create_output_folder(final_.parent_path());
-  partial_ = partial_path(final_);
+  if (partial_.empty()) partial_ = partial_path(final_);
   write_temporary_file(partial_, {});  // the folder takes files: checked now, not after the work
   // In memory: HDF5 never writes to disk itself, so a full disk cannot fail
   // inside it (its close would then crash at exit); commit() writes the image.
+  // On disk (fields too large for one process's memory): HDF5 writes its
+  // metadata only, into space finish_layout() reserves before it closes.
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-  check(H5Pset_fapl_core(fapl, std::size_t{1} << 20, 0), "in-memory driver");
+  if (storage_ == H5Storage::Memory) check(H5Pset_fapl_core(fapl, std::size_t{1} << 20, 0), "in-memory driver");
   // The default (oldest) file format: HDF5 1.10's image of a file with a
   // checksummed superblock (format 1.8+) carries a wrong checksum.
   file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   if (file_ < 0) {
     std::error_code ec;
     std::filesystem::remove(partial_, ec);
+    if (storage_ == H5Storage::Disk)  // HDF5 wrote its superblock and failed: the disk
+      throw OutputError(fmt::format("HDF5 cannot create {}; {} was not written", partial_.string(), final_.string()));
     throw std::runtime_error("HDF5: cannot create " + partial_.string());
   }
   // Provenance on every file (the mutex is recursive).
@@ -276,6 +281,52 @@ void H5Writer::write_field(const std::string& path, const RealField& field, std:
   put_number_attribute(ds, "ly", field.grid().ly);
 }
 
+std::uint64_t H5Writer::reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit) {
+  std::lock_guard lock(hdf5_mutex());
+  if (storage_ != H5Storage::Disk) throw std::logic_error("H5Writer::reserve_field: the file is built in memory");
+  Handle g(group(path), H5Oclose);
+  const auto name = split(path).second;
+  const hsize_t dims[2] = {grid.nx, grid.ny};
+  Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  check(H5Pset_layout(dcpl, H5D_CONTIGUOUS), "contiguous layout");
+  check(H5Pset_alloc_time(dcpl, H5D_ALLOC_TIME_EARLY), "allocation at creation");
+  check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), "no fill");
+  Handle ds(H5Dcreate2(g, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) throw std::runtime_error("HDF5: cannot create dataset " + path);
+  const haddr_t offset = H5Dget_offset(ds);
+  if (offset == HADDR_UNDEF) throw std::runtime_error("HDF5: no storage allocated for " + path);
+  if (!unit.empty()) put_string_attribute(ds, "unit", unit);
+  put_number_attribute(ds, "lx", grid.lx);
+  put_number_attribute(ds, "ly", grid.ly);
+  return static_cast<std::uint64_t>(offset);
+}
+
+void H5Writer::finish_layout() {
+  std::lock_guard lock(hdf5_mutex());
+  if (storage_ != H5Storage::Disk) throw std::logic_error("H5Writer::finish_layout: the file is built in memory");
+  if (file_ < 0) return;
+  hsize_t size = 0;
+  check(H5Fget_filesize(file_, &size), "size of " + partial_.string());
+  try {
+    // The file's extent (its reserved fields included) and room for the
+    // metadata HDF5 still writes on closing; it truncates the rest away.
+    reserve_space(partial_, static_cast<std::uint64_t>(size) + (std::uint64_t{1} << 20));
+  } catch (const OutputError& e) {
+    throw OutputError(fmt::format("{}; {} was not written", e.what(), final_.string()));
+  }
+  if (H5Fclose(file_) < 0) {
+    file_ = -1;
+    throw OutputError(fmt::format("HDF5 could not close {}; {} was not written", partial_.string(), final_.string()));
+  }
+  file_ = -1;
+}
+
+void H5Writer::hand_over() {
+  finish_layout();
+  committed_ = true;  // nothing of it left to this writer
+}
+
 void H5Writer::write_scalar(const std::string& path, double value, std::string_view unit) {
   std::lock_guard lock(hdf5_mutex());
   Handle g(group(path), H5Oclose);
@@ -314,6 +365,16 @@ bool H5Writer::exists(const std::string& object) const {
 void H5Writer::commit() {
   std::lock_guard lock(hdf5_mutex());
   if (committed_) return;
+  if (storage_ == H5Storage::Disk) {
+    finish_layout();
+    try {
+      commit_file(partial_, final_, mode_);
+    } catch (const OutputError& e) {
+      throw OutputError(fmt::format("{}; {} was not written", e.what(), final_.string()));
+    }
+    committed_ = true;
+    return;
+  }
   if (file_ < 0) throw std::logic_error("H5Writer: commit after a failed commit");
   check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + partial_.string());
   const ssize_t size = H5Fget_file_image(file_, nullptr, 0);

@@ -47,6 +47,13 @@ XdmfSidecar& XdmfSidecar::add(H5Writer& h5, const std::vector<XdmfField>& fields
   return *this;
 }
 
+XdmfSidecar& XdmfSidecar::add_written(const std::vector<XdmfField>& fields) {
+  if (!steps_.empty() && steps_.front().time)
+    throw std::logic_error("XdmfSidecar::add_written: this sidecar is a time series (add_step)");
+  steps_.push_back({std::nullopt, fields});
+  return *this;
+}
+
 XdmfSidecar& XdmfSidecar::add_step(H5Writer& h5, double time, const std::vector<XdmfField>& fields) {
   if (!steps_.empty() && !steps_.front().time)
     throw std::logic_error("XdmfSidecar::add_step: this sidecar holds one grid (add)");

@@ -99,6 +99,44 @@ TEST(HDF5, AWriterThatIsNotCommittedLeavesNoFile) {
   fs::remove_all(path.parent_path());
 }
 
+TEST(HDF5, FieldsReservedOnDiskAndWrittenInPlaceByRowsReadBackExactly) {
+  // The layout a slab run uses above its gather limit: rank 0 reserves the
+  // field, two writers (here one process) put their rows at its offset.
+  const auto path = scratch("in_place.h5");
+  const Grid2D g(5, 3, 2.0, 0.75);
+  RealField f(g);
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = std::sin(0.7 * static_cast<double>(k)) * 1e-6;
+  {
+    H5Writer w(path, Commit::Now, H5Storage::Disk);
+    const std::uint64_t at = w.reserve_field("/fields/pressure", g, "Pa");
+    w.write_scalar("/results/mean_pressure", 0.5, "Pa");
+    w.finish_layout();
+    write_in_place(w.partial(), at + 2 * g.ny * sizeof(double), f.data() + 2 * g.ny, 3 * g.ny * sizeof(double));
+    write_in_place(w.partial(), at, f.data(), 2 * g.ny * sizeof(double));
+    EXPECT_FALSE(fs::exists(path));  // not before the commit
+    w.commit();
+  }
+  const H5Reader r(path);
+  const RealField back = r.read_field("/fields/pressure");
+  ASSERT_EQ(back.grid().nx, 5u);
+  ASSERT_EQ(back.grid().ny, 3u);
+  EXPECT_EQ(back.grid().lx, 2.0);
+  EXPECT_EQ(back.grid().ly, 0.75);
+  for (std::size_t k = 0; k < f.size(); ++k) EXPECT_EQ(back[k], f[k]) << k;
+  EXPECT_EQ(r.read_scalar("/results/mean_pressure"), 0.5);
+  // In memory there is no offset to give, and a disk file left uncommitted leaves nothing.
+  H5Writer memory(scratch("memory.h5"));
+  EXPECT_THROW(memory.reserve_field("/f", g), std::logic_error);
+  const auto dropped = scratch("dropped.h5");
+  {
+    H5Writer w(dropped, Commit::Now, H5Storage::Disk);
+    w.reserve_field("/f", g);
+    w.finish_layout();
+  }
+  EXPECT_FALSE(fs::exists(dropped));
+  EXPECT_FALSE(fs::exists(partial_path(dropped)));  // nor its temporary file
+}
+
 TEST(HDF5, AKilledWriterLeavesThePreviousCompleteFile) {
   const auto path = scratch("killed.h5");
   {

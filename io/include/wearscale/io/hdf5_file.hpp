@@ -9,6 +9,10 @@
 // the final name; a full disk or a read-only folder is an OutputError naming
 // the file, never a crash inside HDF5. Chunked (large) datasets carry a
 // Fletcher-32 checksum, so damaged data read back is an error, not numbers.
+// Fields larger than one process should hold (the ranks' slabs of a grid
+// above the gather limit) are laid out instead in a file built on disk
+// (H5Storage::Disk): contiguous, reserved, written in place by the processes
+// that hold their rows, without a checksum; the same commit.
 //
 // Reading: every dataset and attribute is checked for its type and shape
 // before it is read, and its size against the memory limit, so a file from
@@ -33,13 +37,22 @@
 
 namespace wearscale {
 
+/// Where an H5Writer builds its file until commit().
+enum class H5Storage {
+  Memory,  ///< in memory (HDF5's core driver): HDF5 never writes to disk itself
+  Disk,    ///< under the temporary name on disk: for fields reserved by this writer and written in place by others
+};
+
 class H5Writer {
  public:
   /// Starts writing `final_path` (a placeholder temporary file is created
   /// beside it at once, so an unwritable folder fails here, before any work).
   /// Every file carries the root attributes `wearscale_version`, `created`
   /// (UTC) and, when built from git, `git_revision`.
-  explicit H5Writer(std::filesystem::path final_path, Commit mode = Commit::WithItsSet);
+  /// `partial`: the temporary name to build it under (default
+  /// partial_path(final_path); another process's, for a LaidOutFile).
+  explicit H5Writer(std::filesystem::path final_path, Commit mode = Commit::WithItsSet,
+                    H5Storage storage = H5Storage::Memory, std::filesystem::path partial = {});
   ~H5Writer();
   H5Writer(const H5Writer&) = delete;
   H5Writer& operator=(const H5Writer&) = delete;
@@ -63,6 +76,21 @@ class H5Writer {
   /// dataset of this file, one mapping per source row, no data copied.
   void write_transposed_view(const std::string& view, const std::string& source);
 
+  /// A 2D field of `grid`'s size (nx × ny, with lx, ly and `unit`) whose values
+  /// are not written here (H5Storage::Disk only): contiguous, its space
+  /// allocated in the file, unfilled. Returns its byte offset: value (i, j)
+  /// goes at offset + 8 (i·ny + j), a little-endian double, written in place
+  /// (write_in_place on partial()) once finish_layout() has run.
+  std::uint64_t reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit = {});
+  /// Ends the HDF5 part of an H5Storage::Disk file: its whole size reserved on
+  /// disk first (so neither HDF5's closing writes nor the values written in
+  /// place later can meet a full disk), then closed. OutputError naming the
+  /// file if the disk cannot hold it. Nothing more can be added; commit() next.
+  void finish_layout();
+  /// finish_layout(), then the temporary file is the caller's: this writer
+  /// no longer removes it (a LaidOutFile commits or removes it).
+  void hand_over();
+
   /// Writes the file and moves it to its final name (with its OutputSet, if
   /// one is open for the folder and the mode says so). Without it, nothing appears.
   void commit();
@@ -76,6 +104,7 @@ class H5Writer {
   void close();
   std::filesystem::path final_, partial_;
   Commit mode_;
+  H5Storage storage_;
   long long file_ = -1;  // hid_t
   bool committed_ = false;
 };

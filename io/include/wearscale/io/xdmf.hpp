@@ -40,6 +40,9 @@ class XdmfSidecar {
 
   /// The fields of the file (a single grid): writes their views into `h5`.
   XdmfSidecar& add(H5Writer& h5, const std::vector<XdmfField>& fields);
+  /// The same for a file whose views another writer already added (the
+  /// process that laid out a LaidOutFile, with add() on its own sidecar).
+  XdmfSidecar& add_written(const std::vector<XdmfField>& fields);
   /// One snapshot of a temporal collection at `time` (e.g. the sliding
   /// distance); snapshots are shown in the order added.
   XdmfSidecar& add_step(H5Writer& h5, double time, const std::vector<XdmfField>& fields);
