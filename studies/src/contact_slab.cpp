@@ -1,6 +1,12 @@
 #include "contact_slab.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <tuple>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -12,6 +18,9 @@
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/laid_out_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::studies {
 
@@ -67,17 +76,18 @@ SlabCase read_slab_case(const Config& config) {
                   "\"periodic\" under mpirun; \"free\" without mpirun");
   s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
+  s.gather_limit = static_cast<std::size_t>(read_gather_limit(config));
   const double points = static_cast<double>(s.grid.size());
-  const bool gather = s.grid.size() <= slab_gather_limit;
+  const bool gather = s.grid.size() <= s.gather_limit;
   const bool file = s.measured.size() > 0;
   const char* size_key = file ? "surface" : "grid";  // what sets the grid
   const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
   if (s.friction && !gather)
     throw c.error(size_key,
-                  fmt::format("a frictional contact of {} × {} points is more than rank 0 gathers ({} points): its "
-                              "stresses and files are computed from the whole fields",
-                              s.grid.nx, s.grid.ny, slab_gather_limit),
-                  fmt::format("at most {} × {} points with friction under mpirun", 4096, 4096));
+                  fmt::format("a frictional contact of {} × {} points is more than rank 0 gathers ({} points, "
+                              "[run] gather_limit): its stresses and files are computed from the whole fields",
+                              s.grid.nx, s.grid.ny, s.gather_limit),
+                  fmt::format("at most {} points with friction under mpirun", s.gather_limit));
   const double share = s.friction ? kFrictionalBytesPerPoint : kBytesPerPoint;
   const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
   // Each rank checks its own share (rank 0 adds the gathered fields) against
@@ -147,6 +157,81 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
 }
 }  // namespace
 
+namespace {
+// One rank's rows of a field of contact.h5.
+struct SlabField {
+  const char* dataset;
+  const char* name;  // in ParaView
+  const char* unit;
+  const RealField* rows;
+};
+using Report = std::function<void(const std::string& name, double value, const std::string& unit,
+                                  const std::string& what)>;
+
+// contact.h5 of a grid no rank gathers (collective): rank 0 lays it out on
+// disk (the case, the headline figures through `results`, every field
+// reserved, their views for ParaView), every rank writes its rows of each
+// field in place, and rank 0 commits it with the run's other outputs. A
+// failure to write on any rank is every rank's refusal (status 2), and the
+// file is removed.
+void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t first_row,
+                           const std::vector<SlabField>& fields, coupling::RunContext* context,
+                           const std::function<void(const Report&)>& results) {
+  static_assert(std::endian::native == std::endian::little, "the fields are written in place as little-endian doubles");
+  std::optional<LaidOutFile> file;  // rank 0's
+  std::vector<double> offsets(fields.size());  // bytes, below 2^53: exact
+  std::string partial;
+  mpi::refuse_together([&] {
+    if (context == nullptr) return;
+    // The headline figures are reported here, in this process; the child
+    // that lays the file out writes them into it.
+    std::vector<std::tuple<std::string, double, std::string>> figures;
+    results([&](const std::string& name, double v, const std::string& unit, const std::string& what) {
+      context->report(name, v, unit, what);
+      figures.emplace_back(name, v, unit);
+    });
+    file.emplace(context->output_dir() / "contact.h5", [&](H5Writer& h5) {
+      std::vector<std::uint64_t> at;
+      std::vector<XdmfField> views;
+      for (const SlabField& f : fields) {
+        at.push_back(h5.reserve_field(f.dataset, g, f.unit));
+        views.push_back({f.dataset, f.name});
+      }
+      h5.set_attribute("/", "case_toml", config.to_toml());
+      for (const auto& [name, v, unit] : figures) h5.write_scalar("/results/" + name, v, unit);
+      XdmfSidecar(g).add(h5, views);
+      return at;
+    });
+    for (std::size_t k = 0; k < fields.size(); ++k) offsets[k] = static_cast<double>(file->offsets()[k]);
+    partial = file->partial().string();
+  });
+  mpi::broadcast(offsets);
+  mpi::broadcast(partial);
+  mpi::refuse_together([&] {
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      const RealField& rows = *fields[k].rows;
+      const auto at = static_cast<std::uint64_t>(offsets[k]) + sizeof(double) * first_row * g.ny;
+      try {
+        write_in_place(partial, at, rows.data(), rows.size() * sizeof(double));
+      } catch (const OutputError& e) {
+        throw OutputError(fmt::format("{} (rank {}'s rows of {}); contact.h5 was not written", e.what(), mpi::rank(),
+                                      fields[k].dataset));
+      }
+    }
+  });
+  if (context == nullptr) return;
+  std::vector<XdmfField> views;
+  for (const SlabField& f : fields) views.push_back({f.dataset, f.name});
+  file->commit();
+  XdmfSidecar(g).add_written(views).write(context->output_dir() / "contact.xdmf", file->final_path());
+  for (const auto& f : {file->final_path(), context->output_dir() / "contact.xdmf"}) context->add_file(f);
+}
+}  // namespace
+
+long read_gather_limit(const Config& config) {
+  return config.section("run").integer_or("gather_limit", static_cast<long>(default_gather_limit), Range::at_least(1));
+}
+
 void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* context) {
   if (s.friction) return run_slab_friction(config, s, context);
   const Grid2D& g = s.grid;
@@ -162,7 +247,7 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   NormalContact contact(std::move(body), h, normal.e_star);
   const ContactResult r = together([&] { return normal.solve(contact); });
 
-  if (g.size() <= slab_gather_limit) {
+  if (g.size() <= s.gather_limit) {
     RealField whole_h = gathered(h, g);
     h = RealField();  // each slab freed once gathered: rank 0 holds the whole fields next
     const RealField p = gathered(contact.pressure(), g), gap = gathered(contact.gap(), g);
@@ -170,26 +255,35 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
     if (context != nullptr) write_normal_study(config, normal, whole_h, p, gap, u, r, *context);
     return;
   }
-  // Above the gather limit: the headline figures from the slabs (collective), no fields, no micro-contacts.
+  // Above the gather limit: the headline figures from the slabs (collective),
+  // the fields written in place, no micro-contacts.
   const double hprime = roughness_slab(h, g, RoughnessMeasure::HPrimeRms, fft);
+  RealField in_contact(h.grid());
   long long touching = 0;
-  for (double v : contact.pressure()) touching += v > 0.0 ? 1 : 0;
+  for (std::size_t k = 0; k < in_contact.size(); ++k) {
+    in_contact[k] = contact.pressure()[k] > 0.0 ? 1.0 : 0.0;
+    touching += contact.pressure()[k] > 0.0 ? 1 : 0;
+  }
   const double area = static_cast<double>(mpi::sum(touching)) * g.cell_area();
-  if (context == nullptr) return;
-  log::warn("contact: {} points are more than rank 0 gathers ({}): only the headline figures are written (no "
-            "contact.h5, clusters.csv or micro-contacts)",
-            g.size(), slab_gather_limit);
-  auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
-    context->report(name, v, unit, what);
-  };
-  report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
-  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-  report("contact_area", area, "m^2", "real contact area A");
-  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
-  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
-  report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
-  report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
-  report("hprime_rms", hprime, "1", "RMS slope of the surface (1.6)");
+  if (context != nullptr)
+    log::warn("contact: {} points are more than rank 0 gathers ({}, [run] gather_limit): every rank writes its rows "
+              "of the fields into contact.h5; the micro-contacts (clusters.csv) are not found",
+              g.size(), s.gather_limit);
+  const std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
+                                         {"/fields/pressure", "pressure", "Pa", &contact.pressure()},
+                                         {"/fields/gap", "gap", "m", &contact.gap()},
+                                         {"/fields/displacement", "displacement", "m", &contact.displacement()},
+                                         {"/fields/contact", "contact", "1", &in_contact}};
+  write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
+    report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
+    report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
+    report("contact_area", area, "m^2", "real contact area A");
+    report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+    report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
+    report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
+    report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
+    report("hprime_rms", hprime, "1", "RMS slope of the surface (1.6)");
+  });
 }
 
 }  // namespace wearscale::studies

@@ -5,8 +5,11 @@
 // surface drawn per slab from the seed's stream (the serial surface), the one
 // Polonsky–Keer solver on them (the serial iterations and answer). Rank 0
 // gathers height, pressure, gap and displacement and writes the serial study's
-// files when the grid has at most slab_gather_limit points; above it reports
-// the headline figures only (no contact.h5, no micro-contacts) and says so.
+// files when the grid has at most `[run] gather_limit` points; above it no
+// rank holds a whole field: rank 0 lays contact.h5 out on disk and every rank
+// writes its own rows of the fields into it in place, and the headline
+// figures come from the slabs (no micro-contacts: finding them needs the whole
+// contact map), which the run says.
 //
 // Distributed: periodic contact of a measured surface (contact.surface: every
 // rank reads the file and keeps its rows), a generated rough surface and/or a sphere,
@@ -15,7 +18,7 @@
 // computes the surface and subsurface stresses from the gathered tractions).
 // Refused (InputError naming the key, the same on every rank, before any
 // work): contact.boundary = "free", a file of fewer rows than ranks, and a
-// frictional grid above slab_gather_limit (contact.grid: its stresses and
+// frictional grid above the gather limit (contact.grid: its stresses and
 // files need the whole fields on rank 0).
 #include <cstddef>
 #include <optional>
@@ -24,8 +27,13 @@
 
 namespace wearscale::studies {
 
-/// Grids above this many points are not gathered on rank 0 (8 B per point and field).
-inline constexpr std::size_t slab_gather_limit = std::size_t{4096} * 4096;
+/// `[run] gather_limit` by default: grids above this many points are not
+/// gathered on rank 0 (88 B a point there for the fields and micro-contacts).
+inline constexpr std::size_t default_gather_limit = std::size_t{4096} * 4096;
+
+/// `[run] gather_limit` (grid points, at least 1), read and checked: every
+/// run reads it (the runner), the slab study uses it.
+long read_gather_limit(const Config& config);
 
 /// A [contact] case the slabs can run, every key read and checked.
 struct SlabCase {
@@ -36,6 +44,7 @@ struct SlabCase {
   std::optional<RoughCase> rough;
   double sphere_radius = 0.0;  ///< 0: no sphere
   bool measured_plans = true;  ///< FFTW MEASURE plans ([run] fft_planning, and from 512²)
+  std::size_t gather_limit = default_gather_limit;  ///< [run] gather_limit: larger grids are written in place
 };
 
 /// Reads and checks the case (collective only through the InputError it may

@@ -38,6 +38,7 @@
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/studies/study.hpp"
+#include "contact_slab.hpp"
 
 namespace wearscale::studies {
 
@@ -177,6 +178,7 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   const Config r = cfg.section("run");
   run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
                                                                                                 : PlanRigor::Measure;
+  read_gather_limit(cfg);  // used by a contact study on MPI ranks; checked on every run
   run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();
   run.fingerprint = case_fingerprint(run.summary.parameters);

@@ -135,6 +135,78 @@ TEST(MpiContactCli, TwoAndThreeRanksGiveTheSerialSummaryAndFiles) {
   }
 }
 
+TEST(MpiContactCli, AboveTheGatherLimitEveryRankWritesItsRowsOfTheFieldsInPlace) {
+  // [run] gather_limit below the grid (128² = 16 384 points): no rank gathers a
+  // field; contact.h5 holds the serial fields all the same (rank 0 lays it
+  // out, each rank writes its rows), the headline figures are the serial ones,
+  // and the micro-contacts alone are missing, as the run says.
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --json";
+  const auto serial = run(0, args + " -q --out inplace_serial --set run.gather_limit=10000");  // read, unused serially
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto s = nlohmann::json::parse(serial.out);
+  EXPECT_EQ(s["parameters"]["run"]["gather_limit"], 10000);
+  for (int ranks : {2, 3}) {
+    const std::string dir = "inplace" + std::to_string(ranks);
+    const auto slab = run(ranks, args + " --set run.gather_limit=10000 --out " + dir);
+    ASSERT_EQ(slab.status, 0) << slab.err;
+    EXPECT_THAT(slab.err, HasSubstr("every rank writes its rows of the fields into contact.h5"));
+    EXPECT_THAT(slab.err, HasSubstr("micro-contacts (clusters.csv) are not found"));
+    auto p = nlohmann::json::parse(slab.out);
+    EXPECT_FALSE(p["results"].contains("clusters"));
+    p["results"]["clusters"] = s["results"]["clusters"];  // so that the shared check compares the rest
+    expect_same_results(s, p, ranks);
+    for (const char* f : {"run.h5", "contact.h5", "contact.xdmf", "summary.json"})
+      EXPECT_TRUE(fs::exists(work / dir / f)) << f;
+    EXPECT_FALSE(fs::exists(work / dir / "clusters.csv"));
+    for (const auto& entry : fs::directory_iterator(work / dir))  // no temporary file left behind
+      EXPECT_FALSE(entry.path().filename().string().starts_with(".")) << entry.path();
+    const wearscale::H5Reader a(work / "inplace_serial" / "contact.h5"), b(work / dir / "contact.h5");
+    for (const char* d : {"/surface/height", "/fields/pressure", "/fields/gap", "/fields/displacement",
+                          "/fields/contact"}) {
+      const auto x = a.read_field(d), y = b.read_field(d);
+      ASSERT_EQ(x.grid().nx, y.grid().nx) << d;
+      ASSERT_EQ(x.grid().ny, y.grid().ny) << d;
+      EXPECT_DOUBLE_EQ(x.grid().lx, y.grid().lx) << d;
+      double largest = 0.0, worst = 0.0;
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        largest = std::max(largest, std::abs(x[k]));
+        worst = std::max(worst, std::abs(x[k] - y[k]));
+      }
+      EXPECT_GT(largest, 0.0) << d;
+      EXPECT_LE(worst, 1e-12 * largest) << d << " at P = " << ranks;
+    }
+    EXPECT_DOUBLE_EQ(b.read_scalar("/results/contact_fraction"), p["results"]["contact_fraction"]["value"].get<double>());
+    // ParaView's view of the pressure (x fastest) reads the rows the ranks wrote.
+    const auto pressure = b.read_field("/fields/pressure");
+    const auto view = b.read_series("/xdmf/fields/pressure");
+    ASSERT_EQ(view.size(), pressure.size());
+    const std::size_t nx = pressure.grid().nx, ny = pressure.grid().ny;
+    for (std::size_t i = 0; i < nx; i += 7)
+      for (std::size_t j = 0; j < ny; j += 5) EXPECT_EQ(view[j * nx + i], pressure[i * ny + j]) << i << ", " << j;
+  }
+}
+
+TEST(MpiContactCli, ADiskThatFailsWhileTheRanksWriteTheirRowsIsStatus2AndLeavesNothing) {
+  // The disk fails (tests/support/fail_writes.c) while HDF5 lays contact.h5
+  // out (its first write, its closing writes) or while a rank flushes its rows
+  // in place: status 2 on every rank, said once, no crash, nothing left.
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --set run.gather_limit=10000 -q";
+  const std::pair<const char*, int> faults[] = {{"write", 2}, {"write", 3}, {"fsync", 1}, {"fsync", 4}};
+  for (const auto& [op, at] : faults) {
+    const std::string dir = std::string("disk_") + op + std::to_string(at);
+    const std::string env = "LD_PRELOAD='" WEARSCALE_FAULT_SHIM "' FAULT_DIR='" + (work / dir).string() +
+                            "' FAULT_OP=" + op + " FAULT_AT=" + std::to_string(at);
+    const auto r = run(2, args + " --out " + dir, env);
+    EXPECT_EQ(r.status, 2) << op << " " << at << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr("contact.h5 was not written")) << op << " " << at;
+    EXPECT_EQ(error_lines(r.err), 1u) << op << " " << at << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(work / dir / "contact.h5")) << op << " " << at;
+    EXPECT_FALSE(fs::exists(work / dir / "summary.json")) << op << " " << at;
+    if (fs::exists(work / dir))
+      for (const auto& entry : fs::directory_iterator(work / dir)) ADD_FAILURE() << "left behind: " << entry.path();
+  }
+}
+
 TEST(MpiContactCli, TheCommandsFlagsCountUnderMpirunAsWithout) {
   // --pressure is the flag of contact.mean_pressure: half the case's load, under mpirun as without it.
   const std::string args = "contact " + rough_case + " --set contact.grid=128 --pressure 0.015 --json";
@@ -227,6 +299,10 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
       {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
        "--set contact.grid=4100",
        "contact.grid"},  // friction above the gather limit
+      {"--set contact.friction=tresca --set contact.poisson=0.3 --set contact.shear_strength=0.01 "
+       "--set run.gather_limit=10000",
+       "contact.grid"},  // friction above a gather limit the case sets
+      {"--set run.gather_limit=0", "run.gather_limit"},
       {"--set contact.grid=7", "contact.grid"},
       {"--resume elsewhere", "--resume"}};
   int k = 0;
