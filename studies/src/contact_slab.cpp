@@ -12,12 +12,14 @@
 
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
+#include "wearscale/bem/slab_clusters.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/units.hpp"
+#include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/laid_out_file.hpp"
 #include "wearscale/io/xdmf.hpp"
@@ -176,7 +178,8 @@ using Report = std::function<void(const std::string& name, double value, const s
 // file is removed.
 void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t first_row,
                            const std::vector<SlabField>& fields, coupling::RunContext* context,
-                           const std::function<void(const Report&)>& results) {
+                           const std::function<void(const Report&)>& results,
+                           const std::function<void(H5Writer&)>& tables) {
   static_assert(std::endian::native == std::endian::little, "the fields are written in place as little-endian doubles");
   std::optional<LaidOutFile> file;  // rank 0's
   std::vector<double> offsets(fields.size());  // bytes, below 2^53: exact
@@ -199,6 +202,7 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
       }
       h5.set_attribute("/", "case_toml", config.to_toml());
       for (const auto& [name, v, unit] : figures) h5.write_scalar("/results/" + name, v, unit);
+      tables(h5);
       XdmfSidecar(g).add(h5, views);
       return at;
     });
@@ -266,9 +270,16 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   }
   const double area = static_cast<double>(mpi::sum(touching)) * g.cell_area();
   if (context != nullptr)
-    log::warn("contact: {} points are more than rank 0 gathers ({}, [run] gather_limit): every rank writes its rows "
-              "of the fields into contact.h5; the micro-contacts (clusters.csv) are not found",
+    log::info("contact: {} points are more than rank 0 gathers ({}, [run] gather_limit): every rank writes its rows "
+              "of the fields into contact.h5, the micro-contacts are joined across the slabs",
               g.size(), s.gather_limit);
+  const std::vector<ContactCluster> clusters = find_clusters_slab(contact.pressure(), first, g, normal.connectivity);
+  std::vector<double> cluster_area, cluster_x, cluster_y;  // rank 0's
+  for (const auto& cl : clusters) {
+    cluster_area.push_back(cl.area);
+    cluster_x.push_back(cl.centroid_x);
+    cluster_y.push_back(cl.centroid_y);
+  }
   const std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
                                          {"/fields/pressure", "pressure", "Pa", &contact.pressure()},
                                          {"/fields/gap", "gap", "m", &contact.gap()},
@@ -280,10 +291,19 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
     report("contact_area", area, "m^2", "real contact area A");
     report("interference", r.interference, "m", "summit depth below the mean deformed surface");
     report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
+    report("clusters", static_cast<double>(clusters.size()), "1", "number of micro-contacts");
     report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
     report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
     report("hprime_rms", hprime, "1", "RMS slope of the surface (1.6)");
+  }, [&](H5Writer& h5) {
+    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y},
+                   {"m^2", "m", "m"});
   });
+  if (context == nullptr) return;
+  const auto csv = context->output_dir() / "clusters.csv";
+  write_csv(csv, {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y}, {"m^2", "m", "m"},
+            {"micro-contacts of the solved contact, largest first"});
+  context->add_file(csv);
 }
 
 }  // namespace wearscale::studies

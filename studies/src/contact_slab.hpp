@@ -7,9 +7,9 @@
 // gathers height, pressure, gap and displacement and writes the serial study's
 // files when the grid has at most `[run] gather_limit` points; above it no
 // rank holds a whole field: rank 0 lays contact.h5 out on disk and every rank
-// writes its own rows of the fields into it in place, and the headline
-// figures come from the slabs (no micro-contacts: finding them needs the whole
-// contact map), which the run says.
+// writes its own rows of the fields into it in place; the headline figures
+// come from the slabs and the micro-contacts from each rank's clusters joined
+// across the slabs' edges (find_clusters_slab): the same files.
 //
 // Distributed: periodic contact of a measured surface (contact.surface: every
 // rank reads the file and keeps its rows), a generated rough surface and/or a sphere,
