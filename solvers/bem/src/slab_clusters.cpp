@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <utility>
 
@@ -32,11 +33,11 @@ std::vector<double> label_rows(const RealField& p, std::size_t first_row, const 
   const long rows = static_cast<long>(p.grid().nx), ny = static_cast<long>(whole.ny);
   const long first = static_cast<long>(first_row);
   const auto at = [ny](long row, long j) { return static_cast<std::size_t>(row * ny + ((j % ny) + ny) % ny); };
-  std::vector<int> label(p.size(), -1);
-  std::vector<long> seen_i(p.size()), seen_j(p.size());  // unwrapped position where a point was reached
+  // 12 B a point it holds (positions stay within ±(rows + points) < 2^31 for grids up to 16384²).
+  std::vector<std::int32_t> label(p.size(), -1);
+  std::vector<std::int32_t> seen_i(p.size()), seen_j(p.size());  // unwrapped position where a point was reached
   std::vector<Piece> pieces;
-  std::vector<std::pair<long, long>> queue;
-  queue.reserve(p.size());
+  std::vector<std::pair<long, long>> queue;  // as long as the largest piece
   for (long r0 = 0; r0 < rows; ++r0)
     for (long j0 = 0; j0 < ny; ++j0) {
       const std::size_t k0 = at(r0, j0);
@@ -46,8 +47,8 @@ std::vector<double> label_rows(const RealField& p, std::size_t first_row, const 
       piece.seed = (first + r0) * ny + j0;
       queue.assign(1, {first + r0, j0});
       label[k0] = id;
-      seen_i[k0] = first + r0;
-      seen_j[k0] = j0;
+      seen_i[k0] = static_cast<std::int32_t>(first + r0);
+      seen_j[k0] = static_cast<std::int32_t>(j0);
       for (std::size_t head = 0; head < queue.size(); ++head) {
         const auto [ui0, uj0] = queue[head];
         ++piece.points;
@@ -63,8 +64,8 @@ std::vector<double> label_rows(const RealField& p, std::size_t first_row, const 
             continue;
           }
           label[k] = id;
-          seen_i[k] = ui;
-          seen_j[k] = uj;
+          seen_i[k] = static_cast<std::int32_t>(ui);
+          seen_j[k] = static_cast<std::int32_t>(uj);
           queue.emplace_back(ui, uj);
         }
       }
