@@ -184,6 +184,8 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
   std::optional<LaidOutFile> file;  // rank 0's
   std::vector<double> offsets(fields.size());  // bytes, below 2^53: exact
   std::string partial;
+  std::vector<XdmfField> views;  // ParaView's: added by the child that lays the file out, named by the sidecar here
+  for (const SlabField& f : fields) views.push_back({f.dataset, f.name});
   mpi::refuse_together([&] {
     if (context == nullptr) return;
     // The headline figures are reported here, in this process; the child
@@ -195,11 +197,7 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
     });
     file.emplace(context->output_dir() / "contact.h5", [&](H5Writer& h5) {
       std::vector<std::uint64_t> at;
-      std::vector<XdmfField> views;
-      for (const SlabField& f : fields) {
-        at.push_back(h5.reserve_field(f.dataset, g, f.unit));
-        views.push_back({f.dataset, f.name});
-      }
+      for (const SlabField& f : fields) at.push_back(h5.reserve_field(f.dataset, g, f.unit));
       h5.set_attribute("/", "case_toml", config.to_toml());
       for (const auto& [name, v, unit] : figures) h5.write_scalar("/results/" + name, v, unit);
       tables(h5);
@@ -224,8 +222,6 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
     }
   });
   if (context == nullptr) return;
-  std::vector<XdmfField> views;
-  for (const SlabField& f : fields) views.push_back({f.dataset, f.name});
   file->commit();
   XdmfSidecar(g).add_written(views).write(context->output_dir() / "contact.xdmf", file->final_path());
   for (const auto& f : {file->final_path(), context->output_dir() / "contact.xdmf"}) context->add_file(f);
