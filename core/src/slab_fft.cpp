@@ -68,6 +68,17 @@ SlabFFT::SlabFFT(std::size_t nx, std::size_t ny, PlanRigor rigor) : nx_(nx), ny_
   std::memset(static_cast<void*>(spectrum_), 0, cells * sizeof(fftw_complex));
 }
 
+RowRange SlabFFT::layout(std::size_t nx, std::size_t ny) {
+  if (!mpi::active())
+    throw std::runtime_error("SlabFFT: MPI is not running (start the program with mpirun or srun)");
+  init_fftw_mpi();
+  ptrdiff_t local_n0 = 0, local_0_start = 0;
+  std::lock_guard lock(detail::fftw_planner_mutex());
+  (void)fftw_mpi_local_size_2d(static_cast<ptrdiff_t>(nx), static_cast<ptrdiff_t>(ny / 2 + 1), MPI_COMM_WORLD,
+                               &local_n0, &local_0_start);
+  return {static_cast<std::size_t>(local_0_start), static_cast<std::size_t>(local_n0)};
+}
+
 SlabFFT::~SlabFFT() {
   std::lock_guard lock(detail::fftw_planner_mutex());
   if (r2c_) fftw_destroy_plan(static_cast<fftw_plan>(r2c_));
@@ -82,6 +93,9 @@ void SlabFFT::backward() { fftw_execute(static_cast<fftw_plan>(c2r_)); }
 #else
 
 SlabFFT::SlabFFT(std::size_t nx, std::size_t ny, PlanRigor) : nx_(nx), ny_(ny) {
+  throw std::runtime_error("SlabFFT: this build has no MPI (configure with -DWEARSCALE_MPI=ON)");
+}
+RowRange SlabFFT::layout(std::size_t, std::size_t) {
   throw std::runtime_error("SlabFFT: this build has no MPI (configure with -DWEARSCALE_MPI=ON)");
 }
 SlabFFT::~SlabFFT() = default;

@@ -11,6 +11,7 @@
 
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/grid.hpp"
+#include "wearscale/core/row_exchange.hpp"
 
 namespace wearscale {
 
@@ -22,6 +23,10 @@ class SlabFFT {
   ~SlabFFT();
   SlabFFT(const SlabFFT&) = delete;
   SlabFFT& operator=(const SlabFFT&) = delete;
+
+  /// The rows of an nx × ny grid that FFTW-MPI gives this rank (what rows() and
+  /// first_row() of a SlabFFT of that shape are), without making one.
+  static RowRange layout(std::size_t nx, std::size_t ny);
 
   std::size_t nx() const { return nx_; }
   std::size_t ny() const { return ny_; }
