@@ -17,6 +17,14 @@
 //                              on slabs takes the serial solve's iterations and
 //                              gives its tractions, stick/slip map and figures
 //                              to 1e-12 relative (rank 0 solves the serial case);
+//   mpi_slab_contact free      the free (zero-padded) normal block on slabs,
+//                              its preconditioner and t·Kt equal the serial
+//                              free HalfSpace's (1e-13), on even, odd and
+//                              rectangular grids; a Hertz solve on a free
+//                              window takes the serial iterations and gives
+//                              its pressures, approach δ and figures to 1e-12,
+//                              and a contact reaching the window's edge is
+//                              refused on every rank, as serially;
 //   mpi_slab_contact stop      a stop asked on the last rank alone ends the
 //                              normal and the frictional solve on every rank at
 //                              the same iteration (Interrupted): none waits.
@@ -32,6 +40,7 @@
 
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/bem/surface_generator.hpp"
@@ -152,6 +161,91 @@ void test_solve(std::size_t n, ContactMethod method) {
   else
     (void)row_difference(slab.pressure(), serial.pressure(), first);  // the same collective calls as rank 0
 }
+void test_free_operator(const Grid2D& g) {
+  const double e_star = 2.5;
+  RealField p(g), t(g);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (double& v : p) v = u01(rng);
+  for (double& v : t) v = u01(rng) - 0.5;
+  HalfSpace serial = HalfSpace::normal(g, e_star, Boundary::Free);
+  auto w = serial.workspace();
+  RealField u(g), z(g);
+  serial.normal_displacement(p, u, w, 1.5);
+  serial.normal_stiffness(t, z, w);
+  const double form = serial.normal_form(t, w);
+
+  SlabFreeHalfSpace slab(g, e_star, PlanRigor::Estimate);
+  const Grid2D& lg = slab.local_grid();
+  const std::size_t first = slab.first_row();
+  RealField u_s(lg), z_s(lg);
+  slab.displacement(rows_of(p, lg, first), u_s, 1.5);
+  slab.stiffness(rows_of(t, lg, first), z_s);
+  const double form_s = slab.form(rows_of(t, lg, first));
+  const std::string at = " (free) on " + g.to_string();
+  check(slab.boundary() == Boundary::Free, "the body is not free" + at);
+  check(row_difference(u_s, u, first) < 1e-13, "u = K p differs from the serial body's" + at);
+  check(row_difference(z_s, z, first) < 1e-13, "z = S t differs from the serial body's" + at);
+  check(relative(form_s, form) < 1e-13, "t·Kt differs from the serial body's" + at);
+  check(relative(slab.self_compliance(), serial.self_compliance()) < 1e-13, "self compliance differs" + at);
+  check(relative(slab.stiffness_diagonal(), serial.normal_stiffness_diagonal()) < 1e-13,
+        "S at offset 0 differs" + at);
+  // The contact's rows are where a rough surface made in slabs puts them, and cover the grid once.
+  SlabFFT surface(g.nx, g.ny, PlanRigor::Estimate);
+  check(surface.first_row() == first && surface.rows() == slab.rows(),
+        "the rows differ from the slabs of the contact's own grid" + at);
+  check(mpi::sum(static_cast<long long>(slab.rows())) == static_cast<long long>(g.nx),
+        "the slabs do not cover the grid" + at);
+}
+
+void test_free_solve(std::size_t n) {
+  // A sphere on a free window four Hertz radii wide (the Python hertz_check's case).
+  const double e_star = 1.0, radius = 1.0, a = 0.1, size = 4.0 * a;
+  const double load = 4.0 * e_star * a * a * a / (3.0 * radius);  // Hertz: a³ = 3 P R / (4 E*)
+  const Grid2D g = Grid2D::square(n, size);
+  const RealField h = sphere(g, radius, size / 2, size / 2);
+  ContactOptions options;
+  options.tolerance = 1e-10;
+  NormalContact serial(h, e_star, Boundary::Free);
+  const ContactResult r = serial.solve_mean_pressure(load / g.area(), options);
+
+  auto body = std::make_unique<SlabFreeHalfSpace>(g, e_star, PlanRigor::Estimate);
+  const std::size_t first = body->first_row();
+  const Grid2D lg = body->local_grid();
+  check(row_difference(sphere_rows(g, first, lg.nx, radius, size / 2, size / 2), h, first) == 0.0,
+        "the sphere's rows differ from the serial sphere's");
+  NormalContact slab(std::move(body), rows_of(h, lg, first), e_star);
+  const ContactResult s = slab.solve_mean_pressure(load / g.area(), options);
+  const std::string at = " (free, Hertz) on " + g.to_string();
+  check(s.iterations == r.iterations,
+        "iterations " + std::to_string(s.iterations) + " against serial " + std::to_string(r.iterations) + at);
+  check(row_difference(slab.pressure(), serial.pressure(), first) < 1e-12, "pressures differ" + at);
+  check(row_difference(slab.displacement(), serial.displacement(), first) < 1e-12, "displacements differ" + at);
+  check(s.contact_fraction == r.contact_fraction, "contact fraction differs" + at);
+  check(relative(s.interference, r.interference) < 1e-12, "approach δ differs" + at);
+  check(relative(s.elastic_energy, r.elastic_energy) < 1e-12, "elastic energy differs" + at);
+  // Not an image-corrected δ: the free window's approach is Hertz's a²/R to the discretisation.
+  check(relative(s.interference, a * a / radius) < 0.02, "δ is not Hertz's a²/R to 2 %" + at);
+
+  // Ten times the load: the contact (a × 10^⅓ = 0.215 against a half window of 0.2) reaches the edge.
+  bool serial_refused = false, slab_refused = false;
+  try {
+    serial.solve_mean_pressure(10.0 * load / g.area(), options);
+  } catch (const InputError&) {
+    serial_refused = true;
+  }
+  try {
+    slab.solve_mean_pressure(10.0 * load / g.area(), options);
+  } catch (const InputError&) {
+    slab_refused = true;
+  }
+  check(serial_refused, "the serial solve reaching the window's edge was not refused" + at);
+  check(slab_refused, "the slab solve reaching the window's edge was not refused on this rank" + at);
+  if (mpi::is_root())
+    std::printf("%s: %d iterations (serial %d), δ/(a²/R) = %.4f\n", at.c_str(), s.iterations, r.iterations,
+                s.interference / (a * a / radius));
+}
+
 VectorField vector_rows_of(const VectorField& whole, const Grid2D& slab, std::size_t first) {
   VectorField r(slab);
   r.x = rows_of(whole.x, slab, first);
@@ -346,10 +440,15 @@ int main(int argc, char** argv) {
     test_friction(64, FrictionLaw::coulomb(0.5), 0.5);
   } else if (mode == "tresca") {
     test_friction(64, FrictionLaw::tresca(2e-3), 0.3);
+  } else if (mode == "free") {
+    test_free_operator(Grid2D::square(64, 1.0));
+    test_free_operator(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
+    test_free_operator(Grid2D(20, 33, 1.0, 0.5));  // odd columns, few rows
+    test_free_solve(64);
   } else if (mode == "stop") {
     test_stop(64);
   } else {
-    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | stop\n");
+    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | free | stop\n");
     return 2;
   }
   const long long failed = mpi::sum(static_cast<long long>(failures));

@@ -231,12 +231,17 @@ ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions
 }
 
 void NormalContact::check_window() const {
-  if (body_->boundary() != Boundary::Free) return;  // (the slab body is periodic)
+  if (body_->boundary() != Boundary::Free) return;
+  // The rows held here (all of them on one process, a slab under MPI): the
+  // first and last columns everywhere, the first and last rows where held.
   const Grid2D& g = grid();
+  const std::size_t rows = p_.grid().nx, ny = g.ny, first = body_->first_row();
   bool edge = false;
-  for (std::size_t i = 0; i < g.nx && !edge; ++i) edge = p_(i, 0) > 0.0 || p_(i, g.ny - 1) > 0.0;
-  for (std::size_t j = 0; j < g.ny && !edge; ++j) edge = p_(0, j) > 0.0 || p_(g.nx - 1, j) > 0.0;
-  if (edge)
+  for (std::size_t i = 0; i < rows && !edge; ++i) edge = p_(i, 0) > 0.0 || p_(i, ny - 1) > 0.0;
+  for (const std::size_t i : {std::size_t{0}, g.nx - 1})
+    if (i >= first && i < first + rows)
+      for (std::size_t j = 0; j < ny && !edge; ++j) edge = p_(i - first, j) > 0.0;
+  if (body_->max(edge ? 1.0 : 0.0) > 0.0)
     throw InputError(fmt::format(
         "normal contact: with a free boundary the contact reaches the edge of the {:g} m × {:g} m window, so the "
         "body beyond it is missing and the solution would be wrong; allowed: a contact inside the window (a larger "
