@@ -13,6 +13,7 @@
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/slab_clusters.hpp"
+#include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/core/log.hpp"
@@ -34,6 +35,11 @@ namespace {
 // what rank 0 adds to gather the four fields, find the micro-contacts and
 // write them.
 constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 88.0;
+// A free boundary: the transforms, their spectrum and the two kernels on the
+// padded grid (four times the points), the contact's rows once more to move
+// them between the two slabs (measured at 2048², P = 2, in place: 188 B per
+// point the other rank holds, 228 B on rank 0 with the file's layout).
+constexpr double kFreeBytesPerPoint = 230.0;
 // Frictional: the solver's 21 fields and the tensor's modes per rank (about
 // 250 B per point it holds), and on rank 0 the serial frictional study's
 // figure (bytes_per_point in contact_study.cpp: fields, stresses, outputs).
@@ -73,9 +79,6 @@ SlabCase read_slab_case(const Config& config) {
     s.normal = read_normal_case(c, s.grid);
   else
     s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
-  if (s.normal.boundary == Boundary::Free)
-    throw c.error("boundary", fmt::format("a free boundary is not distributed over MPI ranks ({} ranks started)", ranks),
-                  "\"periodic\" under mpirun; \"free\" without mpirun");
   s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
   s.gather_limit = static_cast<std::size_t>(read_gather_limit(config));
@@ -90,7 +93,9 @@ SlabCase read_slab_case(const Config& config) {
                               "[run] gather_limit): its stresses and files are computed from the whole fields",
                               s.grid.nx, s.grid.ny, s.gather_limit),
                   fmt::format("at most {} points with friction under mpirun", s.gather_limit));
-  const double share = s.friction ? kFrictionalBytesPerPoint : kBytesPerPoint;
+  const double share = s.friction                              ? kFrictionalBytesPerPoint
+                       : s.normal.boundary == Boundary::Free ? kFreeBytesPerPoint
+                                                             : kBytesPerPoint;
   const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
   // Each rank checks its own share (rank 0 adds the gathered fields) against
   // the memory of its machine: the point of the slabs is a grid larger than
@@ -236,16 +241,37 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   if (s.friction) return run_slab_friction(config, s, context);
   const Grid2D& g = s.grid;
   const NormalCase& normal = s.normal;
-  log::info("contact: {} , E* = {:g} Pa, periodic boundary, in slabs over {} MPI ranks", g.to_string(), normal.e_star,
-            mpi::size());
-  auto body = std::make_unique<SlabHalfSpace>(g, normal.e_star, s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
-  const std::size_t first = body->first_row(), rows = body->rows();
-  SlabFFT& fft = body->fft();  // owned by the body, which the contact keeps
+  const bool free = normal.boundary == Boundary::Free;
+  log::info("contact: {} , E* = {:g} Pa, {} boundary, in slabs over {} MPI ranks", g.to_string(), normal.e_star,
+            to_string(normal.boundary), mpi::size());
+  const PlanRigor rigor = s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate;
+  // The transforms of the contact's grid, for its rough surface and its
+  // slope: the periodic body's own; a free body transforms the padded grid,
+  // so the contact's get their own (made when needed, freed for the solve).
+  std::unique_ptr<NormalOperator> body;
+  std::unique_ptr<SlabFFT> own_fft;
+  SlabFFT* periodic_fft = nullptr;
+  if (free) {
+    body = std::make_unique<SlabFreeHalfSpace>(g, normal.e_star, rigor);
+  } else {
+    auto periodic = std::make_unique<SlabHalfSpace>(g, normal.e_star, rigor);
+    periodic_fft = &periodic->fft();  // owned by the body, which the contact keeps
+    body = std::move(periodic);
+  }
+  auto transforms = [&]() -> SlabFFT& {
+    if (periodic_fft != nullptr) return *periodic_fft;
+    if (!own_fft) own_fft = std::make_unique<SlabFFT>(g.nx, g.ny, PlanRigor::Estimate);
+    return *own_fft;
+  };
+  const std::size_t first = body->first_row(), rows = body->local_grid().nx;
   RealField h = own_rows(s, body->local_grid(), first);  // file + rough + sphere, as the serial study adds them
-  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, fft));
+  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, transforms()));
   if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
+  own_fft.reset();
   NormalContact contact(std::move(body), h, normal.e_star);
-  const ContactResult r = together([&] { return normal.solve(contact); });
+  // A free window too small for its contact is every rank's refusal, said once.
+  ContactResult r;
+  mpi::refuse_together([&] { r = together([&] { return normal.solve(contact); }); });
 
   if (g.size() <= s.gather_limit) {
     RealField whole_h = gathered(h, g);
@@ -257,7 +283,8 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   }
   // Above the gather limit: the headline figures from the slabs (collective),
   // the fields written in place, no micro-contacts.
-  const double hprime = roughness_slab(h, g, RoughnessMeasure::HPrimeRms, fft);
+  const double hprime = roughness_slab(h, g, RoughnessMeasure::HPrimeRms, transforms());
+  own_fft.reset();
   RealField in_contact(h.grid());
   long long touching = 0;
   for (std::size_t k = 0; k < in_contact.size(); ++k) {
@@ -285,7 +312,8 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
     report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
     report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
     report("contact_area", area, "m^2", "real contact area A");
-    report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+    report("interference", r.interference, "m",
+           free ? "approach δ of the rigid surface towards the far field" : "summit depth below the mean deformed surface");
     report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
     report("clusters", static_cast<double>(clusters.size()), "1", "number of micro-contacts");
     report("iterations", r.iterations, "1", "Polonsky–Keer iterations");

@@ -2,7 +2,7 @@
 // serial study's summary and files (rank 0 alone writes and prints); what the
 // slabs cannot do is refused on every rank (status 2, the key named, nothing
 // written). Runs mpirun itself (label "mpi"); 128² and 160², one thread a rank;
-// Coulomb and Tresca friction on 64².
+// Coulomb and Tresca friction on 64²; a free (zero-padded) window on 128².
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -212,6 +212,39 @@ TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   expect_same_files(work / "sphere_serial", work / "sphere_slab");
 }
 
+TEST(MpiContactCli, AFreeBoundaryOnRanksGivesTheSerialHertzContactGatheredOrWrittenInPlace) {
+  // A sphere (R = 1) on a free window of four Hertz radii (a = 0.1 at this
+  // load, 64 cells across the contact): the slabs give the serial summary and
+  // files, whether rank 0 gathers the fields or every rank writes its rows,
+  // and the approach is Hertz's a²/R = 0.01 without an image correction.
+  const std::string args = "contact --set contact.grid=128 --set contact.size=0.4 --set contact.e_star=1 "
+                           "--set 'contact.boundary=\"free\"' --set contact.normal_load=0.0013333333333333333 "
+                           "--set contact.sphere.radius=1 --set contact.tolerance=1e-10 --json";
+  const auto serial = run(0, args + " -q --out free_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto s = nlohmann::json::parse(serial.out);
+  EXPECT_NEAR(s["results"]["interference"]["value"].get<double>(), 0.01, 0.01 * 0.01);
+  for (const auto& [ranks, limit] : {std::pair{2, 1000000}, std::pair{3, 1000000}, std::pair{2, 10000}}) {
+    const std::string dir = "free" + std::to_string(ranks) + "_" + std::to_string(limit);
+    const auto slab = run(ranks, args + " --set run.gather_limit=" + std::to_string(limit) + " --out " + dir);
+    ASSERT_EQ(slab.status, 0) << slab.err;
+    EXPECT_THAT(slab.err, HasSubstr("free boundary, in slabs over " + std::to_string(ranks) + " MPI ranks"));
+    expect_same_results(s, nlohmann::json::parse(slab.out), ranks);
+    expect_same_files(work / "free_serial", work / dir);
+    EXPECT_EQ(slurp(work / "free_serial" / "clusters.csv"), slurp(work / dir / "clusters.csv"));
+  }
+  // Ten times the load: the contact (a = 0.215) reaches the window's edge.
+  // Refused on every rank, said once, nothing written, as serially.
+  for (const int ranks : {0, 3}) {
+    const std::string dir = "free_edge" + std::to_string(ranks);
+    const auto r = run(ranks, args + " --set contact.normal_load=0.013333333333333333 -q --out " + dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("reaches the edge of the 0.4 m × 0.4 m window"));
+    EXPECT_EQ(error_lines(r.err), 1u) << r.err;
+    EXPECT_FALSE(fs::exists(work / dir)) << dir;
+  }
+}
+
 TEST(MpiContactCli, AMeasuredSurfaceFileIsReadInSlabsAndGivesTheSerialSummaryAndFiles) {
   // A rectangular surface of odd rows (99 × 64 points over 1.5 × 1 mm), read
   // from its HDF5 file: every rank keeps its rows; P = 2 and 3 against serial.
@@ -281,7 +314,9 @@ TEST(MpiContactCli, CoulombFrictionOnThreeRanksGivesTheSerialSummaryAndFiles) {
 TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
   const std::string args = "contact " + rough_case + " --set contact.grid=128 -q";
   const std::pair<const char*, const char*> cases[] = {
-      {"--set contact.boundary=free", "contact.boundary"},
+      {"--set contact.boundary=free --set contact.friction=coulomb --set contact.poisson=0.3 "
+       "--set contact.friction_coefficient=0.5",
+       "contact.boundary"},  // friction on a free window (refused serially alike)
       {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
        "--set contact.grid=4100",
        "contact.grid"},  // friction above the gather limit
