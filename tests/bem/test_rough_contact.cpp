@@ -88,3 +88,64 @@ TEST(RoughContact, PreconditionedAndPolonskyKeerSolutionsAgree) {
   EXPECT_NEAR(ra.interference, rb.interference, 1e-8 * std::abs(rb.interference));
   RecordProperty("max_pressure_difference_relative", std::to_string(diff / peak));
 }
+
+namespace {
+// Iterations per step of a load ramp from p̄ = 0.03 in relative steps `step`,
+// steps 2..6 (the first has one kept solution only: no secant yet).
+std::vector<int> ramp_iterations(NormalContact& contact, double step, bool predict) {
+  ContactOptions options{1e-10, 1000};
+  options.predict_load = predict;
+  contact.reset();
+  contact.solve_mean_pressure(0.03, options);
+  std::vector<int> out;
+  for (int k = 1; k <= 6; ++k) {
+    const int it = contact.solve_mean_pressure(0.03 * (1.0 + step * k), options).iterations;
+    if (k > 1) out.push_back(it);
+  }
+  return out;
+}
+}  // namespace
+
+TEST(RoughContact, TheLoadPredictorShortensSmallLoadSteps) {
+  // Warm starts along slowly increasing loads (the wear maps' series): the
+  // secant of λ = p − c g through the last two solutions. 512², seed 1, 1e-10.
+  // Not 10 a step: the prediction leaves ε ≈ 1.5e-7 (the points entering the
+  // contact), and the restarted iteration gains ≈ 0.45 decade a step to 1e-10.
+  NormalContact contact(benchmark_surface(512, 1), 1.0);
+  for (const double step : {0.001, 0.01}) {
+    const std::vector<int> plain = ramp_iterations(contact, step, false);
+    const std::vector<int> predicted = ramp_iterations(contact, step, true);
+    const int worst = *std::max_element(predicted.begin(), predicted.end());
+    EXPECT_LE(worst, step < 0.005 ? 12 : 17) << "step " << step;
+    EXPECT_LT(worst, *std::min_element(plain.begin(), plain.end())) << "step " << step;
+    RecordProperty("worst_step_predicted_" + std::to_string(step), std::to_string(worst));
+    RecordProperty("best_step_plain_" + std::to_string(step),
+                   std::to_string(*std::min_element(plain.begin(), plain.end())));
+  }
+}
+
+TEST(RoughContact, TheLoadPredictorGivesTheSameSolutionAndForgetsOtherSurfaces) {
+  const RealField h = benchmark_surface(256, 3);
+  NormalContact a(h, 1.0), b(h, 1.0);
+  ContactOptions predicted{1e-10, 1000}, plain{1e-10, 1000};
+  predicted.predict_load = true;
+  for (const double p0 : {0.03, 0.0303, 0.0306}) {
+    a.solve_mean_pressure(p0, predicted);
+    b.solve_mean_pressure(p0, plain);
+  }
+  EXPECT_EQ(a.kept_solutions(), 2u);
+  EXPECT_EQ(b.kept_solutions(), 0u);
+  double diff = 0.0, peak = 0.0;
+  for (std::size_t k = 0; k < h.size(); ++k) {
+    diff = std::max(diff, std::abs(a.pressure()[k] - b.pressure()[k]));
+    peak = std::max(peak, b.pressure()[k]);
+  }
+  EXPECT_LT(diff, 1e-6 * peak);  // both converged to 1e-10 in ε
+  a.set_surface(h);
+  EXPECT_EQ(a.kept_solutions(), 0u);
+  a.solve_mean_pressure(0.03, predicted);
+  a.solve_mean_pressure(0.03, predicted);  // the same load again: one kept
+  EXPECT_EQ(a.kept_solutions(), 1u);
+  a.reset();
+  EXPECT_EQ(a.kept_solutions(), 0u);
+}

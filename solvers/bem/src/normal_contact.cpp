@@ -53,12 +53,16 @@ const HalfSpace& NormalContact::half_space() const {
 void NormalContact::set_surface(const RealField& surface) {
   if (!(surface.grid() == h_.grid())) throw std::invalid_argument("NormalContact::set_surface: grid changed");
   h_ = surface;
+  ramp_.clear();  // the kept solutions were for another surface
   const SurfaceScale scale = surface_scale(*body_, h_, "normal contact");
   h_rms_ = scale.h_rms;
   h_max_ = scale.h_max;
 }
 
-void NormalContact::reset() { p_.fill(0.0); }
+void NormalContact::reset() {
+  p_.fill(0.0);
+  ramp_.clear();
+}
 
 void NormalContact::set_warm_start(std::span<const double> pressure, double gap_shift) {
   if (pressure.size() != p_.size())
@@ -69,6 +73,7 @@ void NormalContact::set_warm_start(std::span<const double> pressure, double gap_
   if (!std::isfinite(gap_shift)) throw InputError("normal contact: the warm-start mean gap is not finite");
   std::copy(pressure.begin(), pressure.end(), p_.begin());
   gap_shift_ = gap_shift;
+  ramp_.clear();
 }
 
 // Pass 1 over the contact S = {p > 0}: mean gap ḡ, Σ_S (g − ḡ)² (by sums
@@ -224,6 +229,41 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
   state.alpha = p0 * points() / new_sum;  // impose ⟨p⟩ = p0 (A.6c)
 }
 
+// The load predictor (a secant in the load): λ(p0) ≈ λ₂ + w (λ₂ − λ₁),
+// w = (p0 − P₂)/(P₂ − P₁), p = max(λ, 0), with λ = p − c g of the kept
+// solutions (keep_solution). On a fixed contact set the solution is affine in
+// the load, so the secant is exact there; a point about to enter the contact
+// has a closing gap, so λ extrapolates it to a small pressure where the plain
+// secant of p would leave it at 0 for the iteration to re-admit. The mean gap
+// on the contact is extrapolated alike.
+bool NormalContact::predict(double p0) {
+  if (ramp_.size() < 2) return false;
+  const Solution &a = ramp_[0], &b = ramp_[1];
+  const double w = (p0 - b.load) / (b.load - a.load);  // loads distinct (keep_solution)
+  if (w == 0.0 || !(std::abs(w) <= 4.0)) return false;  // far from the ramp: the plain warm start
+  const std::size_t n = p_.size();
+  const double *la = a.lambda.data(), *lb = b.lambda.data();
+  double* p = p_.data();
+#pragma omp parallel for simd schedule(static)
+  for (std::size_t k = 0; k < n; ++k) p[k] = std::max(lb[k] + w * (lb[k] - la[k]), 0.0);
+  gap_shift_ = b.gap_shift + w * (b.gap_shift - a.gap_shift);
+  return true;
+}
+
+// Keeps λ = p − c g of a converged solve (p on the contact, −c g ≤ 0 outside,
+// so p = max(λ, 0)), c = S(0)/10: a tenth of a cell's own stiffness under the
+// preconditioner. On the rough case at 512², +0.1 % load steps, c = 0, 0.01,
+// 0.03, 0.1, 0.3, 1 × S(0) gave 12, 11, 11, 11, 11, 12 iterations a step;
+// +1 %: 17 (c = 0), 16 (0.03), 15 (0.1).
+void NormalContact::keep_solution(double p0, double gap_mean) {
+  if (!ramp_.empty() && ramp_.back().load == p0) ramp_.pop_back();  // the same load again: keep the newer
+  if (ramp_.size() == 2) ramp_.erase(ramp_.begin());
+  const double c = 0.1 * body_->stiffness_diagonal();
+  std::vector<double> lambda(p_.size());
+  for (std::size_t k = 0; k < lambda.size(); ++k) lambda[k] = p_[k] - c * gap_[k];
+  ramp_.push_back({p0, gap_mean, std::move(lambda)});
+}
+
 ContactResult NormalContact::solve_mean_pressure(double p0, const ContactOptions& opt) {
   const ContactResult r = solve(p0, opt);
   check_window();
@@ -255,11 +295,13 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   if (!(opt.tolerance > 0.0)) throw InputError("normal contact: the tolerance must be > 0");
   history_.clear();
   if (p0 == 0.0) {
+    ramp_.clear();
     p_.fill(0.0);
     u_.fill(0.0);
     return finish(0, 0.0, -h_max_);  // the summit just touches: δ = 0
   }
-  // Warm start: the previous pressure rescaled to p0; else uniform p0.
+  // Warm start: the load ramp's prediction or the previous pressure, rescaled to p0; else uniform p0.
+  if (opt.predict_load) predict(p0);
   Iterate state;
   double mean = 0.0;
   for (double v : p_) mean += v;
@@ -295,7 +337,9 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
     if (history_.size() > kHistory) history_.erase(history_.begin());
     if (descent.error < opt.tolerance && !descent.penetrates) {
       for (double& v : p_) v *= state.alpha;
-      return finish(it, descent.error, gap.mean);
+      const ContactResult r = finish(it, descent.error, gap.mean);
+      if (opt.predict_load) keep_solution(p0, gap.mean);
+      return r;
     }
     if (preconditioned) {
       body_->stiffness(gap_, z_);  // z = S r

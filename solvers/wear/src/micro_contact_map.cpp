@@ -101,6 +101,7 @@ MicroContactMap RoughContactSeries::at_load(double p_tilde) {
   bem::ContactOptions opt;
   opt.tolerance = impl_->spec.tolerance;
   opt.max_iterations = impl_->spec.max_iterations;
+  opt.predict_load = true;  // a series walks the loads on one surface: start from the secant of the last two
   const auto r = impl_->contact->solve_mean_pressure(normal_pressure(p_tilde, impl_->spec.h_prime_rms, 1.0), opt);
   iterations_ = r.iterations;
   return contact_from_pressure(impl_->contact->pressure());

@@ -57,6 +57,10 @@ struct ContactOptions {
   /// on every process at the same iteration (the answers are summed with the
   /// iteration's own sums), e.g. [] { return interrupt_requested(); }.
   std::function<bool()> stop = nullptr;
+  /// Load ramps (a wear map walking the loads on one surface): start from the
+  /// secant through the last two solutions on this surface, extrapolated to
+  /// this load, instead of the last one rescaled (see kept_solutions()).
+  bool predict_load = false;
 };
 
 struct ContactResult {
@@ -95,13 +99,20 @@ class NormalContact {
   /// Adds `compliance` to the half-space's in the next solves (nullptr: none).
   /// It must outlive those solves; displacement() and the elastic energy then
   /// include its share.
-  void set_added_compliance(const AddedCompliance* compliance) { added_ = compliance; }
+  void set_added_compliance(const AddedCompliance* compliance) {
+    if (compliance != added_) ramp_.clear();
+    added_ = compliance;
+  }
   /// The warm start carried from one solve to the next: the last pressure
   /// (pressure()) and the mean gap on the contact. Restoring both (from a
   /// checkpoint) makes the next solve bit-identical to the one an
   /// uninterrupted computation would do.
   double warm_gap_shift() const { return gap_shift_; }
   void set_warm_start(std::span<const double> pressure, double gap_shift);
+  /// Solutions kept for ContactOptions::predict_load on this surface (0, 1 or
+  /// 2, at distinct loads; a secant needs 2). set_surface, reset,
+  /// set_warm_start and a change of the added compliance forget them.
+  std::size_t kept_solutions() const { return ramp_.size(); }
 
   /// Solves for the imposed mean pressure p0 ≥ 0 (InputError if negative;
   /// NumericalError on NaN, breakdown or no convergence).
@@ -150,6 +161,9 @@ class NormalContact {
   double step_length(const Descent& descent, int iteration);
   // Descends by τ, projects on p ≥ 0, re-admits penetrating points and rescales to p0.
   void descend(double tau, double g_mean, double p0, int iteration, Iterate& state);
+  // The warm start of a load ramp: the secant through the kept solutions, extrapolated to p0.
+  bool predict(double p0);
+  void keep_solution(double p0, double gap_mean);
   ContactResult finish(int iterations, double error, double g_mean);
   ContactResult solve(double p0, const ContactOptions& options);
   // InputError if a free window's contact reaches its border.
@@ -172,6 +186,11 @@ class NormalContact {
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
   std::vector<double> history_;
   const AddedCompliance* added_ = nullptr;
+  struct Solution {  // a converged solve kept for the load predictor
+    double load = 0.0, gap_shift = 0.0;
+    std::vector<double> lambda;  // p − c g (see predict)
+  };
+  std::vector<Solution> ramp_;  // the last two, oldest first
 };
 
 }  // namespace wearscale::bem
