@@ -207,13 +207,14 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
            py::arg("lx"), py::arg("ly") = -1.0, py::arg("e_star"), py::arg("boundary") = "periodic")
       .def("solve",
            [](PyNormalContact& self, std::optional<double> mean_pressure, std::optional<double> interference,
-              double tolerance, int max_iterations, const std::string& method) {
+              double tolerance, int max_iterations, const std::string& method, bool predict_load) {
              if (mean_pressure.has_value() == interference.has_value())
                throw InputError("contact.NormalContact.solve: give exactly one of mean_pressure [Pa] >= 0, interference [m]");
              ContactOptions options;
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
              options.method = method_from(method);
+             options.predict_load = predict_load;
              options.stop = python_signal_stop();
              ContactResult r;
              const auto start = std::chrono::steady_clock::now();
@@ -227,11 +228,13 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
              return d;
            },
            py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(), py::arg("tolerance") = 1e-12,
-           py::arg("max_iterations") = 10000, py::arg("method") = "preconditioned",
+           py::arg("max_iterations") = 10000, py::arg("method") = "preconditioned", py::arg("predict_load") = false,
            R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
-"preconditioned" (default) or "polonsky-keer". Releases the GIL; Ctrl-C ends the solve within an
+"preconditioned" (default) or "polonsky-keer". predict_load: for a load ramp on one surface, start
+from the secant through the last two solutions (kept_solutions) instead of the last pressure
+rescaled (about 11 iterations per +0.1 % step against 17 at 512^2). Releases the GIL; Ctrl-C ends the solve within an
 iteration (KeyboardInterrupt). Returns a dict: iterations,
 error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
 solve_seconds (wall time of the C++ solve, GIL released).
@@ -240,6 +243,8 @@ ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
              self.solver.set_surface(field_from(h, self.solver.grid()));
            }, py::arg("heights"), "Replaces the rigid surface (same grid), keeping the last pressure as a warm start.")
       .def("reset", [](PyNormalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
+      .def_property_readonly("kept_solutions", [](PyNormalContact& self) { return self.solver.kept_solutions(); },
+                             "Solutions kept for predict_load on this surface (0, 1 or 2).")
       .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.pressure(), self); },
                              "Contact pressure p >= 0 [Pa], (nx, ny), read-only view.")
       .def_property_readonly("gap", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.gap(), self); },

@@ -74,6 +74,22 @@ def test_a_warm_started_load_ramp_matches_cold_solves_in_fewer_iterations(rough)
     assert ramp[-1]["contact_fraction"] > 2 * ramp[0]["contact_fraction"]
 
 
+def test_the_load_predictor_gives_the_plain_ramps_solutions_in_fewer_iterations(rough):
+    loads = np.linspace(2e6, 2.2e6, 8)  # steps of about 1.4 %
+    predicted = ws.contact.NormalContact(rough, e_star=E_STAR)
+    plain = ws.contact.NormalContact(rough, e_star=E_STAR)
+    a = predicted.ramp(loads, tolerance=1e-10)
+    b = plain.ramp(loads, tolerance=1e-10, predict_load=False)
+    assert predicted.kept_solutions == 2 and plain.kept_solutions == 0
+    for x, y in zip(a, b):
+        assert x["contact_fraction"] == approx(y["contact_fraction"], abs=2 / 64**2)
+    assert np.abs(predicted.pressure - plain.pressure).max() < 1e-6 * plain.pressure.max()
+    # From the third load on (two kept solutions): fewer iterations in all.
+    assert sum(r["iterations"] for r in a[2:]) < sum(r["iterations"] for r in b[2:])
+    predicted.reset()
+    assert predicted.kept_solutions == 0
+
+
 def test_the_warm_start_state_restores_a_bit_identical_next_solve(rough):
     a = ws.contact.NormalContact(rough, e_star=E_STAR)
     a.solve(mean_pressure=1e6)

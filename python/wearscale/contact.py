@@ -29,7 +29,9 @@ class NormalContact(_c.NormalContact):
         super().__init__(h, lx, ly, e_star, boundary)
 
     def ramp(self, mean_pressures, **options):
-        """Solves at each mean pressure [Pa] in turn (each warm-started from the last); returns the result dicts."""
+        """Solves at each mean pressure [Pa] in turn, each warm-started from the last two (the load
+        predictor, ``predict_load=True`` unless given); returns the result dicts."""
+        options.setdefault("predict_load", True)
         return [self.solve(mean_pressure=p, **options) for p in mean_pressures]
 
 
