@@ -90,6 +90,46 @@ ContactResult NormalCase::solve(NormalContact& contact) const {
   return imposes_interference ? contact.solve_interference(delta, options) : contact.solve_mean_pressure(p0, options);
 }
 
+void report_normal_figures(const NormalCase& n, const ContactResult& r, const NormalFigures& f,
+                           const FigureReport& report) {
+  report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
+  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
+  report("contact_area", f.contact_area, "m^2", "real contact area A");
+  report("interference", r.interference, "m",
+         n.boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
+                                      : "summit depth below the mean deformed surface");
+  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
+  report("clusters", static_cast<double>(f.clusters), "1", "number of micro-contacts");
+  report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
+  report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
+  report("hprime_rms", f.hprime_rms, "1", "RMS slope of the surface (1.6)");
+}
+
+void report_frictional_figures(const FrictionalCase& fc, const FrictionalResult& r, const FrictionalFigures& f,
+                               const FigureReport& report) {
+  report("mean_pressure", r.mean_traction.normal, "Pa", "mean normal traction ⟨p_N⟩");
+  report("mean_tangential_pressure", r.mean_traction.x, "Pa", "mean tangential traction ⟨p_x⟩");
+  report("friction_ratio", r.frictional_force_ratio, "1", "‖⟨p_T⟩‖/⟨p_N⟩");
+  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
+  report("stick_fraction", r.stick_fraction, "1", "sticking area / A0");
+  report("slip_fraction", r.slip_fraction, "1", "sliding area / A0");
+  report("full_sliding", r.full_sliding ? 1.0 : 0.0, "1", "1 if every contact point slides");
+  if (!r.full_sliding)
+    report("tangential_displacement", r.tangential_displacement_x, "m", "δ_x, rigid displacement of the stick zone");
+  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
+  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p·u dA (4.1)");
+  report("clusters", static_cast<double>(f.clusters), "1", "number of micro-contacts");
+  report("iterations", r.iterations, "1", "iterations of Algorithm 1");
+  report("bound_updates", r.bound_updates, "1", "updates of the lagged friction limit");
+  report("unsettled_points", static_cast<double>(r.unsettled_points), "1",
+         "contact points whose friction limit differs from the law's");
+  report("error", r.error, "1", "cost (A.14) relative to Σp·h_rms");
+  report("max_sigma_I", f.max_sigma_I, "Pa", "largest first principal stress on the surface (4.24)");
+  if (!fc.depths.empty())
+    report("max_tau_subsurface", f.max_tau, "Pa",
+           fmt::format("largest τ_m = (σ_I − σ_III)/2 over the requested depths (at {:g} m)", f.max_tau_depth));
+}
+
 void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
                         const RealField& gap, const RealField& u, const ContactResult& r,
                         coupling::RunContext& context) {
@@ -112,17 +152,7 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
     context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
-  report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
-  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-  report("contact_area", contact_area(p), "m^2", "real contact area A");
-  report("interference", r.interference, "m",
-         n.boundary == Boundary::Free ? "approach δ of the rigid surface towards the far field"
-                                      : "summit depth below the mean deformed surface");
-  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
-  report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
-  report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
-  report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
-  report("hprime_rms", h_prime_rms(h), "1", "RMS slope of the surface (1.6)");
+  report_normal_figures(n, r, {contact_area(p), map.clusters.size(), h_prime_rms(h)}, report);
 
   std::vector<double> area, cx, cy;
   for (const auto& cl : map.clusters) {
@@ -254,28 +284,10 @@ void write_frictional_study(const Config& config, const FrictionalCase& fc, cons
     context.report(name, v, unit, what);
     h5.write_scalar("/results/" + name, v, unit);
   };
-  report("mean_pressure", r.mean_traction.normal, "Pa", "mean normal traction ⟨p_N⟩");
-  report("mean_tangential_pressure", r.mean_traction.x, "Pa", "mean tangential traction ⟨p_x⟩");
-  report("friction_ratio", r.frictional_force_ratio, "1", "‖⟨p_T⟩‖/⟨p_N⟩");
-  report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-  report("stick_fraction", r.stick_fraction, "1", "sticking area / A0");
-  report("slip_fraction", r.slip_fraction, "1", "sliding area / A0");
-  report("full_sliding", r.full_sliding ? 1.0 : 0.0, "1", "1 if every contact point slides");
-  if (!r.full_sliding)
-    report("tangential_displacement", r.tangential_displacement_x, "m", "δ_x, rigid displacement of the stick zone");
-  report("interference", r.interference, "m", "summit depth below the mean deformed surface");
-  report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p·u dA (4.1)");
-  report("clusters", static_cast<double>(map.clusters.size()), "1", "number of micro-contacts");
-  report("iterations", r.iterations, "1", "iterations of Algorithm 1");
-  report("bound_updates", r.bound_updates, "1", "updates of the lagged friction limit");
-  report("unsettled_points", static_cast<double>(r.unsettled_points), "1",
-         "contact points whose friction limit differs from the law's");
-  report("error", r.error, "1", "cost (A.14) relative to Σp·h_rms");
-  report("max_sigma_I", *std::max_element(surface.first.begin(), surface.first.end()), "Pa",
-         "largest first principal stress on the surface (4.24)");
-  if (!fc.depths.empty())
-    report("max_tau_subsurface", deep_tau, "Pa",
-           fmt::format("largest τ_m = (σ_I − σ_III)/2 over the requested depths (at {:g} m)", deep_tau_depth));
+  report_frictional_figures(fc, r,
+                            {map.clusters.size(), *std::max_element(surface.first.begin(), surface.first.end()),
+                             deep_tau, deep_tau_depth},
+                            report);
 
   // Micro-contacts, with (4.25) at their edges if σ_m is given.
   std::vector<double> area, cx, cy, trailing, leading, initiates;

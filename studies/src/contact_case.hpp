@@ -3,6 +3,7 @@
 // (contact_study.cpp) and the one in slabs over MPI ranks (contact_slab.cpp)
 // share: the keys of a generated rough surface and of a frictionless load, and
 // the files written from the solved whole fields. Private to the studies.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,21 @@ struct NormalCase {
 };
 NormalCase read_normal_case(const Config& contact, const Grid2D& g);
 
+/// One headline figure: name, value, unit, what it is.
+using FigureReport = std::function<void(const std::string& name, double value, const std::string& unit,
+                                        const std::string& what)>;
+
+/// The figures of a normal contact besides the solver's: A, the micro-contacts, h'_RMS.
+struct NormalFigures {
+  double contact_area = 0.0;
+  std::size_t clusters = 0;
+  double hprime_rms = 0.0;
+};
+/// Every headline figure of a frictionless contact, in the order the study writes them
+/// (the serial study and the slabs' alike).
+void report_normal_figures(const NormalCase& n, const bem::ContactResult& r, const NormalFigures& f,
+                           const FigureReport& report);
+
 /// contact.h5 (+ .xdmf) and clusters.csv from the whole fields, and the
 /// headline figures reported to `context`.
 void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
@@ -67,6 +83,17 @@ struct FrictionalCase {
   bem::FrictionalResult solve(bem::FrictionalContact& contact, const Config& contact_section) const;
 };
 FrictionalCase read_frictional_case(const Config& contact, const Grid2D& g, const std::string& law_name);
+
+/// The figures of a frictional contact besides the solver's: the micro-contacts and the stresses' maxima.
+struct FrictionalFigures {
+  std::size_t clusters = 0;
+  double max_sigma_I = 0.0;
+  double max_tau = 0.0, max_tau_depth = 0.0;  // over the stress depths, if any
+};
+/// Every headline figure of a frictional contact but the crack sites, in the
+/// order the study writes them (the serial study and the slabs' alike).
+void report_frictional_figures(const FrictionalCase& f, const bem::FrictionalResult& r, const FrictionalFigures& figures,
+                               const FigureReport& report);
 
 /// The whole fields of a solved frictional contact.
 struct FrictionalFields {

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
+#include "wearscale/bem/slab_subsurface_stress.hpp"
+#include "wearscale/bem/principal_stresses.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
@@ -44,6 +47,11 @@ constexpr double kFreeBytesPerPoint = 230.0;
 // 250 B per point it holds), and on rank 0 the serial frictional study's
 // figure (bytes_per_point in contact_study.cpp: fields, stresses, outputs).
 constexpr double kFrictionalBytesPerPoint = 260.0, kFrictionalGatherBytesPerPoint = 640.0;
+// Above the gather limit each rank also holds its rows of the traction and
+// stress spectra, one stress tensor, the surface's principal stresses and two
+// fields a depth (measured at 1024², P = 2, two depths: 444 B per point the
+// other rank holds).
+constexpr double kFrictionalInPlaceBytesPerPoint = 600.0;
 
 // The whole field on rank 0 (an empty one elsewhere) from every rank's rows.
 RealField gathered(const RealField& slab, const Grid2D& g) {
@@ -87,13 +95,17 @@ SlabCase read_slab_case(const Config& config) {
   const bool file = s.measured.size() > 0;
   const char* size_key = file ? "surface" : "grid";  // what sets the grid
   const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
-  if (s.friction && !gather)
-    throw c.error(size_key,
-                  fmt::format("a frictional contact of {} × {} points is more than rank 0 gathers ({} points, "
-                              "[run] gather_limit): its stresses and files are computed from the whole fields",
+  if (s.friction && s.friction->crack && !gather)
+    throw c.error("tensile_strength",
+                  fmt::format("crack initiation (4.25) at each micro-contact's edges needs the whole map of the "
+                              "surface stresses, and a frictional contact of {} × {} points is more than rank 0 "
+                              "gathers ({} points, [run] gather_limit)",
                               s.grid.nx, s.grid.ny, s.gather_limit),
-                  fmt::format("at most {} points with friction under mpirun", s.gather_limit));
-  const double share = s.friction                              ? kFrictionalBytesPerPoint
+                  fmt::format("no tensile_strength above {} points under mpirun (the stresses are written all the "
+                              "same), or a larger [run] gather_limit",
+                              s.gather_limit));
+  const double share = s.friction && !gather                   ? kFrictionalInPlaceBytesPerPoint
+                       : s.friction                              ? kFrictionalBytesPerPoint
                        : s.normal.boundary == Boundary::Free ? kFreeBytesPerPoint
                                                              : kBytesPerPoint;
   const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
@@ -120,8 +132,6 @@ VectorField gathered(const VectorField& slab, const Grid2D& g) {
   return whole;
 }
 
-// Coulomb or Tresca friction: the one FrictionalContact on a SlabHalfSpace of
-// the whole tensor; rank 0 gathers the fields and writes the serial study's files.
 // A slab solve stops on every rank at the same iteration (ContactOptions::stop).
 template <class Solve>
 auto together(Solve solve) {
@@ -142,26 +152,6 @@ RealField own_rows(SlabCase& s, const Grid2D& local, std::size_t first) {
   return h;
 }
 
-void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* context) {
-  const Grid2D& g = s.grid;
-  const FrictionalCase& f = *s.friction;
-  log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction, periodic boundary, in slabs over {} MPI ranks",
-            g.to_string(), f.young, f.poisson, f.law.to_string(), mpi::size());
-  auto body = std::make_unique<SlabHalfSpace>(g, f.young, f.poisson,
-                                              s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
-  const std::size_t first = body->first_row(), rows = body->rows();
-  RealField h = own_rows(s, body->local_grid(), first);  // file + rough + sphere, as the serial study adds them
-  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, body->fft()));
-  if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
-  FrictionalContact contact(std::move(body), h, f.law);
-  const FrictionalResult r = together([&] { return f.solve(contact, config.section("contact")); });
-  RealField whole_h = gathered(h, g);
-  h = RealField();
-  const VectorField traction = gathered(contact.traction(), g), u = gathered(contact.displacement(), g);
-  const VectorField slip = gathered(contact.slip(), g);
-  const RealField gap = gathered(contact.normal_gap(), g), map = gathered(contact.stick_slip_map(), g);
-  if (context != nullptr) write_frictional_study(config, f, {whole_h, traction, u, gap, slip, map}, r, *context);
-}
 }  // namespace
 
 namespace {
@@ -172,8 +162,7 @@ struct SlabField {
   const char* unit;
   const RealField* rows;
 };
-using Report = std::function<void(const std::string& name, double value, const std::string& unit,
-                                  const std::string& what)>;
+using Report = FigureReport;
 
 // contact.h5 of a grid no rank gathers (collective): rank 0 lays it out on
 // disk (the case, the headline figures through `results`, every field
@@ -230,6 +219,118 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
   file->commit();
   XdmfSidecar(g).add_written(views).write(context->output_dir() / "contact.xdmf", file->final_path());
   for (const auto& f : {file->final_path(), context->output_dir() / "contact.xdmf"}) context->add_file(f);
+}
+// Coulomb or Tresca friction: the one FrictionalContact on a SlabHalfSpace of
+// the whole tensor. Up to the gather limit rank 0 gathers the fields and
+// writes the serial study's files; above it every rank computes its rows of
+// the stresses (SlabSubsurfaceStress, the body's transforms) and writes its
+// rows of every field in place, and the micro-contacts are joined across the
+// slabs. A slab solve stops on every rank at the same iteration (ContactOptions::stop).
+void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* context) {
+  const Grid2D& g = s.grid;
+  const FrictionalCase& f = *s.friction;
+  log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction, periodic boundary, in slabs over {} MPI ranks",
+            g.to_string(), f.young, f.poisson, f.law.to_string(), mpi::size());
+  auto body = std::make_unique<SlabHalfSpace>(g, f.young, f.poisson,
+                                              s.measured_plans ? PlanRigor::Measure : PlanRigor::Estimate);
+  const std::size_t first = body->first_row(), rows = body->rows();
+  SlabFFT& fft = body->fft();  // owned by the body, which the contact keeps
+  RealField h = own_rows(s, body->local_grid(), first);  // file + rough + sphere, as the serial study adds them
+  if (s.rough) h = add(h, generate_surface_slab(s.rough->spec, s.rough->measure, s.rough->target, fft));
+  if (s.sphere_radius > 0.0) h = add(h, sphere_rows(g, first, rows, s.sphere_radius, 0.5 * g.lx, 0.5 * g.ly));
+  FrictionalContact contact(std::move(body), h, f.law);
+  const FrictionalResult r = together([&] { return f.solve(contact, config.section("contact")); });
+  if (g.size() <= s.gather_limit) {
+    RealField whole_h = gathered(h, g);
+    h = RealField();
+    const VectorField traction = gathered(contact.traction(), g), u = gathered(contact.displacement(), g);
+    const VectorField slip = gathered(contact.slip(), g);
+    const RealField gap = gathered(contact.normal_gap(), g), map = gathered(contact.stick_slip_map(), g);
+    if (context != nullptr) write_frictional_study(config, f, {whole_h, traction, u, gap, slip, map}, r, *context);
+    return;
+  }
+  if (context != nullptr)
+    log::info("contact: {} points are more than rank 0 gathers ({}, [run] gather_limit): every rank computes its rows "
+              "of the stresses and writes its rows of the fields into contact.h5, the micro-contacts are joined "
+              "across the slabs",
+              g.size(), s.gather_limit);
+  const VectorField& traction = contact.traction();
+  const Grid2D& local = traction.grid();
+  // The stresses at the surface and at each depth asked for, as the serial study writes them.
+  SlabSubsurfaceStress solid(g, f.poisson, fft);
+  solid.set_traction(traction);
+  StressField stress(local);
+  PrincipalStresses surface(local);
+  solid.stress(0.0, stress);
+  principal_stresses(stress, surface);
+  std::vector<RealField> deep_first, deep_shear;
+  double deep_tau = 0.0, deep_tau_depth = 0.0;
+  for (const double depth : f.depths) {
+    PrincipalStresses deep(local);
+    solid.stress(depth, stress);
+    principal_stresses(stress, deep);
+    double m = 0.0;
+    for (double v : deep.max_shear) m = std::max(m, v);
+    m = mpi::max(m);
+    if (m > deep_tau) {
+      deep_tau = m;
+      deep_tau_depth = depth;
+    }
+    deep_first.push_back(std::move(deep.first));
+    deep_shear.push_back(std::move(deep.max_shear));
+  }
+  double max_sigma = -std::numeric_limits<double>::infinity();
+  for (double v : surface.first) max_sigma = std::max(max_sigma, v);
+  max_sigma = mpi::max(max_sigma);
+  RealField in_contact(local);
+  for (std::size_t k = 0; k < in_contact.size(); ++k) in_contact[k] = traction.z[k] > 0.0 ? 1.0 : 0.0;
+  const std::vector<ContactCluster> clusters = find_clusters_slab(traction.z, first, g, f.connectivity);
+  std::vector<double> cluster_area, cluster_x, cluster_y;  // rank 0's
+  for (const auto& cl : clusters) {
+    cluster_area.push_back(cl.area);
+    cluster_x.push_back(cl.centroid_x);
+    cluster_y.push_back(cl.centroid_y);
+  }
+  const VectorField &u = contact.displacement(), &slip = contact.slip();
+  std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
+                                   {"/fields/pressure", "p_N", "Pa", &traction.z},
+                                   {"/fields/traction_x", "p_x", "Pa", &traction.x},
+                                   {"/fields/traction_y", "p_y", "Pa", &traction.y},
+                                   {"/fields/stick_slip", "stick_slip", "1", &contact.stick_slip_map()},
+                                   {"/fields/gap", "gap", "m", &contact.normal_gap()},
+                                   {"/fields/slip_x", "slip_x", "m", &slip.x},
+                                   {"/fields/slip_y", "slip_y", "m", &slip.y},
+                                   {"/fields/displacement", "u_z", "m", &u.z},
+                                   {"/fields/displacement_x", "u_x", "m", &u.x},
+                                   {"/fields/displacement_y", "u_y", "m", &u.y},
+                                   {"/fields/contact", "contact", "1", &in_contact},
+                                   {"/stress/surface/sigma_I", "sigma_I", "Pa", &surface.first},
+                                   {"/stress/surface/sigma_III", "sigma_III", "Pa", &surface.third},
+                                   {"/stress/surface/tau_max", "tau_max", "Pa", &surface.max_shear}};
+  std::vector<std::string> deep_names;  // the datasets' names and ParaView's, kept alive for the list
+  for (std::size_t d = 0; d < f.depths.size(); ++d)
+    for (const char* what : {"sigma_I", "tau_max"}) {
+      deep_names.push_back(fmt::format("/stress/depth_{}/{}", d, what));
+      deep_names.push_back(fmt::format("{}_depth_{}", what, d));
+    }
+  for (std::size_t d = 0; d < f.depths.size(); ++d) {
+    fields.push_back({deep_names[4 * d].c_str(), deep_names[4 * d + 1].c_str(), "Pa", &deep_first[d]});
+    fields.push_back({deep_names[4 * d + 2].c_str(), deep_names[4 * d + 3].c_str(), "Pa", &deep_shear[d]});
+  }
+  write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
+    report_frictional_figures(f, r, {clusters.size(), max_sigma, deep_tau, deep_tau_depth}, report);
+  }, [&](H5Writer& h5) {
+    h5.set_attribute("/fields/stick_slip", "values", "0 open, 1 stick, 2 slip");
+    for (std::size_t d = 0; d < f.depths.size(); ++d)
+      h5.set_attribute(fmt::format("/stress/depth_{}", d), "depth", f.depths[d]);
+    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y},
+                   {"m^2", "m", "m"});
+  });
+  if (context == nullptr) return;
+  const auto csv = context->output_dir() / "clusters.csv";
+  write_csv(csv, {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y}, {"m^2", "m", "m"},
+            {"micro-contacts of the solved contact, largest first"});
+  context->add_file(csv);
 }
 }  // namespace
 
@@ -309,16 +410,7 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
                                          {"/fields/displacement", "displacement", "m", &contact.displacement()},
                                          {"/fields/contact", "contact", "1", &in_contact}};
   write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
-    report("mean_pressure", r.mean_pressure, "Pa", "mean pressure ⟨p⟩");
-    report("contact_fraction", r.contact_fraction, "1", "real contact area ratio A/A0");
-    report("contact_area", area, "m^2", "real contact area A");
-    report("interference", r.interference, "m",
-           free ? "approach δ of the rigid surface towards the far field" : "summit depth below the mean deformed surface");
-    report("elastic_energy", r.elastic_energy, "J", "elastic energy ½∫p u dA (2.42)");
-    report("clusters", static_cast<double>(clusters.size()), "1", "number of micro-contacts");
-    report("iterations", r.iterations, "1", "Polonsky–Keer iterations");
-    report("error", r.error, "1", "relative orthogonality error Σp|g|/(Σp·h_rms)");
-    report("hprime_rms", hprime, "1", "RMS slope of the surface (1.6)");
+    report_normal_figures(normal, r, {area, clusters.size(), hprime}, report);
   }, [&](H5Writer& h5) {
     h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y},
                    {"m^2", "m", "m"});

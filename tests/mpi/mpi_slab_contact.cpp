@@ -25,6 +25,9 @@
 //                              its pressures, approach δ and figures to 1e-12,
 //                              and a contact reaching the window's edge is
 //                              refused on every rank, as serially;
+//   mpi_slab_contact stress    the stresses below tractions (six components at
+//                              the surface and two depths) from each rank's
+//                              rows equal the serial SubsurfaceStress's (1e-13);
 //   mpi_slab_contact stop      a stop asked on the last rank alone ends the
 //                              normal and the frictional solve on every rank at
 //                              the same iteration (Interrupted): none waits.
@@ -42,6 +45,7 @@
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
+#include "wearscale/bem/slab_subsurface_stress.hpp"
 #include "wearscale/bem/slab_surface.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/errors.hpp"
@@ -246,6 +250,38 @@ void test_free_solve(std::size_t n) {
                 s.interference / (a * a / radius));
 }
 
+void test_stress(const Grid2D& g) {
+  VectorField t(g);
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (double& v : t.z) v = u01(rng);
+  for (double& v : t.x) v = 0.3 * (u01(rng) - 0.5);
+  for (double& v : t.y) v = 0.2 * (u01(rng) - 0.5);
+  SubsurfaceStress serial(g, 0.3);
+  serial.set_traction(t);
+  SlabFFT fft(g.nx, g.ny, PlanRigor::Estimate);
+  SlabSubsurfaceStress slab(g, 0.3, fft);
+  const Grid2D& lg = slab.local_grid();
+  const std::size_t first = fft.first_row();
+  VectorField rows(lg);
+  rows.x = rows_of(t.x, lg, first);
+  rows.y = rows_of(t.y, lg, first);
+  rows.z = rows_of(t.z, lg, first);
+  slab.set_traction(rows);
+  StressField whole(g), part(lg);
+  for (const double depth : {0.0, 0.5 * g.dx(), 4.0 * g.dx()}) {
+    serial.stress(depth, whole);
+    slab.stress(depth, part);
+    const std::string at = " at depth " + std::to_string(depth) + " on " + g.to_string();
+    check(row_difference(part.xx, whole.xx, first) < 1e-13, "σ_xx differs" + at);
+    check(row_difference(part.yy, whole.yy, first) < 1e-13, "σ_yy differs" + at);
+    check(row_difference(part.zz, whole.zz, first) < 1e-13, "σ_zz differs" + at);
+    check(row_difference(part.xy, whole.xy, first) < 1e-13, "σ_xy differs" + at);
+    check(row_difference(part.xz, whole.xz, first) < 1e-13, "σ_xz differs" + at);
+    check(row_difference(part.yz, whole.yz, first) < 1e-13, "σ_yz differs" + at);
+  }
+}
+
 VectorField vector_rows_of(const VectorField& whole, const Grid2D& slab, std::size_t first) {
   VectorField r(slab);
   r.x = rows_of(whole.x, slab, first);
@@ -445,10 +481,14 @@ int main(int argc, char** argv) {
     test_free_operator(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
     test_free_operator(Grid2D(20, 33, 1.0, 0.5));  // odd columns, few rows
     test_free_solve(64);
+  } else if (mode == "stress") {
+    test_stress(Grid2D::square(64, 1.0));
+    test_stress(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
+    test_stress(Grid2D(64, 33, 1.0, 0.5));  // odd columns
   } else if (mode == "stop") {
     test_stop(64);
   } else {
-    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | free | stop\n");
+    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | free | stress | stop\n");
     return 2;
   }
   const long long failed = mpi::sum(static_cast<long long>(failures));

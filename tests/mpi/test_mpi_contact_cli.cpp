@@ -297,6 +297,37 @@ TEST(MpiContactCli, TrescaFrictionOnTwoRanksGivesTheSerialSummaryAndFiles) {
   expect_same_files(work / "tresca_serial", work / "tresca_slab", frictional_datasets);
 }
 
+TEST(MpiContactCli, FrictionAboveTheGatherLimitWritesTheSerialFieldsAndStressesInPlace) {
+  // [run] gather_limit below the grid: every rank computes its rows of the
+  // stresses (surface and two depths) and writes its rows of every field; the
+  // serial figures, fields, stresses and micro-contacts at P = 2 and 3.
+  const std::string args = "contact " + rough_case +
+                           " --set contact.grid=64 --set contact.rough.k_s=16 --set contact.friction=coulomb "
+                           "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
+                           "--set contact.tangential_pressure=0.006 --set 'contact.stress_depths=[0.01, 0.03]' "
+                           "--set run.gather_limit=1000 --json";
+  const auto serial = run(0, args + " -q --out friction_inplace_serial");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  const auto s = nlohmann::json::parse(serial.out);
+  EXPECT_GT(s["results"]["stick_fraction"]["value"].get<double>(), 0.0);
+  EXPECT_GT(s["results"]["slip_fraction"]["value"].get<double>(), 0.0);
+  EXPECT_GT(s["results"]["clusters"]["value"].get<double>(), 10.0);
+  std::vector<std::string> datasets = frictional_datasets;
+  datasets.insert(datasets.end(), {"/stress/surface/sigma_III", "/stress/depth_0/sigma_I", "/stress/depth_1/tau_max"});
+  for (int ranks : {2, 3}) {
+    const std::string dir = "friction_inplace" + std::to_string(ranks);
+    const auto slab = run(ranks, args + " --out " + dir);
+    ASSERT_EQ(slab.status, 0) << slab.err;
+    EXPECT_THAT(slab.err, HasSubstr("every rank computes its rows of the stresses"));
+    expect_same_results(s, nlohmann::json::parse(slab.out), ranks);
+    expect_same_files(work / "friction_inplace_serial", work / dir, datasets);
+    EXPECT_EQ(slurp(work / "friction_inplace_serial" / "clusters.csv"), slurp(work / dir / "clusters.csv"));
+    const wearscale::H5Reader b(work / dir / "contact.h5");
+    EXPECT_EQ(b.string_attribute("/fields/stick_slip", "values"), "0 open, 1 stick, 2 slip");
+    EXPECT_DOUBLE_EQ(b.number_attribute("/stress/depth_1", "depth"), 0.03);
+  }
+}
+
 TEST(MpiContactCli, CoulombFrictionOnThreeRanksGivesTheSerialSummaryAndFiles) {
   const std::string args = "contact " + rough_case +
                            " --set contact.grid=64 --set contact.rough.k_s=16 --set contact.friction=coulomb "
@@ -317,12 +348,9 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
       {"--set contact.boundary=free --set contact.friction=coulomb --set contact.poisson=0.3 "
        "--set contact.friction_coefficient=0.5",
        "contact.boundary"},  // friction on a free window (refused serially alike)
-      {"--set contact.friction=coulomb --set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
-       "--set contact.grid=4100",
-       "contact.grid"},  // friction above the gather limit
       {"--set contact.friction=tresca --set contact.poisson=0.3 --set contact.shear_strength=0.01 "
-       "--set run.gather_limit=10000",
-       "contact.grid"},  // friction above a gather limit the case sets
+       "--set contact.tensile_strength=0.5 --set run.gather_limit=10000",
+       "contact.tensile_strength"},  // crack initiation per micro-contact above the gather limit
       {"--set run.gather_limit=0", "run.gather_limit"},
       {"--set contact.grid=7", "contact.grid"},
       {"--resume elsewhere", "--resume"}};

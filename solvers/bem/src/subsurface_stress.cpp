@@ -12,10 +12,6 @@ namespace wearscale::bem {
 namespace {
 using cplx = std::complex<double>;
 
-struct ModeStress {
-  cplx xx, yy, zz, xy, xz, yz;
-};
-
 // σ̂(q, z) of one Fourier mode of the traction (see the header).
 ModeStress mode_stress(double qx, double qy, cplx px, cplx py, cplx pz, double depth, double nu) {
   const double q = std::hypot(qx, qy);
@@ -39,6 +35,45 @@ ModeStress mode_stress(double qx, double qy, cplx px, cplx py, cplx pz, double d
   return m;
 }
 }  // namespace
+
+ModeStress SubsurfaceStress::mode(const Grid2D& g, std::size_t i, std::size_t j, cplx px, cplx py, cplx pz,
+                                  double depth, double nu) {
+  ModeStress m{};
+  if (i == 0 && j == 0) {
+    // Uniform traction, no mean lateral strain.
+    m.zz = -pz;
+    m.xz = -px;
+    m.yz = -py;
+    m.xx = m.yy = -nu / (1.0 - nu) * pz;
+    return m;
+  }
+  // At Nyquist frequencies (whose sign is ambiguous) keep the part even in q.
+  const double qx = g.wavenumber_x(i), qy = g.wavenumber_y(j);
+  const bool flip_x = g.nx % 2 == 0 && i == g.nx / 2, flip_y = g.ny % 2 == 0 && j == g.ny / 2;
+  int count = 0;
+  for (double sx : {1.0, -1.0}) {
+    if (sx < 0.0 && !flip_x) continue;
+    for (double sy : {1.0, -1.0}) {
+      if (sy < 0.0 && !flip_y) continue;
+      const ModeStress a = mode_stress(sx * qx, sy * qy, px, py, pz, depth, nu);
+      m.xx += a.xx;
+      m.yy += a.yy;
+      m.zz += a.zz;
+      m.xy += a.xy;
+      m.xz += a.xz;
+      m.yz += a.yz;
+      ++count;
+    }
+  }
+  const double w = 1.0 / count;
+  m.xx *= w;
+  m.yy *= w;
+  m.zz *= w;
+  m.xy *= w;
+  m.xz *= w;
+  m.yz *= w;
+  return m;
+}
 
 SubsurfaceStress::SubsurfaceStress(const Grid2D& grid, double poisson)
     : owned_(std::make_unique<const HalfSpace>(grid, 1.0, poisson, Boundary::Periodic, Response::Normal)),
@@ -72,46 +107,9 @@ void SubsurfaceStress::stress(double depth, StressField& out) {
     throw InputError(fmt::format("subsurface stress: depth {} m is not allowed; allowed: ≥ 0", depth));
   const Grid2D& g = grid();
   if (!(out.grid() == g)) throw std::invalid_argument("SubsurfaceStress::stress: grid differs");
-  const bool nyq_x = g.nx % 2 == 0, nyq_y = g.ny % 2 == 0;
   const double nu = poisson();
   for_each_mode(g, [&](std::size_t i, std::size_t j, std::size_t) {
-    const double qx = g.wavenumber_x(i);
-    const bool flip_x = nyq_x && i == g.nx / 2;
-    const double qy = g.wavenumber_y(j);
-    const cplx px = px_(i, j), py = py_(i, j), pz = pz_(i, j);
-    ModeStress m{};
-    if (i == 0 && j == 0) {
-      // Uniform traction, no mean lateral strain.
-      m.zz = -pz;
-      m.xz = -px;
-      m.yz = -py;
-      m.xx = m.yy = -nu / (1.0 - nu) * pz;
-    } else {
-      // At Nyquist frequencies (whose sign is ambiguous) keep the part even in q.
-      const bool flip_y = nyq_y && j == g.ny / 2;
-      int count = 0;
-      for (double sx : {1.0, -1.0}) {
-        if (sx < 0.0 && !flip_x) continue;
-        for (double sy : {1.0, -1.0}) {
-          if (sy < 0.0 && !flip_y) continue;
-          const ModeStress a = mode_stress(sx * qx, sy * qy, px, py, pz, depth, nu);
-          m.xx += a.xx;
-          m.yy += a.yy;
-          m.zz += a.zz;
-          m.xy += a.xy;
-          m.xz += a.xz;
-          m.yz += a.yz;
-          ++count;
-        }
-      }
-      const double w = 1.0 / count;
-      m.xx *= w;
-      m.yy *= w;
-      m.zz *= w;
-      m.xy *= w;
-      m.xz *= w;
-      m.yz *= w;
-    }
+    const ModeStress m = mode(g, i, j, px_(i, j), py_(i, j), pz_(i, j), depth, nu);
     sxx_(i, j) = m.xx;
     syy_(i, j) = m.yy;
     szz_(i, j) = m.zz;

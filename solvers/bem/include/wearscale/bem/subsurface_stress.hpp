@@ -29,8 +29,19 @@ struct StressField {
   const Grid2D& grid() const { return zz.grid(); }
 };
 
+/// The six components of the stress spectrum at one mode.
+struct ModeStress {
+  std::complex<double> xx, yy, zz, xy, xz, yz;
+};
+
 class SubsurfaceStress {
  public:
+  /// σ̂ at depth z of r2c mode (i, j) of `g` under the traction spectra px, py,
+  /// pz there (the zero mode and the Nyquist averaging included). Every body
+  /// that holds these modes (whole or in slabs) takes them from here.
+  static ModeStress mode(const Grid2D& g, std::size_t i, std::size_t j, std::complex<double> px,
+                         std::complex<double> py, std::complex<double> pz, double depth, double nu);
+
   /// InputError unless −1 < ν ≤ 0.5 (stresses from tractions do not depend on E).
   SubsurfaceStress(const Grid2D& grid, double poisson);
   /// The stresses in `body` (periodic; it must outlive this object). InputError for a
