@@ -164,6 +164,28 @@ struct SlabField {
 };
 using Report = FigureReport;
 
+// The micro-contacts found across the slabs (rank 0's), as the serial study
+// writes them: the /clusters table of contact.h5 and clusters.csv.
+struct ClusterColumns {
+  std::vector<double> area, x, y;
+  explicit ClusterColumns(const std::vector<ContactCluster>& clusters) {
+    for (const auto& cl : clusters) {
+      area.push_back(cl.area);
+      x.push_back(cl.centroid_x);
+      y.push_back(cl.centroid_y);
+    }
+  }
+  void write_table(H5Writer& h5) const {
+    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, x, y}, {"m^2", "m", "m"});
+  }
+  void write_csv(coupling::RunContext& context) const {
+    const auto csv = context.output_dir() / "clusters.csv";
+    wearscale::write_csv(csv, {"area", "centroid_x", "centroid_y"}, {area, x, y}, {"m^2", "m", "m"},
+                           {"micro-contacts of the solved contact, largest first"});
+    context.add_file(csv);
+  }
+};
+
 // contact.h5 of a grid no rank gathers (collective): rank 0 lays it out on
 // disk (the case, the headline figures through `results`, every field
 // reserved, their views for ParaView), every rank writes its rows of each
@@ -285,12 +307,7 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
   RealField in_contact(local);
   for (std::size_t k = 0; k < in_contact.size(); ++k) in_contact[k] = traction.z[k] > 0.0 ? 1.0 : 0.0;
   const std::vector<ContactCluster> clusters = find_clusters_slab(traction.z, first, g, f.connectivity);
-  std::vector<double> cluster_area, cluster_x, cluster_y;  // rank 0's
-  for (const auto& cl : clusters) {
-    cluster_area.push_back(cl.area);
-    cluster_x.push_back(cl.centroid_x);
-    cluster_y.push_back(cl.centroid_y);
-  }
+  const ClusterColumns columns(clusters);  // rank 0's
   const VectorField &u = contact.displacement(), &slip = contact.slip();
   std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
                                    {"/fields/pressure", "p_N", "Pa", &traction.z},
@@ -323,14 +340,9 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
     h5.set_attribute("/fields/stick_slip", "values", "0 open, 1 stick, 2 slip");
     for (std::size_t d = 0; d < f.depths.size(); ++d)
       h5.set_attribute(fmt::format("/stress/depth_{}", d), "depth", f.depths[d]);
-    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y},
-                   {"m^2", "m", "m"});
+    columns.write_table(h5);
   });
-  if (context == nullptr) return;
-  const auto csv = context->output_dir() / "clusters.csv";
-  write_csv(csv, {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y}, {"m^2", "m", "m"},
-            {"micro-contacts of the solved contact, largest first"});
-  context->add_file(csv);
+  if (context != nullptr) columns.write_csv(*context);
 }
 }  // namespace
 
@@ -398,12 +410,7 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
               "of the fields into contact.h5, the micro-contacts are joined across the slabs",
               g.size(), s.gather_limit);
   const std::vector<ContactCluster> clusters = find_clusters_slab(contact.pressure(), first, g, normal.connectivity);
-  std::vector<double> cluster_area, cluster_x, cluster_y;  // rank 0's
-  for (const auto& cl : clusters) {
-    cluster_area.push_back(cl.area);
-    cluster_x.push_back(cl.centroid_x);
-    cluster_y.push_back(cl.centroid_y);
-  }
+  const ClusterColumns columns(clusters);  // rank 0's
   const std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
                                          {"/fields/pressure", "pressure", "Pa", &contact.pressure()},
                                          {"/fields/gap", "gap", "m", &contact.gap()},
@@ -412,14 +419,9 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
     report_normal_figures(normal, r, {area, clusters.size(), hprime}, report);
   }, [&](H5Writer& h5) {
-    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y},
-                   {"m^2", "m", "m"});
+    columns.write_table(h5);
   });
-  if (context == nullptr) return;
-  const auto csv = context->output_dir() / "clusters.csv";
-  write_csv(csv, {"area", "centroid_x", "centroid_y"}, {cluster_area, cluster_x, cluster_y}, {"m^2", "m", "m"},
-            {"micro-contacts of the solved contact, largest first"});
-  context->add_file(csv);
+  if (context != nullptr) columns.write_csv(*context);
 }
 
 }  // namespace wearscale::studies
