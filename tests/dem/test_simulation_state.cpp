@@ -129,6 +129,22 @@ TEST(SimulationState, RefusesAStateThatIsNotADemState) {
   EXPECT_THAT(input_error_of([&] { sim.restore_state(truncated); }), testing::HasSubstr("dem.velocity"));
 }
 
+TEST(SimulationState, RefusesTheStateOfTheSameParticlesNumberedOtherwise) {
+  // A checkpoint restored into a set-up of as many particles must hold them in
+  // the same order: the study's walls and subsets are the set-up's indices.
+  Simulation saved = stirred_block();
+  saved.particles().radius[0] *= 0.99;  // one particle apart from the others
+  CheckpointState state;
+  saved.save_state(state);
+  Simulation renumbered = stirred_block();
+  renumbered.particles().radius[1] *= 0.99;  // that particle numbered 1, not 0
+  EXPECT_THAT(input_error_of([&] { renumbered.restore_state(state); }),
+              testing::HasSubstr("the checkpoint's particles are not this run's"));
+  Simulation same = stirred_block();
+  same.particles().radius[0] *= 0.99;
+  EXPECT_NO_THROW(same.restore_state(state));
+}
+
 // The §7.1.1 junction study, stopped after a few samples and resumed from its
 // checkpoint: the same peak and steady p_T, contact ratios and history.
 TEST(SimulationState, AJunctionRunResumedFromItsCheckpointGivesTheSameResult) {

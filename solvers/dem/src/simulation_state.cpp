@@ -181,6 +181,15 @@ void Simulation::restore_state(const CheckpointState& in) {
                                  kFormat, kFormat1));
   const std::size_t n = in.array("dem.radius").size();
   Particles& p = particles_;
+  // A state of as many particles as this set-up must be of the same
+  // particles in the same order (the study's own indices, walls and subsets,
+  // are the set-up's): a checkpoint written by a version that numbered the
+  // particles otherwise, or made them otherwise, is refused, not mixed in.
+  if (n == p.size() && in.array("dem.radius") != p.radius)
+    throw InputError(fmt::format("{}: the checkpoint's particles are not this run's (another numbering or another "
+                                 "sample: written by another version of wearscale, or for another case); start the "
+                                 "run again without --resume",
+                                 in.origin));
   p.for_each_array([n](auto& v) { v.resize(n); });
   unflatten(in, "dem.position", p.position);
   unflatten(in, "dem.velocity", p.velocity);

@@ -20,7 +20,10 @@ struct AmorphousSpec {
   int body = 0;
   /// Number the inserted particles along the cells before relaxing them
   /// (cell_order.hpp): the relaxation runs 2-3 times faster at 10⁵ particles;
-  /// a different (equally random) sample from the same seed.
+  /// a different (equally random) sample from the same seed. Otherwise the
+  /// sample is relaxed in the order of insertion and numbered along the cells
+  /// after it (the same sample, its pairs close in index for the runs that
+  /// follow).
   bool numbered_along_cells = false;
 };
 
