@@ -12,14 +12,16 @@
 // across the slabs' edges (find_clusters_slab): the same files.
 //
 // Distributed: periodic contact of a measured surface (contact.surface: every
-// rank reads the file and keeps its rows), a generated rough surface and/or a sphere,
-// frictionless (NormalContact) or with Coulomb or Tresca friction
-// (FrictionalContact on a SlabHalfSpace holding the whole tensor; rank 0
-// computes the surface and subsurface stresses from the gathered tractions).
+// rank reads the file and keeps its rows), a generated rough surface and/or a
+// sphere, frictionless (NormalContact on a SlabHalfSpace, or on a
+// SlabFreeHalfSpace for contact.boundary = "free") or with Coulomb or Tresca
+// friction (FrictionalContact on a SlabHalfSpace holding the whole tensor;
+// the surface and subsurface stresses from the gathered tractions on rank 0,
+// or above the gather limit from each rank's rows, SlabSubsurfaceStress).
 // Refused (InputError naming the key, the same on every rank, before any
-// work): contact.boundary = "free", a file of fewer rows than ranks, and a
-// frictional grid above the gather limit (contact.grid: its stresses and
-// files need the whole fields on rank 0).
+// work): a file of fewer rows than ranks, and crack initiation
+// (contact.tensile_strength) on a frictional grid above the gather limit
+// (each micro-contact's edges are read in the whole map of stresses).
 #include <cstddef>
 #include <optional>
 
