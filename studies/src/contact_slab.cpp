@@ -395,7 +395,7 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
     return;
   }
   // Above the gather limit: the headline figures from the slabs (collective),
-  // the fields written in place, no micro-contacts.
+  // the fields written in place, the micro-contacts joined across the slabs.
   const double hprime = roughness_slab(h, g, RoughnessMeasure::HPrimeRms, transforms());
   own_fft.reset();
   RealField in_contact(h.grid());
