@@ -77,27 +77,24 @@ RowExchange::~RowExchange() {
 #endif
 }
 
-void RowExchange::forward(const double* from, double* to) const {
-  if (!plan_->distributed) {
-    if (from_.rows > 0) std::memcpy(to, from, from_.rows * row_length_ * sizeof(double));
-    return;
-  }
-#ifdef WEARSCALE_MPI
-  const Plan& p = *plan_;
-  MPI_Alltoallv(from, p.send_counts.data(), p.send_offsets.data(), p.row, to, p.recv_counts.data(),
-                p.recv_offsets.data(), p.row, MPI_COMM_WORLD);
-#endif
-}
+void RowExchange::forward(const double* from, double* to) const { move(from, to, from_.rows, false); }
 
-void RowExchange::backward(const double* to, double* from) const {
+void RowExchange::backward(const double* to, double* from) const { move(to, from, to_.rows, true); }
+
+void RowExchange::move(const double* source, double* destination, std::size_t rows, bool reverse) const {
   if (!plan_->distributed) {
-    if (to_.rows > 0) std::memcpy(from, to, to_.rows * row_length_ * sizeof(double));
+    if (rows > 0) std::memcpy(destination, source, rows * row_length_ * sizeof(double));
     return;
   }
 #ifdef WEARSCALE_MPI
   const Plan& p = *plan_;
-  MPI_Alltoallv(to, p.recv_counts.data(), p.recv_offsets.data(), p.row, from, p.send_counts.data(),
-                p.send_offsets.data(), p.row, MPI_COMM_WORLD);
+  // Backward, the counts and offsets of the two sides trade places.
+  const std::vector<int>& send_counts = reverse ? p.recv_counts : p.send_counts;
+  const std::vector<int>& send_offsets = reverse ? p.recv_offsets : p.send_offsets;
+  const std::vector<int>& recv_counts = reverse ? p.send_counts : p.recv_counts;
+  const std::vector<int>& recv_offsets = reverse ? p.send_offsets : p.recv_offsets;
+  MPI_Alltoallv(source, send_counts.data(), send_offsets.data(), p.row, destination, recv_counts.data(),
+                recv_offsets.data(), p.row, MPI_COMM_WORLD);
 #endif
 }
 

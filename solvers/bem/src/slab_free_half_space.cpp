@@ -1,28 +1,16 @@
 #include "wearscale/bem/slab_free_half_space.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
+#include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/spectral_modes.hpp"
-#include "wearscale/core/errors.hpp"
 #include "wearscale/core/mpi.hpp"
 
 namespace wearscale::bem {
 
 namespace {
-const Grid2D& checked(const Grid2D& g, double e_star) {
-  if (!(e_star > 0.0) || !std::isfinite(e_star))
-    throw InputError(fmt::format("distributed free half-space: E* = {} is not allowed; allowed: E* > 0", e_star));
-  if (g.nx < 2 || g.ny < 2 || !(g.lx > 0.0) || !(g.ly > 0.0))
-    throw InputError(fmt::format(
-        "distributed free half-space: grid {} is not allowed; allowed: ≥ 2×2 points, sizes > 0", g.to_string()));
-  return g;
-}
-
 // The offset, in cells, that padded index i of 2n stands for: i below n, i − 2n
 // above it (its magnitude returned); n itself stands for none (−1): the
 // kernel's placement on the padded grid (HalfSpace's free kernel).
@@ -34,7 +22,7 @@ long padded_offset(std::size_t i, std::size_t n) {
 }  // namespace
 
 SlabFreeHalfSpace::SlabFreeHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor)
-    : grid_(checked(grid, e_star)), padded_(2 * grid.nx, 2 * grid.ny, 2 * grid.lx, 2 * grid.ly),
+    : grid_(checked_slab_grid(grid, e_star, "distributed free half-space")), padded_(2 * grid.nx, 2 * grid.ny, 2 * grid.lx, 2 * grid.ly),
       rows_(SlabFFT::layout(grid.nx, grid.ny)), fft_(padded_.nx, padded_.ny, rigor),
       held_{fft_.first_row(), fft_.first_row() < grid.nx ? std::min(fft_.rows(), grid.nx - fft_.first_row()) : 0},
       exchange_(rows_, held_, grid.ny) {

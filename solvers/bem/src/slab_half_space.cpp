@@ -13,15 +13,16 @@
 
 namespace wearscale::bem {
 
-namespace {
-const Grid2D& checked(const Grid2D& g, double e_star) {
+const Grid2D& checked_slab_grid(const Grid2D& g, double e_star, const char* body) {
   if (!(e_star > 0.0) || !std::isfinite(e_star))
-    throw InputError(fmt::format("distributed half-space: E* = {} is not allowed; allowed: E* > 0", e_star));
+    throw InputError(fmt::format("{}: E* = {} is not allowed; allowed: E* > 0", body, e_star));
   if (g.nx < 2 || g.ny < 2 || !(g.lx > 0.0) || !(g.ly > 0.0))
-    throw InputError(fmt::format("distributed half-space: grid {} is not allowed; allowed: ≥ 2×2 points, sizes > 0",
-                                 g.to_string()));
+    throw InputError(fmt::format("{}: grid {} is not allowed; allowed: ≥ 2×2 points, sizes > 0", body, g.to_string()));
   return g;
 }
+
+namespace {
+const Grid2D& checked(const Grid2D& g, double e_star) { return checked_slab_grid(g, e_star, "distributed half-space"); }
 }  // namespace
 
 SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor)

@@ -34,6 +34,8 @@ class RowExchange {
   void backward(const double* to, double* from) const;
 
  private:
+  // `rows` of this rank's source moved to the destination, forward or back.
+  void move(const double* source, double* destination, std::size_t rows, bool reverse) const;
   struct Plan;
   RowRange from_, to_;
   std::size_t row_length_;

@@ -16,6 +16,10 @@
 
 namespace wearscale::bem {
 
+/// The check every body in slabs makes of its grid and modulus: InputError
+/// naming `body` unless E* > 0 and the grid has ≥ 2 × 2 points and sizes > 0.
+const Grid2D& checked_slab_grid(const Grid2D& grid, double e_star, const char* body);
+
 class SlabHalfSpace final : public TractionOperator {
  public:
   /// A rigid surface on an elastic body of contact modulus E* (InputError unless
