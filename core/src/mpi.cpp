@@ -144,6 +144,31 @@ double max(double local) {
   return local;
 }
 
+namespace {
+#ifdef WEARSCALE_MPI
+void reduce(std::span<double> values, MPI_Op op) {
+  if (active() && size() > 1 && !values.empty())
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op, MPI_COMM_WORLD);
+}
+#endif
+}  // namespace
+
+void max(std::span<double> values) {
+#ifdef WEARSCALE_MPI
+  reduce(values, MPI_MAX);
+#else
+  (void)values;
+#endif
+}
+
+void min(std::span<double> values) {
+#ifdef WEARSCALE_MPI
+  reduce(values, MPI_MIN);
+#else
+  (void)values;
+#endif
+}
+
 void gather(std::span<const double> local, std::span<double> all) {
 #ifdef WEARSCALE_MPI
   if (active() && size() > 1) {
@@ -164,6 +189,28 @@ void gather(std::span<const double> local, std::span<double> all) {
 #endif
   if (all.size() != local.size()) throw std::invalid_argument("mpi::gather: the values do not fill the destination");
   std::copy(local.begin(), local.end(), all.begin());
+}
+
+void scatter(std::span<const double> all, std::span<double> local) {
+#ifdef WEARSCALE_MPI
+  if (active() && size() > 1) {
+    const int n = static_cast<int>(local.size());
+    std::vector<int> counts(static_cast<std::size_t>(g_size)), offsets(static_cast<std::size_t>(g_size));
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    long long total = 0;
+    for (int r = 0; r < g_size; ++r) {
+      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
+      total += counts[static_cast<std::size_t>(r)];
+    }
+    if (g_rank == 0 && total != static_cast<long long>(all.size()))
+      throw std::invalid_argument("mpi::scatter: the ranks' parts do not add up to the values scattered");
+    MPI_Scatterv(all.data(), counts.data(), offsets.data(), MPI_DOUBLE, local.data(), n, MPI_DOUBLE, 0,
+                 MPI_COMM_WORLD);
+    return;
+  }
+#endif
+  if (all.size() != local.size()) throw std::invalid_argument("mpi::scatter: the values do not fill the destination");
+  std::copy(all.begin(), all.end(), local.begin());
 }
 
 void broadcast(std::span<double> values) {

@@ -130,6 +130,44 @@ void report_frictional_figures(const FrictionalCase& fc, const FrictionalResult&
            fmt::format("largest τ_m = (σ_I − σ_III)/2 over the requested depths (at {:g} m)", f.max_tau_depth));
 }
 
+ClusterTable::ClusterTable(const std::vector<ContactCluster>& clusters, const std::vector<EdgeCrackCheck>* checks,
+                           double sigma_m)
+    : names_{"area", "centroid_x", "centroid_y"},
+      units_{"m^2", "m", "m"},
+      columns_(3),
+      comments_{"micro-contacts of the solved contact, largest first"} {
+  for (const auto& cl : clusters) {
+    columns_[0].push_back(cl.area);
+    columns_[1].push_back(cl.centroid_x);
+    columns_[2].push_back(cl.centroid_y);
+  }
+  if (checks == nullptr) return;
+  names_.insert(names_.end(), {"trailing_sigma_I", "leading_sigma_III", "crack_initiation"});
+  units_.insert(units_.end(), {"Pa", "Pa", "1"});
+  columns_.resize(6);
+  for (const EdgeCrackCheck& c : *checks) {
+    columns_[3].push_back(c.trailing_tension);
+    columns_[4].push_back(c.leading_compression);
+    columns_[5].push_back(c.initiates() ? 1.0 : 0.0);
+    sites_ += columns_[5].back();
+  }
+  comments_.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", sigma_m));
+}
+
+void ClusterTable::write(H5Writer& h5) const {
+  h5.write_table("/clusters", names_, {columns_.begin(), columns_.end()}, units_);
+}
+
+std::filesystem::path ClusterTable::write_csv(const std::filesystem::path& folder) const {
+  const auto csv = folder / "clusters.csv";
+  wearscale::write_csv(csv, names_, {columns_.begin(), columns_.end()}, units_, comments_);
+  return csv;
+}
+
+void report_crack_sites(const ClusterTable& table, const FigureReport& report) {
+  report("crack_initiation_sites", table.crack_sites(), "1", "micro-contacts meeting (4.25) at both edges");
+}
+
 void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
                         const RealField& gap, const RealField& u, const ContactResult& r,
                         coupling::RunContext& context) {
@@ -154,21 +192,15 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
   };
   report_normal_figures(n, r, {contact_area(p), map.clusters.size(), h_prime_rms(h)}, report);
 
-  std::vector<double> area, cx, cy;
-  for (const auto& cl : map.clusters) {
-    area.push_back(cl.area);
-    cx.push_back(cl.centroid_x);
-    cy.push_back(cl.centroid_y);
-  }
-  h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"});
+  const ClusterTable table(map.clusters);
+  table.write(h5);
   XdmfSidecar sidecar(g);
   sidecar.add(h5, {{"/surface/height", "height"}, {"/fields/pressure", "pressure"}, {"/fields/gap", "gap"},
                    {"/fields/displacement", "displacement"}, {"/fields/contact", "contact"}});
   h5.commit();
   sidecar.write(out / "contact.xdmf", h5_path);
-  write_csv(out / "clusters.csv", {"area", "centroid_x", "centroid_y"}, {area, cx, cy}, {"m^2", "m", "m"},
-            {"micro-contacts of the solved contact, largest first"});
-  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
+  const auto csv = table.write_csv(out);
+  for (const auto& f : {h5_path, out / "contact.xdmf", csv}) context.add_file(f);
 }
 
 FrictionalCase read_frictional_case(const Config& c, const Grid2D& g, const std::string& law_name) {
@@ -290,43 +322,18 @@ void write_frictional_study(const Config& config, const FrictionalCase& fc, cons
                             report);
 
   // Micro-contacts, with (4.25) at their edges if σ_m is given.
-  std::vector<double> area, cx, cy, trailing, leading, initiates;
   std::vector<EdgeCrackCheck> checks;
-  if (fc.crack && !map.clusters.empty()) {
-    const double dir = fc.load.x != 0.0 ? fc.load.x : 1.0;  // along +x when there is no tangential load
-    checks = crack_initiation(map, surface, dir, 0.0, fc.sigma_m);
-  }
-  double count = 0.0;
-  for (std::size_t i = 0; i < map.clusters.size(); ++i) {
-    area.push_back(map.clusters[i].area);
-    cx.push_back(map.clusters[i].centroid_x);
-    cy.push_back(map.clusters[i].centroid_y);
-    if (fc.crack) {
-      trailing.push_back(checks[i].trailing_tension);
-      leading.push_back(checks[i].leading_compression);
-      initiates.push_back(checks[i].initiates() ? 1.0 : 0.0);
-      count += initiates.back();
-    }
-  }
-  std::vector<std::string> names = {"area", "centroid_x", "centroid_y"};
-  std::vector<std::string> table_units = {"m^2", "m", "m"};
-  std::vector<std::span<const double>> columns = {area, cx, cy};
-  if (fc.crack) {
-    report("crack_initiation_sites", count, "1", "micro-contacts meeting (4.25) at both edges");
-    names.insert(names.end(), {"trailing_sigma_I", "leading_sigma_III", "crack_initiation"});
-    table_units.insert(table_units.end(), {"Pa", "Pa", "1"});
-    columns.insert(columns.end(), {trailing, leading, initiates});
-  }
-  h5.write_table("/clusters", names, columns, table_units);
+  if (fc.crack && !map.clusters.empty())
+    checks = crack_initiation(map, surface, fc.crack_direction_x(), 0.0, fc.sigma_m);
+  const ClusterTable table(map.clusters, fc.crack ? &checks : nullptr, fc.sigma_m);
+  if (fc.crack) report_crack_sites(table, report);
+  table.write(h5);
   XdmfSidecar sidecar(g);
   sidecar.add(h5, xdmf);
   h5.commit();
   sidecar.write(out / "contact.xdmf", h5_path);
-  std::vector<std::string> comments = {"micro-contacts of the solved contact, largest first"};
-  if (fc.crack)
-    comments.push_back(fmt::format("crack initiation (4.25) at σ_m = {:g} Pa, from the surface stresses", fc.sigma_m));
-  write_csv(out / "clusters.csv", names, columns, table_units, comments);
-  for (const auto& f : {h5_path, out / "contact.xdmf", out / "clusters.csv"}) context.add_file(f);
+  const auto csv = table.write_csv(out);
+  for (const auto& f : {h5_path, out / "contact.xdmf", csv}) context.add_file(f);
 }
 
 

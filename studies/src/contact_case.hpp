@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "wearscale/bem/contact_clusters.hpp"
+#include "wearscale/bem/crack_initiation.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
+#include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::studies {
 
@@ -61,6 +63,30 @@ struct NormalFigures {
 void report_normal_figures(const NormalCase& n, const bem::ContactResult& r, const NormalFigures& f,
                            const FigureReport& report);
 
+/// The micro-contacts' table, as the /clusters group of contact.h5 and as
+/// clusters.csv: area and centroid of each, largest first, and with `checks`
+/// (crack initiation at σ_m, one a micro-contact) the edges' extremes and
+/// whether (4.25) holds. The serial study and the slabs' write the same table.
+class ClusterTable {
+ public:
+  explicit ClusterTable(const std::vector<bem::ContactCluster>& clusters,
+                        const std::vector<bem::EdgeCrackCheck>* checks = nullptr, double sigma_m = 0.0);
+  /// The micro-contacts meeting (4.25) at both edges.
+  double crack_sites() const { return sites_; }
+  void write(H5Writer& h5) const;
+  /// clusters.csv (and its .json) in `folder`; its path.
+  std::filesystem::path write_csv(const std::filesystem::path& folder) const;
+
+ private:
+  std::vector<std::string> names_, units_;
+  std::vector<std::vector<double>> columns_;
+  std::vector<std::string> comments_;
+  double sites_ = 0.0;
+};
+
+/// The crack sites' headline figure, after the frictional ones.
+void report_crack_sites(const ClusterTable& table, const FigureReport& report);
+
 /// contact.h5 (+ .xdmf) and clusters.csv from the whole fields, and the
 /// headline figures reported to `context`.
 void write_normal_study(const Config& config, const NormalCase& n, const RealField& h, const RealField& p,
@@ -79,6 +105,8 @@ struct FrictionalCase {
   bool crack = false;
   double sigma_m = 0.0;
   std::vector<double> depths;
+  /// The sliding direction (4.25) is checked along: the tangential load's (+x when there is none).
+  double crack_direction_x() const { return load.x != 0.0 ? load.x : 1.0; }
   /// The solve the case asks for; gross sliding refused naming the tangential key.
   bem::FrictionalResult solve(bem::FrictionalContact& contact, const Config& contact_section) const;
 };

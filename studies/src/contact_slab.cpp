@@ -14,6 +14,7 @@
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/slab_clusters.hpp"
+#include "wearscale/bem/slab_crack_initiation.hpp"
 #include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_surface.hpp"
@@ -23,7 +24,6 @@
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/units.hpp"
-#include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/laid_out_file.hpp"
 #include "wearscale/io/xdmf.hpp"
@@ -95,15 +95,6 @@ SlabCase read_slab_case(const Config& config) {
   const bool file = s.measured.size() > 0;
   const char* size_key = file ? "surface" : "grid";  // what sets the grid
   const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
-  if (s.friction && s.friction->crack && !gather)
-    throw c.error("tensile_strength",
-                  fmt::format("crack initiation (4.25) at each micro-contact's edges needs the whole map of the "
-                              "surface stresses, and a frictional contact of {} × {} points is more than rank 0 "
-                              "gathers ({} points, [run] gather_limit)",
-                              s.grid.nx, s.grid.ny, s.gather_limit),
-                  fmt::format("no tensile_strength above {} points under mpirun (the stresses are written all the "
-                              "same), or a larger [run] gather_limit",
-                              s.gather_limit));
   const double share = s.friction && !gather                   ? kFrictionalInPlaceBytesPerPoint
                        : s.friction                              ? kFrictionalBytesPerPoint
                        : s.normal.boundary == Boundary::Free ? kFreeBytesPerPoint
@@ -163,28 +154,6 @@ struct SlabField {
   const RealField* rows;
 };
 using Report = FigureReport;
-
-// The micro-contacts found across the slabs (rank 0's), as the serial study
-// writes them: the /clusters table of contact.h5 and clusters.csv.
-struct ClusterColumns {
-  std::vector<double> area, x, y;
-  explicit ClusterColumns(const std::vector<ContactCluster>& clusters) {
-    for (const auto& cl : clusters) {
-      area.push_back(cl.area);
-      x.push_back(cl.centroid_x);
-      y.push_back(cl.centroid_y);
-    }
-  }
-  void write_table(H5Writer& h5) const {
-    h5.write_table("/clusters", {"area", "centroid_x", "centroid_y"}, {area, x, y}, {"m^2", "m", "m"});
-  }
-  void write_csv(coupling::RunContext& context) const {
-    const auto csv = context.output_dir() / "clusters.csv";
-    wearscale::write_csv(csv, {"area", "centroid_x", "centroid_y"}, {area, x, y}, {"m^2", "m", "m"},
-                           {"micro-contacts of the solved contact, largest first"});
-    context.add_file(csv);
-  }
-};
 
 // contact.h5 of a grid no rank gathers (collective): rank 0 lays it out on
 // disk (the case, the headline figures through `results`, every field
@@ -306,8 +275,11 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
   max_sigma = mpi::max(max_sigma);
   RealField in_contact(local);
   for (std::size_t k = 0; k < in_contact.size(); ++k) in_contact[k] = traction.z[k] > 0.0 ? 1.0 : 0.0;
-  const std::vector<ContactCluster> clusters = find_clusters_slab(traction.z, first, g, f.connectivity);
-  const ClusterColumns columns(clusters);  // rank 0's
+  // The micro-contacts joined across the slabs, with (4.25) at their edges if σ_m is given.
+  const SlabContactMap map = label_clusters_slab(traction.z, first, g, f.connectivity);
+  std::vector<EdgeCrackCheck> checks;
+  if (f.crack) checks = crack_initiation_slab(map, surface, first, g, f.crack_direction_x(), 0.0, f.sigma_m);
+  const ClusterTable table(map.clusters, f.crack ? &checks : nullptr, f.sigma_m);  // rank 0's (the sites on every rank)
   const VectorField &u = contact.displacement(), &slip = contact.slip();
   std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
                                    {"/fields/pressure", "p_N", "Pa", &traction.z},
@@ -335,14 +307,15 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
     fields.push_back({deep_names[4 * d + 2].c_str(), deep_names[4 * d + 3].c_str(), "Pa", &deep_shear[d]});
   }
   write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
-    report_frictional_figures(f, r, {clusters.size(), max_sigma, deep_tau, deep_tau_depth}, report);
+    report_frictional_figures(f, r, {map.count, max_sigma, deep_tau, deep_tau_depth}, report);
+    if (f.crack) report_crack_sites(table, report);
   }, [&](H5Writer& h5) {
     h5.set_attribute("/fields/stick_slip", "values", "0 open, 1 stick, 2 slip");
     for (std::size_t d = 0; d < f.depths.size(); ++d)
       h5.set_attribute(fmt::format("/stress/depth_{}", d), "depth", f.depths[d]);
-    columns.write_table(h5);
+    table.write(h5);
   });
-  if (context != nullptr) columns.write_csv(*context);
+  if (context != nullptr) context->add_file(table.write_csv(context->output_dir()));
 }
 }  // namespace
 
@@ -410,7 +383,7 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
               "of the fields into contact.h5, the micro-contacts are joined across the slabs",
               g.size(), s.gather_limit);
   const std::vector<ContactCluster> clusters = find_clusters_slab(contact.pressure(), first, g, normal.connectivity);
-  const ClusterColumns columns(clusters);  // rank 0's
+  const ClusterTable table(clusters);  // rank 0's
   const std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
                                          {"/fields/pressure", "pressure", "Pa", &contact.pressure()},
                                          {"/fields/gap", "gap", "m", &contact.gap()},
@@ -419,9 +392,9 @@ void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* co
   write_fields_in_place(config, g, first, fields, context, [&](const Report& report) {
     report_normal_figures(normal, r, {area, clusters.size(), hprime}, report);
   }, [&](H5Writer& h5) {
-    columns.write_table(h5);
+    table.write(h5);
   });
-  if (context != nullptr) columns.write_csv(*context);
+  if (context != nullptr) context->add_file(table.write_csv(context->output_dir()));
 }
 
 }  // namespace wearscale::studies

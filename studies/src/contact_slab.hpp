@@ -18,10 +18,10 @@
 // friction (FrictionalContact on a SlabHalfSpace holding the whole tensor;
 // the surface and subsurface stresses from the gathered tractions on rank 0,
 // or above the gather limit from each rank's rows, SlabSubsurfaceStress).
+// Crack initiation (4.25) per micro-contact is checked on each rank's rows,
+// with the rows on either side from its neighbours (crack_initiation_slab).
 // Refused (InputError naming the key, the same on every rank, before any
-// work): a file of fewer rows than ranks, and crack initiation
-// (contact.tensile_strength) on a frictional grid above the gather limit
-// (each micro-contact's edges are read in the whole map of stresses).
+// work): a file of fewer rows than ranks.
 #include <cstddef>
 #include <optional>
 

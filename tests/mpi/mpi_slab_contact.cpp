@@ -28,6 +28,12 @@
 //   mpi_slab_contact stress    the stresses below tractions (six components at
 //                              the surface and two depths) from each rank's
 //                              rows equal the serial SubsurfaceStress's (1e-13);
+//   mpi_slab_contact crack     the micro-contacts' labels of each rank's rows
+//                              equal the whole map's (4- and 8-connected), and
+//                              (4.25) per micro-contact from the slabs equals
+//                              the whole map's check to the bit (edge extremes
+//                              and flags), for contacts that cross the slabs'
+//                              edges and the cell's, along four directions;
 //   mpi_slab_contact stop      a stop asked on the last rank alone ends the
 //                              normal and the frictional solve on every rank at
 //                              the same iteration (Interrupted): none waits.
@@ -41,12 +47,17 @@
 #include <string>
 #include <vector>
 
+#include "wearscale/bem/crack_initiation.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/bem/principal_stresses.hpp"
+#include "wearscale/bem/slab_clusters.hpp"
+#include "wearscale/bem/slab_crack_initiation.hpp"
 #include "wearscale/bem/slab_free_half_space.hpp"
 #include "wearscale/bem/slab_half_space.hpp"
 #include "wearscale/bem/slab_subsurface_stress.hpp"
 #include "wearscale/bem/slab_surface.hpp"
+#include "wearscale/bem/subsurface_stress.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/mpi.hpp"
@@ -282,6 +293,78 @@ void test_stress(const Grid2D& g) {
   }
 }
 
+// A sliding rough contact (a fifth of the cell) whose micro-contacts cross the
+// slabs' edges, and with `band` one more around the cell along y, across its
+// edge along x (its last two rows and first two): each rank's labels and the
+// (4.25) checks from the slabs against the whole map's.
+void test_crack(const Grid2D& g, Connectivity connectivity, bool band) {
+  const RoughSurfaceSpec spec{g, 0.8, 2.0, 2.0, static_cast<double>(std::min(g.nx, g.ny) / 4), 5};
+  const RealField h = generate_surface(spec, RoughnessMeasure::HPrimeRms, 1.0);
+  std::vector<double> sorted(h.begin(), h.end());
+  std::sort(sorted.begin(), sorted.end());
+  const double cut = sorted[static_cast<std::size_t>(0.8 * static_cast<double>(sorted.size()))];
+  VectorField t(g);
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    const std::size_t i = k / g.ny;
+    t.z[k] = std::max(h[k] - cut, 0.0) + (band && (i < 2 || i + 2 >= g.nx) ? 0.5 * (sorted.back() - cut) : 0.0);
+    t.x[k] = 0.5 * t.z[k];
+  }
+  SubsurfaceStress solid(g, 0.3);
+  solid.set_traction(t);
+  StressField stress(g);
+  solid.stress(0.0, stress);
+  PrincipalStresses whole(g);
+  principal_stresses(stress, whole);
+  // Rank 0's fields on every rank: FFTW may take other codelets in another
+  // process (the arrays' alignment), which moves the last bits.
+  for (RealField* f : {&t.z, &whole.first, &whole.third}) mpi::broadcast(f->values());
+  const ContactMap map = find_clusters(t.z, connectivity);
+
+  const RowRange mine = SlabFFT::layout(g.nx, g.ny);
+  const Grid2D lg(mine.rows, g.ny, g.dx() * static_cast<double>(mine.rows), g.ly);
+  const SlabContactMap slab = label_clusters_slab(rows_of(t.z, lg, mine.first), mine.first, g, connectivity);
+  const std::string at = " on " + g.to_string() + (connectivity == Connectivity::Eight ? ", 8-connected" : "");
+  check(slab.count == map.clusters.size(), "cluster counts differ" + at);
+  check(map.clusters.size() >= 3, "too few micro-contacts to test" + at);
+  bool same_labels = slab.label.size() == lg.size();
+  for (std::size_t k = 0; same_labels && k < slab.label.size(); ++k)
+    same_labels = slab.label[k] == map.label[mine.first * g.ny + k];
+  check(same_labels, "the labels of this rank's rows differ from the whole map's" + at);
+  bool spans = false;
+  for (const auto& c : map.clusters) spans = spans || c.spans_cell;
+  check(!band || spans, "no micro-contact wraps around the cell" + at);
+
+  PrincipalStresses part(lg);
+  part.first = rows_of(whole.first, lg, mine.first);
+  part.third = rows_of(whole.third, lg, mine.first);
+  for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {-1.0, 0.3}}) {
+    // σ_m in the middle of the micro-contacts' edge extremes, so that some initiate and some do not.
+    std::vector<EdgeCrackCheck> serial = crack_initiation(map, whole, dx, dy, 1.0);
+    std::vector<double> both;
+    for (const auto& c : serial)
+      if (std::isfinite(c.trailing_tension) && std::isfinite(c.leading_compression))
+        both.push_back(std::min(c.trailing_tension, -c.leading_compression));
+    std::sort(both.begin(), both.end());
+    const std::size_t half = both.size() / 2;
+    const double sigma_m = both.size() < 2 ? 1.0 : std::max(0.5 * (both[half - 1] + both[half]), 1e-9);
+    serial = crack_initiation(map, whole, dx, dy, sigma_m);
+    const std::vector<EdgeCrackCheck> ranks = crack_initiation_slab(slab, part, mine.first, g, dx, dy, sigma_m);
+    const std::string along = at + " along (" + std::to_string(dx) + ", " + std::to_string(dy) + ")";
+    check(ranks.size() == serial.size(), "the checks' counts differ" + along);
+    std::size_t initiating = 0, same = 0;
+    for (std::size_t c = 0; c < std::min(ranks.size(), serial.size()); ++c) {
+      initiating += serial[c].initiates() ? 1 : 0;
+      same += ranks[c].trailing_tension == serial[c].trailing_tension &&
+                      ranks[c].leading_compression == serial[c].leading_compression &&
+                      ranks[c].trailing == serial[c].trailing && ranks[c].leading == serial[c].leading
+                  ? 1
+                  : 0;
+    }
+    check(same == serial.size(), std::to_string(serial.size() - same) + " checks differ from the whole map's" + along);
+    check(initiating > 0 && initiating < serial.size(), "every micro-contact or none initiates: a weak test" + along);
+  }
+}
+
 VectorField vector_rows_of(const VectorField& whole, const Grid2D& slab, std::size_t first) {
   VectorField r(slab);
   r.x = rows_of(whole.x, slab, first);
@@ -485,10 +568,14 @@ int main(int argc, char** argv) {
     test_stress(Grid2D::square(64, 1.0));
     test_stress(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
     test_stress(Grid2D(64, 33, 1.0, 0.5));  // odd columns
+  } else if (mode == "crack") {
+    test_crack(Grid2D::square(64, 1.0), Connectivity::Four, false);
+    test_crack(Grid2D(45, 32, 2.0, 1.5), Connectivity::Eight, false);  // odd rows, rectangular
+    test_crack(Grid2D(20, 33, 1.0, 0.5), Connectivity::Four, true);    // few rows, a contact around the cell
   } else if (mode == "stop") {
     test_stop(64);
   } else {
-    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | free | stress | stop\n");
+    std::fprintf(stderr, "usage: mpi_slab_contact operator | surface | solve | traction | coulomb | tresca | free | stress | crack | stop\n");
     return 2;
   }
   const long long failed = mpi::sum(static_cast<long long>(failures));

@@ -299,21 +299,29 @@ TEST(MpiContactCli, TrescaFrictionOnTwoRanksGivesTheSerialSummaryAndFiles) {
 
 TEST(MpiContactCli, FrictionAboveTheGatherLimitWritesTheSerialFieldsAndStressesInPlace) {
   // [run] gather_limit below the grid: every rank computes its rows of the
-  // stresses (surface and two depths) and writes its rows of every field; the
-  // serial figures, fields, stresses and micro-contacts at P = 2 and 3.
+  // stresses (surface and two depths) and writes its rows of every field, and
+  // crack initiation (4.25) is checked at the micro-contacts' edges across the
+  // slabs; the serial figures, fields, stresses, micro-contacts and their
+  // crack checks at P = 2 and 3.
   const std::string args = "contact " + rough_case +
                            " --set contact.grid=64 --set contact.rough.k_s=16 --set contact.friction=coulomb "
                            "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5 "
                            "--set contact.tangential_pressure=0.006 --set 'contact.stress_depths=[0.01, 0.03]' "
-                           "--set run.gather_limit=1000 --json";
+                           "--set contact.tensile_strength=0.11 --set run.gather_limit=1000 --json";
   const auto serial = run(0, args + " -q --out friction_inplace_serial");
   ASSERT_EQ(serial.status, 0) << serial.err;
   const auto s = nlohmann::json::parse(serial.out);
   EXPECT_GT(s["results"]["stick_fraction"]["value"].get<double>(), 0.0);
   EXPECT_GT(s["results"]["slip_fraction"]["value"].get<double>(), 0.0);
   EXPECT_GT(s["results"]["clusters"]["value"].get<double>(), 10.0);
+  // σ_m between the micro-contacts' edge stresses: some meet (4.25), some do not.
+  const double sites = s["results"]["crack_initiation_sites"]["value"].get<double>();
+  EXPECT_GT(sites, 0.0);
+  EXPECT_LT(sites, s["results"]["clusters"]["value"].get<double>());
   std::vector<std::string> datasets = frictional_datasets;
-  datasets.insert(datasets.end(), {"/stress/surface/sigma_III", "/stress/depth_0/sigma_I", "/stress/depth_1/tau_max"});
+  datasets.insert(datasets.end(), {"/stress/surface/sigma_III", "/stress/depth_0/sigma_I", "/stress/depth_1/tau_max",
+                                   "/clusters/trailing_sigma_I", "/clusters/leading_sigma_III",
+                                   "/clusters/crack_initiation"});
   for (int ranks : {2, 3}) {
     const std::string dir = "friction_inplace" + std::to_string(ranks);
     const auto slab = run(ranks, args + " --out " + dir);
@@ -348,9 +356,6 @@ TEST(MpiContactCli, WhatTheSlabsCannotDoIsRefusedOnEveryRankNamingTheKey) {
       {"--set contact.boundary=free --set contact.friction=coulomb --set contact.poisson=0.3 "
        "--set contact.friction_coefficient=0.5",
        "contact.boundary"},  // friction on a free window (refused serially alike)
-      {"--set contact.friction=tresca --set contact.poisson=0.3 --set contact.shear_strength=0.01 "
-       "--set contact.tensile_strength=0.5 --set run.gather_limit=10000",
-       "contact.tensile_strength"},  // crack initiation per micro-contact above the gather limit
       {"--set run.gather_limit=0", "run.gather_limit"},
       {"--set contact.grid=7", "contact.grid"},
       {"--resume elsewhere", "--resume"}};

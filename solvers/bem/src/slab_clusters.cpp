@@ -28,8 +28,15 @@ struct Piece {
 // column, piece, unwrapped i, j).
 constexpr std::size_t kHeader = 4, kPieceValues = 5, kEdgeValues = 5;
 
-std::vector<double> label_rows(const RealField& p, std::size_t first_row, const Grid2D& whole,
-                               const std::vector<std::pair<long, long>>& steps) {
+// A slab's pieces: what it sends rank 0, and the piece of each of its points (−1 outside).
+struct Labelled {
+  std::vector<double> message;
+  std::vector<std::int32_t> label;
+  std::size_t pieces = 0;
+};
+
+Labelled label_rows(const RealField& p, std::size_t first_row, const Grid2D& whole,
+                    const std::vector<std::pair<long, long>>& steps) {
   const long rows = static_cast<long>(p.grid().nx), ny = static_cast<long>(whole.ny);
   const long first = static_cast<long>(first_row);
   const auto at = [ny](long row, long j) { return static_cast<std::size_t>(row * ny + ((j % ny) + ny) % ny); };
@@ -88,7 +95,7 @@ std::vector<double> label_rows(const RealField& p, std::size_t first_row, const 
     }
   }
   out[3] = static_cast<double>(edge);
-  return out;
+  return {std::move(out), std::move(label), pieces.size()};
 }
 
 // Pieces joined with their relative positions: a weighted union-find where
@@ -138,18 +145,11 @@ struct Joined {
   }
 };
 
-}  // namespace
-
-std::vector<ContactCluster> find_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
-                                               Connectivity connectivity) {
-  std::vector<std::pair<long, long>> steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  if (connectivity == Connectivity::Eight) steps.insert(steps.end(), {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}});
-  const std::vector<double> mine = label_rows(rows, first_row, whole, steps);
-  const long long total = mpi::sum(static_cast<long long>(mine.size()));
-  std::vector<double> all(mpi::is_root() ? static_cast<std::size_t>(total) : 0);
-  mpi::gather(mine, all);
-  if (!mpi::is_root()) return {};
-
+// Rank 0: the slabs' messages joined into the whole map's clusters, sorted as
+// find_clusters sorts them; `cluster_of_piece` the sorted index of every piece.
+std::vector<ContactCluster> join_pieces(const std::vector<double>& all, const Grid2D& whole,
+                                        const std::vector<std::pair<long, long>>& steps,
+                                        std::vector<double>& cluster_of_piece) {
   // Every rank's block, in rank order.
   struct Block {
     long first = 0, rows = 0;
@@ -220,8 +220,10 @@ std::vector<ContactCluster> find_clusters_slab(const RealField& rows, std::size_
   }
   std::vector<ContactCluster> clusters;
   std::vector<long long> seeds;
+  std::vector<std::size_t> cluster_of_root(pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     if (joined.find(k).first != k) continue;
+    cluster_of_root[k] = clusters.size();
     const Sum& c = sums[k];
     ContactCluster out;
     out.points = static_cast<std::size_t>(c.points);
@@ -243,8 +245,49 @@ std::vector<ContactCluster> find_clusters_slab(const RealField& rows, std::size_
                    [&](std::size_t a, std::size_t b) { return clusters[a].points > clusters[b].points; });
   std::vector<ContactCluster> sorted;
   sorted.reserve(order.size());
-  for (std::size_t k : order) sorted.push_back(clusters[k]);
+  std::vector<std::size_t> rank_of(order.size());
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    sorted.push_back(clusters[order[s]]);
+    rank_of[order[s]] = s;
+  }
+  cluster_of_piece.resize(pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+    cluster_of_piece[k] = static_cast<double>(rank_of[cluster_of_root[joined.find(k).first]]);
   return sorted;
+}
+
+}  // namespace
+
+SlabContactMap label_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
+                                   Connectivity connectivity) {
+  std::vector<std::pair<long, long>> steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  if (connectivity == Connectivity::Eight) steps.insert(steps.end(), {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}});
+  Labelled mine = label_rows(rows, first_row, whole, steps);
+  const long long total = mpi::sum(static_cast<long long>(mine.message.size()));
+  std::vector<double> all(mpi::is_root() ? static_cast<std::size_t>(total) : 0);
+  mpi::gather(mine.message, all);
+  mine.message = std::vector<double>();
+  SlabContactMap map;
+  std::vector<double> cluster_of_piece;  // rank 0's: every piece's cluster in the sorted order, pieces in rank order
+  if (mpi::is_root()) {
+    map.clusters = join_pieces(all, whole, steps, cluster_of_piece);
+    all = std::vector<double>();
+  }
+  // Each rank's pieces' clusters, and its points labelled with them.
+  std::vector<double> own(mine.pieces);
+  mpi::scatter(cluster_of_piece, own);
+  map.label.resize(mine.label.size());
+  for (std::size_t k = 0; k < mine.label.size(); ++k)
+    map.label[k] = mine.label[k] < 0 ? -1 : static_cast<int>(own[static_cast<std::size_t>(mine.label[k])]);
+  double count = static_cast<double>(map.clusters.size());
+  mpi::broadcast(std::span<double>(&count, 1));
+  map.count = static_cast<std::size_t>(count);
+  return map;
+}
+
+std::vector<ContactCluster> find_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
+                                               Connectivity connectivity) {
+  return label_clusters_slab(rows, first_row, whole, connectivity).clusters;
 }
 
 }  // namespace wearscale::bem

@@ -73,11 +73,21 @@ double sum(double local);
 void sum(std::span<double> values);
 long long sum(long long local);
 double max(double local);
+/// The largest (smallest) of the ranks' values, element by element, on every rank (MPI_Allreduce).
+void max(std::span<double> values);
+void min(std::span<double> values);
 
 /// Gathers every rank's `local` values, in rank order, into `all` on rank 0
 /// (whose size must be the total; ignored on the other ranks): a field
 /// distributed in slabs of rows becomes the whole field on rank 0. Serial: a copy.
 void gather(std::span<const double> local, std::span<double> all);
+
+/// The reverse of gather: rank 0's `all` (ignored on the other ranks) split in
+/// rank order, each rank receiving as many values as its `local` holds (the
+/// counts must add up to all.size()). What rank 0 alone worked out for every
+/// rank's rows, e.g. which micro-contact each of their clusters' pieces joins.
+/// Serial: a copy.
+void scatter(std::span<const double> all, std::span<double> local);
 
 /// Rank 0's `values` (the same count on every rank) and `text` on every rank
 /// (MPI_Bcast); serial: unchanged. What rank 0 alone decided, e.g. where in a
