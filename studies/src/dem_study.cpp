@@ -606,11 +606,16 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
           logged = step * per / planned;
           last_line = now;
           const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+          // No speed on the first line (of a run, or of a resumed one): nothing measured yet.
+          const std::string speed =
+              step > step0 && cpu > 0.0
+                  ? fmt::format("{:.3g} particle-steps per CPU s",
+                                static_cast<double>(step - step0) * static_cast<double>(sim.particles().size()) / cpu)
+                  : std::string("speed from the next line on");
           log::info("oxide asperity: step {}/{}, slide {:.4g} nm, F_T {:.4g} N, F_N {:.4g} N, body {} ({} picked up), "
-                    "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {:.3g} particle-steps per CPU s",
+                    "rotation {:.4g} rad, travel {:.4g} nm, trench {:.3g} nm (deepest {:.3g}); {}",
                     step, planned, s.sliding * 1e9, s.tangential_force, s.normal_force, s.body_particles, s.picked_up,
-                    s.rotation, s.travel * 1e9, s.trench_depth * 1e9, s.trench_max_depth * 1e9,
-                    cpu > 0.0 ? static_cast<double>(step - step0) * static_cast<double>(sim.particles().size()) / cpu : 0.0);
+                    s.rotation, s.travel * 1e9, s.trench_depth * 1e9, s.trench_max_depth * 1e9, speed);
         }
         if (dump.frames() == 0 || (dump_every > 0 && (step % dump_every < spec.record_every || step == planned)))
           dump.write(sim, {{"rolling_body", body}});
