@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -102,6 +103,20 @@ void expect_same_files(const fs::path& serial, const fs::path& slab, const std::
     EXPECT_LE(worst, 1e-12 * largest) << d;
   }
   EXPECT_EQ(slurp(serial / "clusters.csv").size(), slurp(slab / "clusters.csv").size());
+}
+
+// CSV text without the (0-based) columns `drop`.
+std::string csv_without_columns(const std::string& text, const std::vector<std::size_t>& drop) {
+  std::string out, line;
+  std::istringstream lines(text);
+  while (std::getline(lines, line)) {
+    std::istringstream cells(line);
+    std::string cell;
+    for (std::size_t c = 0; std::getline(cells, cell, ','); ++c)
+      if (std::find(drop.begin(), drop.end(), c) == drop.end()) out += cell + ',';
+    out += '\n';
+  }
+  return out;
 }
 
 // `wearscale args` serially (-q, into <name>_serial) and on `ranks` ranks (into
@@ -329,7 +344,12 @@ TEST(MpiContactCli, FrictionAboveTheGatherLimitWritesTheSerialFieldsAndStressesI
     EXPECT_THAT(slab.err, HasSubstr("every rank computes its rows of the stresses"));
     expect_same_results(s, nlohmann::json::parse(slab.out), ranks);
     expect_same_files(work / "friction_inplace_serial", work / dir, datasets);
-    EXPECT_EQ(slurp(work / "friction_inplace_serial" / "clusters.csv"), slurp(work / dir / "clusters.csv"));
+    // The micro-contacts and the criterion's outcome byte for byte; the edge
+    // stresses (columns 4-5) come from the slabs' transforms and agree to
+    // their round-off (the /clusters datasets above), which can print a
+    // near-zero value otherwise.
+    EXPECT_EQ(csv_without_columns(slurp(work / "friction_inplace_serial" / "clusters.csv"), {3, 4}),
+              csv_without_columns(slurp(work / dir / "clusters.csv"), {3, 4}));
     const wearscale::H5Reader b(work / dir / "contact.h5");
     EXPECT_EQ(b.string_attribute("/fields/stick_slip", "values"), "0 open, 1 stick, 2 slip");
     EXPECT_DOUBLE_EQ(b.number_attribute("/stress/depth_1", "depth"), 0.03);
