@@ -15,6 +15,7 @@
 #include "wearscale/dem/rigid_fit.hpp"
 #include "wearscale/dem/shapes.hpp"
 #include "wearscale/dem/simulation.hpp"
+#include "wearscale/dem/steady_sliding.hpp"
 
 namespace wearscale::dem {
 
@@ -407,19 +408,11 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
 
   out.surface_height = surface0;
   out.layer_measured = surface0 - si_top;
-  double sum_t = 0.0, sum_n = 0.0;
-  const double half = 0.5 * out.history.back().sliding;
-  for (const auto& s : out.history)
-    if (s.sliding >= half && s.time > 0.0) {
-      sum_t += s.tangential_force;
-      sum_n += s.normal_force;
-    }
-  out.friction = sum_n > 0.0 ? sum_t / sum_n : 0.0;
-  std::size_t count = 0;
-  for (const auto& s : out.history) count += s.sliding >= half && s.time > 0.0 ? 1 : 0;
-  if (count > 0) {
-    out.mean_tangential_force = sum_t / static_cast<double>(count);
-    out.mean_normal_force = sum_n / static_cast<double>(count);
+  const SteadySliding steady = steady_sliding(out.history);
+  out.friction = steady.friction;
+  if (steady.samples > 0) {
+    out.mean_tangential_force = steady.tangential_force;
+    out.mean_normal_force = steady.normal_force;
   }
   out.final_body = last.body_particles;
   out.final_picked_up = last.picked_up;

@@ -7,6 +7,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
+#include "wearscale/dem/steady_sliding.hpp"
 
 namespace wearscale::dem {
 
@@ -151,19 +152,11 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
   }, done);
   out.steps = planned;
 
-  double sum_t = 0.0, sum_n = 0.0;
-  std::size_t n = 0;
-  const double half = 0.5 * out.history.back().sliding;
-  for (const auto& s : out.history)
-    if (s.sliding >= half && s.time > 0.0) {
-      sum_t += s.tangential_force;
-      sum_n += s.normal_force;
-      ++n;
-    }
-  if (n > 0) {
-    out.mean_tangential_force = sum_t / static_cast<double>(n);
-    out.mean_pressure = sum_n / static_cast<double>(n) / out.area;
-    out.friction = sum_n > 0.0 ? sum_t / sum_n : 0.0;
+  const SteadySliding steady = steady_sliding(out.history);
+  if (steady.samples > 0) {
+    out.mean_tangential_force = steady.tangential_force;
+    out.mean_pressure = steady.normal_force / out.area;
+    out.friction = steady.friction;
   }
   const auto worn = cell.worn_flags();
   double worn_volume = 0.0;
