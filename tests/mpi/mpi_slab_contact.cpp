@@ -95,35 +95,44 @@ RealField rows_of(const RealField& whole, const Grid2D& slab, std::size_t first)
 
 double relative(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
-void test_operator(const Grid2D& g) {
+// A slab body's u = K p, z = S t, t·Kt, self compliance and S(0) against the
+// serial HalfSpace of the same boundary, on random fields drawn from `seed`.
+template <class SlabBody>
+void compare_with_serial_body(SlabBody& slab, const Grid2D& g, Boundary boundary, unsigned seed) {
   const double e_star = 2.5;
   RealField p(g), t(g);
-  std::mt19937_64 rng(7);
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (double& v : p) v = u01(rng);
   for (double& v : t) v = u01(rng) - 0.5;
-  HalfSpace serial = HalfSpace::normal(g, e_star);
+  HalfSpace serial = HalfSpace::normal(g, e_star, boundary);
   auto w = serial.workspace();
   RealField u(g), z(g);
   serial.normal_displacement(p, u, w, 1.5);
   serial.normal_stiffness(t, z, w);
   const double form = serial.normal_form(t, w);
 
-  SlabHalfSpace slab(g, e_star, PlanRigor::Estimate);
   const Grid2D& lg = slab.local_grid();
+  const std::size_t first = slab.first_row();
   RealField u_s(lg), z_s(lg);
-  slab.displacement(rows_of(p, lg, slab.first_row()), u_s, 1.5);
-  slab.stiffness(rows_of(t, lg, slab.first_row()), z_s);
-  const double form_s = slab.form(rows_of(t, lg, slab.first_row()));
-  const std::string at = " on " + g.to_string();
-  check(row_difference(u_s, u, slab.first_row()) < 1e-13, "u = K p differs from the serial body's" + at);
-  check(row_difference(z_s, z, slab.first_row()) < 1e-13, "z = S t differs from the serial body's" + at);
+  slab.displacement(rows_of(p, lg, first), u_s, 1.5);
+  slab.stiffness(rows_of(t, lg, first), z_s);
+  const double form_s = slab.form(rows_of(t, lg, first));
+  const std::string at = std::string(boundary == Boundary::Free ? " (free)" : "") + " on " + g.to_string();
+  check(slab.boundary() == boundary, "the body's boundary differs" + at);
+  check(row_difference(u_s, u, first) < 1e-13, "u = K p differs from the serial body's" + at);
+  check(row_difference(z_s, z, first) < 1e-13, "z = S t differs from the serial body's" + at);
   check(relative(form_s, form) < 1e-13, "t·Kt differs from the serial body's" + at);
   check(relative(slab.self_compliance(), serial.self_compliance()) < 1e-13, "self compliance differs" + at);
   check(relative(slab.stiffness_diagonal(), serial.normal_stiffness_diagonal()) < 1e-13,
         "S at offset 0 differs" + at);
-  const long long rows = mpi::sum(static_cast<long long>(slab.rows()));
-  check(rows == static_cast<long long>(g.nx), "the slabs do not cover the grid" + at);
+  check(mpi::sum(static_cast<long long>(slab.rows())) == static_cast<long long>(g.nx),
+        "the slabs do not cover the grid" + at);
+}
+
+void test_operator(const Grid2D& g) {
+  SlabHalfSpace slab(g, 2.5, PlanRigor::Estimate);
+  compare_with_serial_body(slab, g, Boundary::Periodic, 7);
 }
 
 void test_surface(const Grid2D& g, std::uint64_t seed) {
@@ -177,40 +186,12 @@ void test_solve(std::size_t n, ContactMethod method) {
     (void)row_difference(slab.pressure(), serial.pressure(), first);  // the same collective calls as rank 0
 }
 void test_free_operator(const Grid2D& g) {
-  const double e_star = 2.5;
-  RealField p(g), t(g);
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (double& v : p) v = u01(rng);
-  for (double& v : t) v = u01(rng) - 0.5;
-  HalfSpace serial = HalfSpace::normal(g, e_star, Boundary::Free);
-  auto w = serial.workspace();
-  RealField u(g), z(g);
-  serial.normal_displacement(p, u, w, 1.5);
-  serial.normal_stiffness(t, z, w);
-  const double form = serial.normal_form(t, w);
-
-  SlabFreeHalfSpace slab(g, e_star, PlanRigor::Estimate);
-  const Grid2D& lg = slab.local_grid();
-  const std::size_t first = slab.first_row();
-  RealField u_s(lg), z_s(lg);
-  slab.displacement(rows_of(p, lg, first), u_s, 1.5);
-  slab.stiffness(rows_of(t, lg, first), z_s);
-  const double form_s = slab.form(rows_of(t, lg, first));
-  const std::string at = " (free) on " + g.to_string();
-  check(slab.boundary() == Boundary::Free, "the body is not free" + at);
-  check(row_difference(u_s, u, first) < 1e-13, "u = K p differs from the serial body's" + at);
-  check(row_difference(z_s, z, first) < 1e-13, "z = S t differs from the serial body's" + at);
-  check(relative(form_s, form) < 1e-13, "t·Kt differs from the serial body's" + at);
-  check(relative(slab.self_compliance(), serial.self_compliance()) < 1e-13, "self compliance differs" + at);
-  check(relative(slab.stiffness_diagonal(), serial.normal_stiffness_diagonal()) < 1e-13,
-        "S at offset 0 differs" + at);
-  // The contact's rows are where a rough surface made in slabs puts them, and cover the grid once.
+  SlabFreeHalfSpace slab(g, 2.5, PlanRigor::Estimate);
+  compare_with_serial_body(slab, g, Boundary::Free, 11);
+  // The contact's rows are where a rough surface made in slabs puts them.
   SlabFFT surface(g.nx, g.ny, PlanRigor::Estimate);
-  check(surface.first_row() == first && surface.rows() == slab.rows(),
-        "the rows differ from the slabs of the contact's own grid" + at);
-  check(mpi::sum(static_cast<long long>(slab.rows())) == static_cast<long long>(g.nx),
-        "the slabs do not cover the grid" + at);
+  check(surface.first_row() == slab.first_row() && surface.rows() == slab.rows(),
+        "the rows differ from the slabs of the contact's own grid (free) on " + g.to_string());
 }
 
 void test_free_solve(std::size_t n) {
