@@ -276,9 +276,10 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
   RealField in_contact(local);
   for (std::size_t k = 0; k < in_contact.size(); ++k) in_contact[k] = traction.z[k] > 0.0 ? 1.0 : 0.0;
   // The micro-contacts joined across the slabs, with (4.25) at their edges if σ_m is given.
-  const SlabContactMap map = label_clusters_slab(traction.z, first, g, f.connectivity);
+  SlabContactMap map = label_clusters_slab(traction.z, first, g, f.connectivity);
   std::vector<EdgeCrackCheck> checks;
   if (f.crack) checks = crack_initiation_slab(map, surface, first, g, f.crack_direction_x(), 0.0, f.sigma_m);
+  map.label = std::vector<int>();  // 4 B a point, not needed for writing
   const ClusterTable table(map.clusters, f.crack ? &checks : nullptr, f.sigma_m);  // rank 0's (the sites on every rank)
   const VectorField &u = contact.displacement(), &slip = contact.slip();
   std::vector<SlabField> fields = {{"/surface/height", "height", "m", &h},
