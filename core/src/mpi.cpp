@@ -146,6 +146,22 @@ double max(double local) {
 
 namespace {
 #ifdef WEARSCALE_MPI
+// Every rank's count `n` on rank 0, their offsets in rank order and their
+// total (collective): the layout of a gather or a scatter of uneven parts.
+struct RankParts {
+  std::vector<int> counts, offsets;
+  long long total = 0;
+};
+RankParts rank_parts(int n) {
+  RankParts parts{std::vector<int>(static_cast<std::size_t>(g_size)), std::vector<int>(static_cast<std::size_t>(g_size))};
+  MPI_Gather(&n, 1, MPI_INT, parts.counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  for (int r = 0; r < g_size; ++r) {
+    parts.offsets[static_cast<std::size_t>(r)] = static_cast<int>(parts.total);
+    parts.total += parts.counts[static_cast<std::size_t>(r)];
+  }
+  return parts;
+}
+
 void reduce(std::span<double> values, MPI_Op op) {
   if (active() && size() > 1 && !values.empty())
     MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op, MPI_COMM_WORLD);
@@ -173,16 +189,10 @@ void gather(std::span<const double> local, std::span<double> all) {
 #ifdef WEARSCALE_MPI
   if (active() && size() > 1) {
     const int n = static_cast<int>(local.size());
-    std::vector<int> counts(static_cast<std::size_t>(g_size)), offsets(static_cast<std::size_t>(g_size));
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    long long total = 0;
-    for (int r = 0; r < g_size; ++r) {
-      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
-      total += counts[static_cast<std::size_t>(r)];
-    }
-    if (g_rank == 0 && total != static_cast<long long>(all.size()))
+    const RankParts parts = rank_parts(n);
+    if (g_rank == 0 && parts.total != static_cast<long long>(all.size()))
       throw std::invalid_argument("mpi::gather: the ranks' values do not fill the destination");
-    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+    MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), parts.counts.data(), parts.offsets.data(), MPI_DOUBLE, 0,
                 MPI_COMM_WORLD);
     return;
   }
@@ -195,16 +205,10 @@ void scatter(std::span<const double> all, std::span<double> local) {
 #ifdef WEARSCALE_MPI
   if (active() && size() > 1) {
     const int n = static_cast<int>(local.size());
-    std::vector<int> counts(static_cast<std::size_t>(g_size)), offsets(static_cast<std::size_t>(g_size));
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    long long total = 0;
-    for (int r = 0; r < g_size; ++r) {
-      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
-      total += counts[static_cast<std::size_t>(r)];
-    }
-    if (g_rank == 0 && total != static_cast<long long>(all.size()))
+    const RankParts parts = rank_parts(n);
+    if (g_rank == 0 && parts.total != static_cast<long long>(all.size()))
       throw std::invalid_argument("mpi::scatter: the ranks' parts do not add up to the values scattered");
-    MPI_Scatterv(all.data(), counts.data(), offsets.data(), MPI_DOUBLE, local.data(), n, MPI_DOUBLE, 0,
+    MPI_Scatterv(all.data(), parts.counts.data(), parts.offsets.data(), MPI_DOUBLE, local.data(), n, MPI_DOUBLE, 0,
                  MPI_COMM_WORLD);
     return;
   }
