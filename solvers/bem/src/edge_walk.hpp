@@ -36,22 +36,25 @@ void walk_edges(std::size_t rows, const Grid2D& whole, std::array<double, 2> e, 
                 std::vector<EdgeCrackCheck>& checks) {
   const long ny = static_cast<long>(whole.ny);
   const double along_x = whole.dx() * e[0], along_y = whole.dy() * e[1], eps = 1e-12 * whole.dx();
-  // The four steps and how far each goes along ê.
+  // The four steps (rows, columns) and how far each goes along ê.
   const long steps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  double along[4];
+  for (int s = 0; s < 4; ++s)
+    along[s] = static_cast<double>(steps[s][0]) * along_x + static_cast<double>(steps[s][1]) * along_y;
   for (std::size_t i = 0; i < rows; ++i) {
     const MapRow row = row_at(static_cast<long>(i));
+    const MapRow above = row_at(static_cast<long>(i) + 1), below = row_at(static_cast<long>(i) - 1);
     for (long j = 0; j < ny; ++j) {
       const int id = row.label[j];
       if (id < 0) continue;
       EdgeCrackCheck& c = checks[static_cast<std::size_t>(id)];
-      for (const auto& step : steps) {
-        const MapRow other = step[0] == 0 ? row : row_at(static_cast<long>(i) + step[0]);
-        const long jn = ((j + step[1]) % ny + ny) % ny;
+      for (int s = 0; s < 4; ++s) {
+        const MapRow& other = steps[s][0] > 0 ? above : steps[s][0] < 0 ? below : row;
+        const long jn = ((j + steps[s][1]) % ny + ny) % ny;
         if (other.label[jn] == id) continue;  // inside the same micro-contact: no border
-        const double along = static_cast<double>(step[0]) * along_x + static_cast<double>(step[1]) * along_y;
-        if (along < -eps)  // the neighbour lies behind: trailing edge (a)
+        if (along[s] < -eps)  // the neighbour lies behind: trailing edge (a)
           c.trailing_tension = std::max({c.trailing_tension, row.first[j], other.first[jn]});
-        else if (along > eps)  // ahead: leading edge (b)
+        else if (along[s] > eps)  // ahead: leading edge (b)
           c.leading_compression = std::min({c.leading_compression, row.third[j], other.third[jn]});
       }
     }
