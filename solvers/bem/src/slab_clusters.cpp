@@ -258,21 +258,34 @@ std::vector<ContactCluster> join_pieces(const std::vector<double>& all, const Gr
 
 }  // namespace
 
-SlabContactMap label_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
-                                   Connectivity connectivity) {
-  std::vector<std::pair<long, long>> steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  if (connectivity == Connectivity::Eight) steps.insert(steps.end(), {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}});
-  Labelled mine = label_rows(rows, first_row, whole, steps);
+namespace {
+// This rank's pieces (label_rows), gathered and joined on rank 0: the whole
+// map's clusters there (empty elsewhere), and with `cluster_of_piece` every
+// piece's index among them (collective).
+std::vector<ContactCluster> gather_and_join(Labelled& mine, const Grid2D& whole,
+                                            const std::vector<std::pair<long, long>>& steps,
+                                            std::vector<double>& cluster_of_piece) {
   const long long total = mpi::sum(static_cast<long long>(mine.message.size()));
   std::vector<double> all(mpi::is_root() ? static_cast<std::size_t>(total) : 0);
   mpi::gather(mine.message, all);
   mine.message = std::vector<double>();
+  return mpi::is_root() ? join_pieces(all, whole, steps, cluster_of_piece) : std::vector<ContactCluster>{};
+}
+
+std::vector<std::pair<long, long>> neighbour_steps(Connectivity connectivity) {
+  std::vector<std::pair<long, long>> steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  if (connectivity == Connectivity::Eight) steps.insert(steps.end(), {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}});
+  return steps;
+}
+}  // namespace
+
+SlabContactMap label_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
+                                   Connectivity connectivity) {
+  const auto steps = neighbour_steps(connectivity);
+  Labelled mine = label_rows(rows, first_row, whole, steps);
   SlabContactMap map;
   std::vector<double> cluster_of_piece;  // rank 0's: every piece's cluster in the sorted order, pieces in rank order
-  if (mpi::is_root()) {
-    map.clusters = join_pieces(all, whole, steps, cluster_of_piece);
-    all = std::vector<double>();
-  }
+  map.clusters = gather_and_join(mine, whole, steps, cluster_of_piece);
   // Each rank's pieces' clusters, and its points labelled with them.
   std::vector<double> own(mine.pieces);
   mpi::scatter(cluster_of_piece, own);
@@ -287,7 +300,11 @@ SlabContactMap label_clusters_slab(const RealField& rows, std::size_t first_row,
 
 std::vector<ContactCluster> find_clusters_slab(const RealField& rows, std::size_t first_row, const Grid2D& whole,
                                                Connectivity connectivity) {
-  return label_clusters_slab(rows, first_row, whole, connectivity).clusters;
+  const auto steps = neighbour_steps(connectivity);
+  Labelled mine = label_rows(rows, first_row, whole, steps);
+  mine.label = std::vector<std::int32_t>();  // no labels asked for
+  std::vector<double> unused;
+  return gather_and_join(mine, whole, steps, unused);
 }
 
 }  // namespace wearscale::bem
