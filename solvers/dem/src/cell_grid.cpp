@@ -21,9 +21,12 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
       double mn = 0.0, mx = 0.0;
       if (n > 0) {
         mn = mx = x[0][a];
-        for (const auto& xi : x) {
-          mn = std::min(mn, xi[a]);
-          mx = std::max(mx, xi[a]);
+        // On the threads that moved the particles last (their positions
+        // are in those cores' caches).
+#pragma omp parallel for schedule(static) reduction(min : mn) reduction(max : mx) num_threads(threads) if (threads > 1)
+        for (std::size_t k = 0; k < n; ++k) {
+          mn = std::min(mn, x[k][a]);
+          mx = std::max(mx, x[k][a]);
         }
       }
       lo[a] = mn;
