@@ -57,27 +57,27 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
 
   const std::size_t ncell = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]) *
                             static_cast<std::size_t>(cells_[2]);
-  head_.assign(ncell, none);
-  next_.resize(n);
+  cell_.resize(n);
+  order_.resize(n);
   auto coordinate = [&](const Vec3& xi, int a) {
     const int c = static_cast<int>(std::floor((xi[a] - lo[a]) / size[a]));
     return std::clamp(c, 0, cells_[static_cast<std::size_t>(a)] - 1);
   };
-  // Each particle's cell (over the threads, kept in next_ until it is
-  // linked), then inserted in reverse so that each cell's list runs in
-  // increasing index.
+  // Each particle's cell (over the threads), then the particles sorted by
+  // cell, in increasing index within a cell (a counting sort): a cell's
+  // particles are one run of order_, read front to back by the search.
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t k = 0; k < n; ++k)
-    next_[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
+    cell_[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
+  start_.assign(ncell + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) ++start_[cell_[k] + 1];
+  for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  for (std::size_t k = 0; k < n; ++k) order_[start_[cell_[k]]++] = static_cast<std::uint32_t>(k);
+  for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];  // each cursor ended at the next cell's start
+  start_[0] = 0;
   const std::size_t layer_cells = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]);
-  layer_start_.assign(static_cast<std::size_t>(cells_[2]) + 1, 0);
-  for (std::size_t k = n; k-- > 0;) {
-    const std::size_t c = next_[k];
-    next_[k] = head_[c];
-    head_[c] = static_cast<std::uint32_t>(k);
-    ++layer_start_[c / layer_cells + 1];
-  }
-  for (std::size_t l = 1; l < layer_start_.size(); ++l) layer_start_[l] += layer_start_[l - 1];
+  layer_start_.resize(static_cast<std::size_t>(cells_[2]) + 1);
+  for (std::size_t l = 0; l < layer_start_.size(); ++l) layer_start_[l] = start_[l * layer_cells];
 }
 
 std::pair<int, int> CellGrid::layer_range(int part, int parts) const {

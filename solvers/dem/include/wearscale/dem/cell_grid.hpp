@@ -48,7 +48,6 @@ class CellGrid {
   std::pair<int, int> layer_range(int part, int parts) const;
 
  private:
-  static constexpr std::uint32_t none = 0xffffffffu;
   std::size_t flat(int cx, int cy, int cz) const {
     return static_cast<std::size_t>(cx) +
            static_cast<std::size_t>(cells_[0]) *
@@ -65,7 +64,9 @@ class CellGrid {
   bool half_stencil_ = true;
   PeriodicImages images_;
   std::array<Vec3, PeriodicImages::max_count> shift_{};
-  std::vector<std::uint32_t> head_, next_;
+  // The particles sorted by cell: cell c's are order_[start_[c] .. start_[c + 1]).
+  std::vector<std::uint32_t> start_, order_;
+  std::vector<std::uint32_t> cell_;  // each particle's cell, while sorting
   std::vector<std::size_t> layer_start_;  // particles in the layers below each layer, then all
 };
 
@@ -81,26 +82,30 @@ void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_
       for (int cy = 0; cy < cells_[1]; ++cy)
         for (int cx = 0; cx < cells_[0]; ++cx) {
           const std::size_t home = flat(cx, cy, cz);
-          if (head_[home] == none) continue;
+          const std::uint32_t home_begin = start_[home], home_end = start_[home + 1];
+          if (home_begin == home_end) continue;
           // The home cell's stencil cells and the images they are met
           // through, once for all its particles.
-          std::uint32_t cell[13];
+          std::uint32_t begin[13], end[13];
           std::uint8_t image[13];
           int m = 0;
           for (const auto& o : stencil) {
             std::array<int, 3> c{}, s{};
             if (!step(0, cx, o[0], c[0], s[0]) || !step(1, cy, o[1], c[1], s[1]) || !step(2, cz, o[2], c[2], s[2]))
               continue;
-            cell[m] = static_cast<std::uint32_t>(flat(c[0], c[1], c[2]));
-            if (head_[cell[m]] == none) continue;
+            const std::size_t cell = flat(c[0], c[1], c[2]);
+            begin[m] = start_[cell];
+            end[m] = start_[cell + 1];
+            if (begin[m] == end[m]) continue;
             image[m++] = images_.index(s[0], s[1], s[2]);
           }
-          for (std::uint32_t i = head_[home]; i != none; i = next_[i]) {
+          for (std::uint32_t a = home_begin; a < home_end; ++a) {
+            const std::uint32_t i = order_[a];
             const Vec3 xi = x[i];
-            for (std::uint32_t j = next_[i]; j != none; j = next_[j]) visit(i, j, zero, x[j] - xi);
+            for (std::uint32_t b = a + 1; b < home_end; ++b) visit(i, order_[b], zero, x[order_[b]] - xi);
             for (int o = 0; o < m; ++o) {
               const Vec3 xs = shift_[image[o]] - xi;
-              for (std::uint32_t j = head_[cell[o]]; j != none; j = next_[j]) visit(i, j, image[o], x[j] + xs);
+              for (std::uint32_t b = begin[o]; b < end[o]; ++b) visit(i, order_[b], image[o], x[order_[b]] + xs);
             }
           }
         }
@@ -110,7 +115,8 @@ void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_
     for (int cy = 0; cy < cells_[1]; ++cy)
       for (int cx = 0; cx < cells_[0]; ++cx) {
         const std::size_t home = flat(cx, cy, cz);
-        for (std::uint32_t i = head_[home]; i != none; i = next_[i]) {
+        for (std::uint32_t a = start_[home]; a < start_[home + 1]; ++a) {
+          const std::uint32_t i = order_[a];
           const Vec3 xi = x[i];
           std::array<int, 3> c{}, s{};
           for (int oz = -span_[2]; oz <= span_[2]; ++oz) {
@@ -121,7 +127,9 @@ void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_
                 if (!step(0, cx, ox, c[0], s[0])) continue;
                 const std::uint8_t sh = images_.index(s[0], s[1], s[2]);
                 const Vec3 xs = shift_[sh] - xi;
-                for (std::uint32_t j = head_[flat(c[0], c[1], c[2])]; j != none; j = next_[j]) {
+                const std::size_t cell = flat(c[0], c[1], c[2]);
+                for (std::uint32_t b = start_[cell]; b < start_[cell + 1]; ++b) {
+                  const std::uint32_t j = order_[b];
                   if (j < i || (j == i && sh <= zero)) continue;  // the same pair from its other end
                   visit(i, j, sh, x[j] + xs);
                 }
