@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ranges>
 
 namespace wearscale::dem {
 
@@ -75,17 +76,19 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
   for (std::size_t k = 0; k < n; ++k) order_[start_[cell_[k]]++] = static_cast<std::uint32_t>(k);
   for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];  // each cursor ended at the next cell's start
   start_[0] = 0;
-  const std::size_t layer_cells = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]);
-  layer_start_.resize(static_cast<std::size_t>(cells_[2]) + 1);
-  for (std::size_t l = 0; l < layer_start_.size(); ++l) layer_start_[l] = start_[l * layer_cells];
 }
 
 std::pair<int, int> CellGrid::layer_range(int part, int parts) const {
+  // Layer l's particles start at start_[l × (cells a layer)] (z is the slowest index).
+  const std::size_t layer_cells = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]);
   auto begin = [&](int t) {
     if (t <= 0) return 0;
     if (t >= parts) return cells_[2];
-    const std::size_t share = layer_start_.back() * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
-    return static_cast<int>(std::lower_bound(layer_start_.begin(), layer_start_.end() - 1, share) - layer_start_.begin());
+    const std::size_t share = start_.back() * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
+    // The layer past the last starts at n ≥ share: the point is always a layer.
+    return *std::ranges::partition_point(std::views::iota(0, cells_[2] + 1), [&](int l) {
+      return start_[static_cast<std::size_t>(l) * layer_cells] < share;
+    });
   };
   return {begin(part), begin(part + 1)};
 }

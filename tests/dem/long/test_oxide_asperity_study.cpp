@@ -2,11 +2,12 @@
 // × 75 nm³, d0 = 1.5 nm (309 165 particles), a 5 nm SiO2 layer on HCP
 // Si, a loose SiO2 cylinder of 50 nm, a rigid SiO2 plate at 100 MPa. Label
 // long; slid 150 nm at 50 m/s instead of the case's 10 m/s to shorten the run
-// (§7.2.2: no effect of v), 122 783 steps: 11 900 s of CPU. What Fig. 9.26 shows: the cylinder rolls, grows
-// by taking layer particles, and reaches the Si, leaving a trench. Its spec
-// run to its end through the CLI (6 Dec, 2 h of two cores): the body rolls
-// (θR/travel = 1.007) but picks up 0.3 % of itself, leaves 0.06 nm of trench
-// and does not reach the Si, so the last four lines fail (docs/dem.md).
+// (§7.2.2: no effect of v), 122 783 steps: 11 900 s of CPU. What Fig. 9.26
+// shows: the cylinder rolls, grows by taking layer particles, and reaches
+// the Si, leaving a trench. Its spec run to its end through the CLI (6 Dec,
+// 2 h of two cores): the body rolls (θR/travel = 1.007) but picks up 0.3 %
+// of itself, leaves 0.06 nm of trench and does not reach the Si, so the
+// last four lines fail (docs/dem.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>

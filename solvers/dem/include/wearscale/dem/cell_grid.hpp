@@ -67,7 +67,6 @@ class CellGrid {
   // The particles sorted by cell: cell c's are order_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_, order_;
   std::vector<std::uint32_t> cell_;  // each particle's cell, while sorting
-  std::vector<std::size_t> layer_start_;  // particles in the layers below each layer, then all
 };
 
 template <class Visit>
