@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ranges>
 
 namespace wearscale::dem {
 
@@ -85,10 +84,10 @@ std::pair<int, int> CellGrid::layer_range(int part, int parts) const {
     if (t <= 0) return 0;
     if (t >= parts) return cells_[2];
     const std::size_t share = start_.back() * static_cast<std::size_t>(t) / static_cast<std::size_t>(parts);
-    // The layer past the last starts at n ≥ share: the point is always a layer.
-    return *std::ranges::partition_point(std::views::iota(0, cells_[2] + 1), [&](int l) {
-      return start_[static_cast<std::size_t>(l) * layer_cells] < share;
-    });
+    // The first layer starting at or past the share; the layer past the last starts at n ≥ share.
+    int l = 0;
+    while (start_[static_cast<std::size_t>(l) * layer_cells] < share) ++l;
+    return l;
   };
   return {begin(part), begin(part + 1)};
 }
