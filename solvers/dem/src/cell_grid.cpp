@@ -75,6 +75,33 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
   for (std::size_t k = 0; k < n; ++k) order_[start_[cell_[k]]++] = static_cast<std::uint32_t>(k);
   for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];  // each cursor ended at the next cell's start
   start_[0] = 0;
+  // The positions in slot order, in single precision: a cell's and a row's
+  // particles side by side.
+  for (auto& axis : sorted_) {
+    axis.resize(n + 3);  // vectors of four may read past the last slot
+    std::fill_n(axis.begin() + static_cast<std::ptrdiff_t>(n), 3, 0.0f);
+  }
+  float* sx = sorted_[0].data();
+  float* sy = sorted_[1].data();
+  float* sz = sorted_[2].data();
+  double largest = 0.0;  // |x| over every coordinate
+#pragma omp parallel for schedule(static) reduction(max : largest) num_threads(threads) if (threads > 1)
+  for (std::size_t b = 0; b < n; ++b) {
+    const Vec3& xb = x[order_[b]];
+    sx[b] = static_cast<float>(xb.x);
+    sy[b] = static_cast<float>(xb.y);
+    sz[b] = static_cast<float>(xb.z);
+    largest = std::max({largest, std::abs(xb.x), std::abs(xb.y), std::abs(xb.z)});
+  }
+  double shift = 0.0;
+  for (int k = 0; k < images_.count(); ++k) {
+    const Vec3& sk = shift_[static_cast<std::size_t>(k)];
+    shift = std::max({shift, std::abs(sk.x), std::abs(sk.y), std::abs(sk.z)});
+  }
+  // x_j and xs = shift − x_i (|xs| ≤ M + S) each rounded to float (2⁻²⁴
+  // relative), their float sum rounded (|sum| ≤ 2M + S) and the double sum's
+  // own rounding: below 2⁻²⁴ (4M + 2S) and a little; 2⁻²¹ (M + S) covers it.
+  sorted_error_ = std::ldexp(largest + shift, -21);
 }
 
 std::pair<int, int> CellGrid::layer_range(int part, int parts) const {

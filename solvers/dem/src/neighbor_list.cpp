@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <fmt/format.h>
 #include <omp.h>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "wearscale/core/errors.hpp"
 
@@ -13,6 +17,91 @@ namespace wearscale::dem {
 namespace {
 // From this many particles the list is built on all threads.
 constexpr std::size_t parallel_build = 8192;
+
+// The distance test of the slots b = first + k (k < len ≤ 64) of a run, in
+// single precision against the exact test |x_b + xs| < r_i + r_b + range:
+// bit k of `sure` where the float copies' errors cannot change its outcome
+// and it holds, of `maybe` where it holds or they might change it (a band a
+// few 2⁻²⁰ wide about the reach, where the exact test decides). `reach_lo`
+// and `reach_hi` are r_i + range less and plus twice those errors. A
+// non-finite position is a `maybe` (the exact test keeps it, for the step's
+// checks to catch). The arrays are in the grid's cell order and readable
+// three slots past their ends (padding).
+struct RunMasks {
+  std::uint64_t maybe = 0, sure = 0;
+};
+RunMasks distance_test(const float* __restrict sx, const float* __restrict sy, const float* __restrict sz,
+                       const float* __restrict sr, std::uint32_t first, std::uint32_t len, float xs_x, float xs_y,
+                       float xs_z, float reach_lo, float reach_hi) {
+  constexpr float narrow = 1.0f - 0x1p-18f, widen = 1.0f + 0x1p-18f;  // the float sums' own roundings, with room
+  RunMasks m;
+#if defined(__SSE2__)
+  // Four slots a vector, each comparison's signs taken as four mask bits.
+  const __m128 vx = _mm_set1_ps(xs_x), vy = _mm_set1_ps(xs_y), vz = _mm_set1_ps(xs_z);
+  const __m128 lo_i = _mm_set1_ps(reach_lo), hi_i = _mm_set1_ps(reach_hi);
+  const __m128 vn = _mm_set1_ps(narrow), vw = _mm_set1_ps(widen), zero = _mm_setzero_ps();
+  for (std::uint32_t k = 0; k < len; k += 4) {
+    const std::uint32_t b = first + k;
+    const __m128 dx = _mm_add_ps(_mm_loadu_ps(sx + b), vx), dy = _mm_add_ps(_mm_loadu_ps(sy + b), vy),
+                 dz = _mm_add_ps(_mm_loadu_ps(sz + b), vz);
+    const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+    const __m128 r = _mm_loadu_ps(sr + b);
+    const __m128 lo = _mm_max_ps(_mm_add_ps(lo_i, r), zero), hi = _mm_add_ps(hi_i, r);
+    const auto in = static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d2, _mm_mul_ps(_mm_mul_ps(lo, lo), vn))));
+    const auto out = static_cast<unsigned>(_mm_movemask_ps(_mm_cmpge_ps(d2, _mm_mul_ps(_mm_mul_ps(hi, hi), vw))));
+    m.sure |= static_cast<std::uint64_t>(in) << k;
+    m.maybe |= static_cast<std::uint64_t>(~out & 0xFu) << k;
+  }
+  const std::uint64_t valid = len >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << len) - 1;
+  m.sure &= valid;
+  m.maybe &= valid;
+#else
+  for (std::uint32_t k = 0; k < len; ++k) {
+    const std::uint32_t b = first + k;
+    const float dx = sx[b] + xs_x, dy = sy[b] + xs_y, dz = sz[b] + xs_z;
+    const float d2 = dx * dx + dy * dy + dz * dz;
+    const float lo = std::max(reach_lo + sr[b], 0.0f), hi = reach_hi + sr[b];
+    m.sure |= static_cast<std::uint64_t>(d2 < lo * lo * narrow) << k;
+    m.maybe |= static_cast<std::uint64_t>(!(d2 >= hi * hi * widen)) << k;
+  }
+#endif
+  return m;
+}
+
+// The candidates js[k] the float test kept (bits of m.maybe): those not sure
+// tested exactly, as one at a time (|x_j + xs| < r_i + r_j + range), none of
+// home particle i's own wall; the pairs appended to the home stream (nb,
+// sh) when j ≥ i, else to the other pairs as (j, i, the mirrored image).
+// The work is per kept candidate, the branches on the masks' bits. The
+// counts are locals here: a byte store may alias any memory.
+template <class Pair>
+void append_kept(std::uint32_t i, std::uint8_t image, std::uint8_t mirrored, const Vec3& xs, double range,
+                 const std::uint32_t* __restrict js, RunMasks m, const Vec3* __restrict x,
+                 const double* __restrict radius, const std::int16_t* __restrict wall, std::uint32_t* __restrict nb,
+                 std::uint8_t* __restrict sh, Pair* __restrict other, std::size_t& pairs_io, std::size_t& others_io) {
+  std::size_t pairs = pairs_io, others = others_io;
+  const double ri = radius[i];
+  const std::int16_t wi = wall[i];
+  const bool rigid = wi != no_wall;  // rigid within a wall: its own particles are skipped
+  for (std::uint64_t kept = m.maybe; kept != 0; kept &= kept - 1) {
+    const int k = std::countr_zero(kept);
+    const std::uint32_t j = js[k];
+    if (!((m.sure >> k) & 1)) {
+      const Vec3 d = x[j] + xs;
+      const double reach_ij = ri + radius[j] + range;
+      if (dot(d, d) >= reach_ij * reach_ij) continue;
+    }
+    if (rigid && wall[j] == wi) continue;
+    if (i <= j) {  // i is the home particle: its visits come together
+      nb[pairs] = j;
+      sh[pairs++] = image;
+    } else {
+      other[others++] = {j, i, mirrored};
+    }
+  }
+  pairs_io = pairs;
+  others_io = others;
+}
 
 // Spare capacity of the history array (untouched pages, so not resident):
 // the next builds' histories move within it instead of into a new array.
@@ -62,7 +151,16 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   const int threads = n >= parallel_build ? std::max(1, omp_get_max_threads()) : 1;
   grid_.build(p.position, box, cut, threads);
   images_ = grid_.images();
-  search(p, range, threads);
+  // The radii in the grid's cell order, beside its positions, in single
+  // precision (the search's first test; its rounding is allowed for).
+  max_radius_ = max_radius;
+  sorted_radius_.resize(n + 3);
+  const std::span<const std::uint32_t> order = grid_.order();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t b = 0; b < n; ++b)
+    sorted_radius_[b] = static_cast<float>(p.radius[order[b]]);
+  std::fill_n(sorted_radius_.begin() + static_cast<std::ptrdiff_t>(n), 3, 0.0f);  // padding
+  search(p, box, range, threads);
   sort_rows(threads);
   if (carry)
     carry_history(p, box, threads);
@@ -94,46 +192,83 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
 // its other pairs to the back of theirs (atomic cursors when threads share
 // a row). The rows are sorted afterwards, so the list is the same bits on
 // any thread count.
-void NeighborList::search(const Particles& p, double range, int threads) {
+void NeighborList::search(const Particles& p, const Box& box, double range, int threads) {
   const std::size_t n = p.size();
   threads = std::max(1, std::min(threads, grid_.layers()));
   streams_.resize(static_cast<std::size_t>(threads));
-  for (auto& st : streams_) {
-    st.neighbor.clear();
-    st.shift.clear();
-    st.home.clear();
-    st.other.clear();
-  }
   // Split by the threads the team has (fewer than asked in a nested region).
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num(), team = omp_get_num_threads();
     Stream& out = streams_[static_cast<std::size_t>(t)];
+    out.pairs = out.homes = out.others = 0;
     const auto [z_begin, z_end] = grid_.layer_range(t, team);  // about equal particle counts
     // Room for a dense packing's pairs from the start: a vector that grows
     // leaves its old blocks resident in the thread's heap (untouched room
-    // is not).
+    // is not). The vectors' sizes only grow, to the most a build wrote.
     const std::size_t share = n / static_cast<std::size_t>(team) + 64;
     out.neighbor.reserve(8 * share);
     out.shift.reserve(8 * share);
     out.home.reserve(share);
     out.other.reserve(2 * share);
-    grid_.for_each_candidate(
-        p.position,
-        [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3& d) {
-          if (p.wall[i] != no_wall && p.wall[i] == p.wall[j]) return;  // rigid within a wall
-          const double reach_ij = p.radius[i] + p.radius[j] + range;
-          if (dot(d, d) >= reach_ij * reach_ij) return;
-          if (i <= j) {  // i is the home particle: its visits come together
-            out.neighbor.push_back(j);
-            out.shift.push_back(s);
-            if (out.home.empty() || out.home.back().i != i) out.home.push_back({i, 0});
-            ++out.home.back().pairs;
-          } else {
-            out.other.push_back({j, i, images_.mirrored(s)});
-          }
-        },
-        z_begin, z_end);
+    auto room = [](auto& v, std::size_t size) {
+      if (v.size() < size) v.resize(size);
+    };
+    const double* radius = p.radius.data();
+    const std::int16_t* wall = p.wall.data();
+    // Candidates js[0..len) of home particle i met through image s at
+    // x_j + xs, the bits of m.maybe kept, those not in m.sure tested exactly.
+    auto take = [&](std::uint32_t i, std::uint8_t s, const Vec3& xs, const std::uint32_t* js, RunMasks m,
+                    std::size_t len) {
+      room(out.neighbor, out.pairs + len);
+      room(out.shift, out.pairs + len);
+      room(out.other, out.others + len);
+      const std::size_t pairs_before = out.pairs;
+      append_kept(i, s, images_.mirrored(s), xs, range, js, m, p.position.data(), radius, wall,
+                  out.neighbor.data(), out.shift.data(), out.other.data(), out.pairs, out.others);
+      if (out.pairs == pairs_before) return;
+      if (out.homes == 0 || out.home[out.homes - 1].i != i) {
+        room(out.home, out.homes + 1);
+        out.home[out.homes++] = {i, 0};
+      }
+      out.home[out.homes - 1].pairs += static_cast<std::uint32_t>(out.pairs - pairs_before);
+    };
+    if (grid_.half_stencil()) {
+      // The distance test over a run of slots as arrays (the positions and
+      // radii in cell order), then the kept ones appended.
+      const std::uint32_t* order = grid_.order().data();
+      const float* sx = grid_.sorted_positions(0).data();
+      const float* sy = grid_.sorted_positions(1).data();
+      const float* sz = grid_.sorted_positions(2).data();
+      const float* sr = sorted_radius_.data();
+      // The float copies' errors: the separation's per component (√3 of it
+      // on its length, here 2), the radii's rounding to nearest.
+      const double slack = 2.0 * grid_.sorted_position_error() + std::ldexp(max_radius_, -22);
+      constexpr std::uint32_t most = 64;  // slots a mask holds
+      grid_.for_each_run(
+          p.position,
+          [&](std::uint32_t i, std::uint8_t s, const Vec3& xs, std::uint32_t begin, std::uint32_t end) {
+            const auto reach_lo = static_cast<float>((radius[i] + range - slack) * (1.0 - 0x1p-20));
+            const auto reach_hi = static_cast<float>((radius[i] + range + slack) * (1.0 + 0x1p-20));
+            for (std::uint32_t b0 = begin; b0 < end; b0 += most) {
+              const std::uint32_t len = std::min(most, end - b0);
+              const RunMasks m = distance_test(sx, sy, sz, sr, b0, len, static_cast<float>(xs.x),
+                                               static_cast<float>(xs.y), static_cast<float>(xs.z), reach_lo, reach_hi);
+              take(i, s, xs, order + b0, m, len);
+            }
+          },
+          z_begin, z_end);
+    } else {  // a thin periodic cell: the candidates one by one, tested exactly
+      std::array<Vec3, PeriodicImages::max_count> shift{};
+      images_.vectors(box, shift.data());
+      grid_.for_each_candidate(
+          p.position,
+          [&](std::uint32_t i, std::uint32_t j, std::uint8_t s, const Vec3&) {
+            // d = x_j + xs as the grid's; the exact test decides
+            take(i, s, shift[s] - p.position[i], &j, RunMasks{1, 0}, 1);
+          },
+          z_begin, z_end);
+    }
   }
   // The rows' counts: each home particle in one stream; the other pairs from any.
   count_.assign(n + 1, 0);
@@ -144,10 +279,10 @@ void NeighborList::search(const Particles& p, double range, int threads) {
   {
 #pragma omp for schedule(static, 1)
     for (std::ptrdiff_t t = 0; t < streams; ++t)
-      for (const auto& h : streams_[static_cast<std::size_t>(t)].home) count[h.i] += h.pairs;
+      for (const auto& h : streams_[static_cast<std::size_t>(t)].homes_found()) count[h.i] += h.pairs;
 #pragma omp for schedule(static, 1)
     for (std::ptrdiff_t t = 0; t < streams; ++t)
-      for (const auto& c : streams_[static_cast<std::size_t>(t)].other) {
+      for (const auto& c : streams_[static_cast<std::size_t>(t)].others_found()) {
         if (shared)
           std::atomic_ref<std::uint32_t>(count[c.i]).fetch_add(1, std::memory_order_relaxed);
         else
@@ -167,12 +302,12 @@ void NeighborList::search(const Particles& p, double range, int threads) {
   for (std::ptrdiff_t t = 0; t < streams; ++t) {
     const Stream& in = streams_[static_cast<std::size_t>(t)];
     std::size_t from = 0;
-    for (const auto& h : in.home) {
+    for (const auto& h : in.homes_found()) {
       std::copy_n(in.neighbor.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, nb + offset_[h.i]);
       std::copy_n(in.shift.begin() + static_cast<std::ptrdiff_t>(from), h.pairs, sh + offset_[h.i]);
       from += h.pairs;
     }
-    for (const auto& c : in.other) {
+    for (const auto& c : in.others_found()) {
       const std::uint32_t k =
           (shared ? std::atomic_ref<std::uint32_t>(count[c.i]).fetch_sub(1, std::memory_order_relaxed) : count[c.i]--) -
           1;

@@ -39,6 +39,30 @@ class CellGrid {
   /// last): threads may split the search by layers.
   template <class Visit>
   void for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_begin = 0, int z_end = -1) const;
+  /// The same candidates as runs of the sorted particles, when the grid
+  /// walks the half stencil (half_stencil()): visit(i, image, xs, begin, end)
+  /// for the particles in slots [begin, end) of the cell order (order(),
+  /// sorted_positions()) met from i through `image`, with d = x_j + xs for
+  /// each (xs = shift(image) − x_i). The cells of a stencil row along x that
+  /// follow one another in memory make one run (the home cell's particles
+  /// after i and the next cell along x, the three cells of each of the four
+  /// other rows), so a particle's candidates come in about five runs, its
+  /// own cell's first; a search can test them as arrays.
+  template <class VisitRun>
+  void for_each_run(std::span<const Vec3> x, VisitRun&& visit, int z_begin = 0, int z_end = -1) const;
+  /// Cells no smaller than the cutoff and at least three along each periodic
+  /// axis: each pair is met once, in runs (for_each_run).
+  bool half_stencil() const { return half_stencil_; }
+  /// The particles in cell order: slot b holds particle order()[b].
+  std::span<const std::uint32_t> order() const { return order_; }
+  /// The positions given to build() (wrapped) in cell order, one array per
+  /// axis, in single precision: a first, coarse test of a run's candidates
+  /// (4 bytes a coordinate; the exact test reads the positions themselves).
+  std::span<const float> sorted_positions(int axis) const { return sorted_[static_cast<std::size_t>(axis)]; }
+  /// A bound on the error of a component of x_j + xs computed in single
+  /// precision from sorted_positions() and xs rounded to float, against the
+  /// same sum in double (xs = shift − x_i of any pair).
+  double sorted_position_error() const { return sorted_error_; }
   /// Cell layers along z.
   int layers() const { return cells_[2]; }
   /// The layers [begin, end) of part `part` of `parts` runs of consecutive
@@ -67,47 +91,73 @@ class CellGrid {
   // The particles sorted by cell: cell c's are order_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_, order_;
   std::vector<std::uint32_t> cell_;  // each particle's cell, while sorting
+  std::array<std::vector<float>, 3> sorted_;  // x, y, z by slot
+  double sorted_error_ = 0.0;
 };
+
+template <class VisitRun>
+void CellGrid::for_each_run(std::span<const Vec3> x, VisitRun&& visit, int z_begin, int z_end) const {
+  const std::uint8_t zero = images_.zero();
+  if (z_end < 0) z_end = cells_[2];
+  // The half stencil by rows along x, (dy, dz) and the cells dx of each:
+  // the home cell's row takes the cell after it, the others three cells.
+  static constexpr int rows[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+  const std::uint32_t* order = order_.data();
+  struct Run {
+    std::uint32_t begin, end;
+    std::uint8_t image;
+  };
+  for (int cz = z_begin; cz < z_end; ++cz)
+    for (int cy = 0; cy < cells_[1]; ++cy)
+      for (int cx = 0; cx < cells_[0]; ++cx) {
+        const std::size_t home = flat(cx, cy, cz);
+        const std::uint32_t home_begin = start_[home], home_end = start_[home + 1];
+        if (home_begin == home_end) continue;
+        // The stencil's runs, once for all the home cell's particles: cells
+        // next to each other along x and met through the same image join.
+        // runs[0] begins with the home cell (from the particle after i).
+        Run runs[1 + 13];
+        int m = 1;
+        runs[0] = {home_begin, home_end, zero};
+        for (const auto& row : rows) {
+          int cyr = 0, czr = 0, syr = 0, szr = 0;
+          if (!step(1, cy, row[0], cyr, syr) || !step(2, cz, row[1], czr, szr)) continue;
+          const bool home_row = row[0] == 0 && row[1] == 0;
+          int last_cell = home_row ? cx : -2, last_shift = 0;
+          for (int dx = home_row ? 1 : -1; dx <= 1; ++dx) {
+            int c = 0, sxr = 0;
+            if (!step(0, cx, dx, c, sxr)) continue;
+            const std::size_t cell = flat(c, cyr, czr);
+            Run& open = runs[m - 1];
+            if (c == last_cell + 1 && sxr == last_shift && open.end == start_[cell]) {
+              open.end = start_[cell + 1];  // the next cell in memory, through the same image
+            } else {
+              runs[m++] = {start_[cell], start_[cell + 1], images_.index(sxr, syr, szr)};
+            }
+            last_cell = c;
+            last_shift = sxr;
+          }
+        }
+        for (std::uint32_t a = home_begin; a < home_end; ++a) {
+          const std::uint32_t i = order[a];
+          const Vec3 xi = x[i];
+          visit(i, zero, -xi, a + 1, runs[0].end);
+          for (int o = 1; o < m; ++o)
+            if (runs[o].begin != runs[o].end) visit(i, runs[o].image, shift_[runs[o].image] - xi, runs[o].begin, runs[o].end);
+        }
+      }
+}
 
 template <class Visit>
 void CellGrid::for_each_candidate(std::span<const Vec3> x, Visit&& visit, int z_begin, int z_end) const {
   const std::uint8_t zero = images_.zero();
   if (z_end < 0) z_end = cells_[2];
   if (half_stencil_) {
-    static constexpr int stencil[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0},  {-1, -1, 1},
-                                           {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1},  {1, 0, 1},
-                                           {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
-    for (int cz = z_begin; cz < z_end; ++cz)
-      for (int cy = 0; cy < cells_[1]; ++cy)
-        for (int cx = 0; cx < cells_[0]; ++cx) {
-          const std::size_t home = flat(cx, cy, cz);
-          const std::uint32_t home_begin = start_[home], home_end = start_[home + 1];
-          if (home_begin == home_end) continue;
-          // The home cell's stencil cells and the images they are met
-          // through, once for all its particles.
-          std::uint32_t begin[13], end[13];
-          std::uint8_t image[13];
-          int m = 0;
-          for (const auto& o : stencil) {
-            std::array<int, 3> c{}, s{};
-            if (!step(0, cx, o[0], c[0], s[0]) || !step(1, cy, o[1], c[1], s[1]) || !step(2, cz, o[2], c[2], s[2]))
-              continue;
-            const std::size_t cell = flat(c[0], c[1], c[2]);
-            begin[m] = start_[cell];
-            end[m] = start_[cell + 1];
-            if (begin[m] == end[m]) continue;
-            image[m++] = images_.index(s[0], s[1], s[2]);
-          }
-          for (std::uint32_t a = home_begin; a < home_end; ++a) {
-            const std::uint32_t i = order_[a];
-            const Vec3 xi = x[i];
-            for (std::uint32_t b = a + 1; b < home_end; ++b) visit(i, order_[b], zero, x[order_[b]] - xi);
-            for (int o = 0; o < m; ++o) {
-              const Vec3 xs = shift_[image[o]] - xi;
-              for (std::uint32_t b = begin[o]; b < end[o]; ++b) visit(i, order_[b], image[o], x[order_[b]] + xs);
-            }
-          }
-        }
+    for_each_run(
+        x, [&](std::uint32_t i, std::uint8_t image, const Vec3& xs, std::uint32_t begin, std::uint32_t end) {
+          for (std::uint32_t b = begin; b < end; ++b) visit(i, order_[b], image, x[order_[b]] + xs);
+        },
+        z_begin, z_end);
     return;
   }
   for (int cz = z_begin; cz < z_end; ++cz)

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -89,7 +90,7 @@ class NeighborList {
                int history_size = 3);
 
  private:
-  void search(const Particles& p, double range, int threads);
+  void search(const Particles& p, const Box& box, double range, int threads);
   void sort_rows(int threads);
   void carry_history(const Particles& p, const Box& box, int threads);
 
@@ -109,6 +110,9 @@ class NeighborList {
   // each row's count, then its cursor. A stream on cache lines of its own:
   // its vectors' ends move at every pair its thread finds, and two streams
   // sharing a line would bounce it between the cores at each of them.
+  // The search appends through plain pointers into room made for a whole
+  // run of candidates, so a stream's vectors are as long as the most a build
+  // needed and its counts say how much of them this build found.
   struct alignas(64) Stream {
     std::vector<std::uint32_t> neighbor;  // the home particles' pairs with higher indices, in order
     std::vector<std::uint8_t> shift;
@@ -121,10 +125,15 @@ class NeighborList {
       std::uint8_t shift;
     };
     std::vector<Pair> other;  // pairs under a lower index than the home particle's
+    std::size_t pairs = 0, homes = 0, others = 0;
+    std::span<const Home> homes_found() const { return {home.data(), homes}; }
+    std::span<const Pair> others_found() const { return {other.data(), others}; }
   };
   std::vector<Stream> streams_;
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
+  std::vector<float> sorted_radius_;  // the radii in the grid's cell order
+  double max_radius_ = 0.0;
   std::vector<Vec3> built_at_;
   std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
   int history_size_ = 3;
