@@ -204,26 +204,63 @@ double wall_acceleration(const Wall& w) {
 }
 }  // namespace
 
-void Simulation::integrate_first_half(bool clear_forces) {
+// One pass over the particles for the kicks between two force evaluations
+// (6.1): the second half-kick of the step whose forces are in, then the
+// first half-kick and drift of the next. Run back to back (the run's steps,
+// when nothing observes between them) they read each particle's force,
+// velocity and masses once and the threads meet once; each part computes
+// the bits it computes alone.
+void Simulation::kick(bool second, bool first, bool clear_forces) {
   auto& p = particles_;
   const std::size_t n = p.size();
   const double half = 0.5 * dt_;
   double max_v2 = 0.0;
-  const bool virial = clear_forces && track_virial_;
-#pragma omp parallel for schedule(static) reduction(max : max_v2) if (n >= parallel_threshold)
+  bool finite = true;
+  const bool clear = first && clear_forces;
+  const bool virial = clear && track_virial_;
+#pragma omp parallel for schedule(static) reduction(max : max_v2) reduction(&& : finite) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 f = p.force[i], tq = p.torque[i];
-    if (clear_forces) {
+    if (clear) {
       p.force[i] = {};
       p.torque[i] = {};
       if (virial) virial_[i] = {};
     }
     if (p.wall[i] != no_wall) continue;
-    p.velocity[i] += (half * p.inv_mass[i]) * f;
-    p.position[i] += dt_ * p.velocity[i];
-    p.omega[i] += (half * p.inv_inertia[i]) * tq;
-    max_v2 = std::max(max_v2, dot(p.velocity[i], p.velocity[i]));
+    Vec3 v = p.velocity[i], w = p.omega[i];
+    if (second) {
+      v += (half * p.inv_mass[i]) * f;
+      w += (half * p.inv_inertia[i]) * tq;
+      finite = finite && std::isfinite(v.x + v.y + v.z);
+    }
+    if (first) {
+      v += (half * p.inv_mass[i]) * f;
+      p.position[i] += dt_ * v;
+      w += (half * p.inv_inertia[i]) * tq;
+      max_v2 = std::max(max_v2, dot(v, v));
+    }
+    p.velocity[i] = v;
+    p.omega[i] = w;
   }
+  if (second) {
+    for (auto& w : walls_)
+      if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
+    if (!finite) {
+      std::size_t bad = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (p.wall[i] == no_wall && !std::isfinite(p.velocity[i].x + p.velocity[i].y + p.velocity[i].z)) {
+          bad = i;
+          break;
+        }
+      throw NumericalError("dem", step_ + 1, fmt::format("velocity of particle {}", p.id[bad]),
+                           fmt::format("became NaN or infinite; the time step {:.3g} is likely too large (0.1 Δt_c "
+                                       "= √(2m/k_N)/10 = {:.3g} here)",
+                                       dt_, stable_time_step()));
+    }
+    ++step_;
+    time_ += dt_;
+  }
+  if (!first) return;
   for (auto& w : walls_) {
     if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
     const Vec3 dx = dt_ * w.velocity;
@@ -245,65 +282,64 @@ void Simulation::integrate_first_half(bool clear_forces) {
   }
 }
 
-void Simulation::integrate_second_half() {
-  auto& p = particles_;
-  const std::size_t n = p.size();
-  const double half = 0.5 * dt_;
-  bool finite = true;
-#pragma omp parallel for schedule(static) reduction(&& : finite) if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.wall[i] != no_wall) continue;
-    p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
-    p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
-    finite = finite && std::isfinite(p.velocity[i].x + p.velocity[i].y + p.velocity[i].z);
-  }
-  for (auto& w : walls_)
-    if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
-  if (!finite) {
-    std::size_t bad = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (!std::isfinite(p.velocity[i].x + p.velocity[i].y + p.velocity[i].z)) {
-        bad = i;
-        break;
-      }
-    throw NumericalError("dem", step_ + 1, fmt::format("velocity of particle {}", p.id[bad]),
-                         fmt::format("became NaN or infinite; the time step {:.3g} is likely too large (0.1 Δt_c "
-                                     "= √(2m/k_N)/10 = {:.3g} here)",
-                                     dt_, stable_time_step()));
-  }
+bool Simulation::clears_forces_in_kick() const {
+  // The half-kick zeroes what it has read, unless the virials are yet to be sized.
+  return !track_virial_ || virial_.size() == particles_.size();
 }
 
-void Simulation::step() {
+void Simulation::start_step() {
   if (!(dt_ > 0.0)) throw InputError("DEM: set a time step before running");
   if (!forces_valid_) forces(false);
   forces_valid_ = false;  // from here until the step's forces are in
-  // The half-kick zeroes what it has read, unless the virials are yet to be sized.
-  const bool clear = !track_virial_ || virial_.size() == particles_.size();
-  integrate_first_half(clear);
+}
+
+void Simulation::finish_step_forces() {
   ++since_build_;
   if ((settings_.every > 0 && since_build_ >= settings_.every) ||
       (settings_.check_displacement && neighbors_.moved_beyond_half_skin(particles_)))
     rebuild();
-  forces(true, clear);
-  integrate_second_half();
-  ++step_;
-  time_ += dt_;
+  forces(true, clears_forces_in_kick());
+}
+
+void Simulation::step() {
+  start_step();
+  kick(false, true, clears_forces_in_kick());
+  finish_step_forces();
+  kick(true, false, false);
 }
 
 void Simulation::run(long steps, const std::function<void(long)>& observe, StopInside inside) {
   const auto start = std::chrono::steady_clock::now();
   const bool within = inside == StopInside::Yes;
+  // SIGINT/SIGTERM: at the start of a call, so that a study running in
+  // chunks stops between them (where it checkpoints); unless the caller
+  // says so, also every 1024 steps and, in a call that has run for more
+  // than 5 s, at the next step or the one after (1024 steps of 500 000
+  // particles take minutes). A chunk of a checkpointing driver runs to its
+  // end: stopped inside it, the run would lose everything since its last
+  // checkpoint.
+  auto stops_before = [&](long s) {
+    return s == 0 || (within && (s % 1024 == 0 || (interrupt_requested() &&
+                                                   std::chrono::steady_clock::now() - start > std::chrono::seconds(5))));
+  };
+  // Between two steps that nobody observes, the second half-kick of one and
+  // the first of the next are one pass (kick); the call's last step ends
+  // with its own, so the state between calls is the same.
+  bool kicked = false;  // this step's first half-kick is done
   for (long s = 0; s < steps; ++s) {
-    // SIGINT/SIGTERM: at the start of a call, so that a study running in
-    // chunks stops between them (where it checkpoints); unless the caller
-    // says so, also every 1024 steps and, in a call that has run for more
-    // than 5 s, at the next step (1024 steps of 500 000 particles take
-    // minutes). A chunk of a checkpointing driver runs to its end: stopped
-    // inside it, the run would lose everything since its last checkpoint.
-    if (s == 0 || (within && (s % 1024 == 0 || (interrupt_requested() &&
-                                                 std::chrono::steady_clock::now() - start > std::chrono::seconds(5)))))
-      throw_if_interrupted(fmt::format("dem (step {})", step_));
-    step();
+    if (!kicked) {
+      if (stops_before(s)) throw_if_interrupted(fmt::format("dem (step {})", step_));
+      start_step();
+      kick(false, true, clears_forces_in_kick());
+    }
+    finish_step_forces();
+    kicked = !observe && s + 1 < steps && !stops_before(s + 1);
+    if (kicked) {
+      start_step();  // the next one's: its forces are in
+      kick(true, true, clears_forces_in_kick());
+    } else {
+      kick(true, false, false);
+    }
     if (observe) observe(step_);
   }
 }

@@ -120,10 +120,17 @@ class Simulation {
   /// cleared: the forces, torques and virials are already zero.
   void forces(bool advance, bool cleared = false);
   void prepare_pairs();
-  /// clear_forces: zero the forces, torques and (tracked, sized) virials once
-  /// read (the step's next force evaluation then needs no pass of its own).
-  void integrate_first_half(bool clear_forces = false);
-  void integrate_second_half();
+  /// The kicks of velocity Verlet (6.1) in one pass: `second`, the second
+  /// half-kick of the step whose forces are in (the step then counts as
+  /// done); `first`, the next step's first half-kick and drift, which with
+  /// clear_forces zeroes the forces, torques and (tracked, sized) virials
+  /// once read (its force evaluation then needs no pass of its own).
+  void kick(bool second, bool first, bool clear_forces);
+  bool clears_forces_in_kick() const;
+  /// A step up to its first half-kick: the forces it starts from.
+  void start_step();
+  /// After the first half-kick: the list rebuilt if due, the step's forces.
+  void finish_step_forces();
   void rebuild();
 
   Particles particles_;
