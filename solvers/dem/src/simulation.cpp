@@ -319,8 +319,10 @@ void Simulation::run(long steps, const std::function<void(long)>& observe, StopI
   // end: stopped inside it, the run would lose everything since its last
   // checkpoint.
   auto stops_before = [&](long s) {
-    return s == 0 || (within && (s % 1024 == 0 || (interrupt_requested() &&
-                                                   std::chrono::steady_clock::now() - start > std::chrono::seconds(5))));
+    if (s == 0) return true;
+    if (!within) return false;
+    return s % 1024 == 0 ||
+           (interrupt_requested() && std::chrono::steady_clock::now() - start > std::chrono::seconds(5));
   };
   // Between two steps that nobody observes, the second half-kick of one and
   // the first of the next are one pass (kick); the call's last step ends

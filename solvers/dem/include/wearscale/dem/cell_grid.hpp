@@ -142,8 +142,10 @@ void CellGrid::for_each_run(std::span<const Vec3> x, VisitRun&& visit, int z_beg
           const std::uint32_t i = order[a];
           const Vec3 xi = x[i];
           visit(i, zero, -xi, a + 1, runs[0].end);
-          for (int o = 1; o < m; ++o)
-            if (runs[o].begin != runs[o].end) visit(i, runs[o].image, shift_[runs[o].image] - xi, runs[o].begin, runs[o].end);
+          for (int o = 1; o < m; ++o) {
+            const Run& run = runs[o];
+            if (run.begin != run.end) visit(i, run.image, shift_[run.image] - xi, run.begin, run.end);
+          }
         }
       }
 }
