@@ -75,8 +75,13 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
   for (std::size_t k = 0; k < n; ++k) order_[start_[cell_[k]]++] = static_cast<std::uint32_t>(k);
   for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];  // each cursor ended at the next cell's start
   start_[0] = 0;
-  // The positions in slot order, in single precision: a cell's and a row's
-  // particles side by side.
+  if (half_stencil_) sort_positions(x, threads);
+}
+
+// The positions in slot order, in single precision, for for_each_run's
+// callers: a cell's and a row's particles side by side.
+void CellGrid::sort_positions(std::span<const Vec3> x, int threads) {
+  const std::size_t n = x.size();
   for (auto& axis : sorted_) {
     axis.resize(n + 3);  // vectors of four may read past the last slot
     std::fill_n(axis.begin() + static_cast<std::ptrdiff_t>(n), 3, 0.0f);

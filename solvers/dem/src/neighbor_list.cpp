@@ -151,16 +151,7 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
   const int threads = n >= parallel_build ? std::max(1, omp_get_max_threads()) : 1;
   grid_.build(p.position, box, cut, threads);
   images_ = grid_.images();
-  // The radii in the grid's cell order, beside its positions, in single
-  // precision (the search's first test; its rounding is allowed for).
-  max_radius_ = max_radius;
-  sorted_radius_.resize(n + 3);
-  const std::span<const std::uint32_t> order = grid_.order();
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::size_t b = 0; b < n; ++b)
-    sorted_radius_[b] = static_cast<float>(p.radius[order[b]]);
-  std::fill_n(sorted_radius_.begin() + static_cast<std::ptrdiff_t>(n), 3, 0.0f);  // padding
-  search(p, box, range, threads);
+  search(p, box, range, max_radius, threads);
   sort_rows(threads);
   if (carry)
     carry_history(p, box, threads);
@@ -192,8 +183,17 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
 // its other pairs to the back of theirs (atomic cursors when threads share
 // a row). The rows are sorted afterwards, so the list is the same bits on
 // any thread count.
-void NeighborList::search(const Particles& p, const Box& box, double range, int threads) {
+void NeighborList::search(const Particles& p, const Box& box, double range, double max_radius, int threads) {
   const std::size_t n = p.size();
+  if (grid_.half_stencil()) {
+    // The radii in the grid's cell order, beside its positions, in single
+    // precision (the runs' first test; its rounding is allowed for).
+    sorted_radius_.resize(n + 3);
+    const std::span<const std::uint32_t> order = grid_.order();
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::size_t b = 0; b < n; ++b) sorted_radius_[b] = static_cast<float>(p.radius[order[b]]);
+    std::fill_n(sorted_radius_.begin() + static_cast<std::ptrdiff_t>(n), 3, 0.0f);  // padding
+  }
   threads = std::max(1, std::min(threads, grid_.layers()));
   streams_.resize(static_cast<std::size_t>(threads));
   // Split by the threads the team has (fewer than asked in a nested region).
@@ -243,7 +243,7 @@ void NeighborList::search(const Particles& p, const Box& box, double range, int 
       const float* sr = sorted_radius_.data();
       // The float copies' errors: the separation's per component (√3 of it
       // on its length, here 2), the radii's rounding to nearest.
-      const double slack = 2.0 * grid_.sorted_position_error() + std::ldexp(max_radius_, -22);
+      const double slack = 2.0 * grid_.sorted_position_error() + std::ldexp(max_radius, -22);
       constexpr std::uint32_t most = 64;  // slots a mask holds
       grid_.for_each_run(
           p.position,

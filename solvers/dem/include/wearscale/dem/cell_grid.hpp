@@ -56,8 +56,9 @@ class CellGrid {
   /// The particles in cell order: slot b holds particle order()[b].
   std::span<const std::uint32_t> order() const { return order_; }
   /// The positions given to build() (wrapped) in cell order, one array per
-  /// axis, in single precision: a first, coarse test of a run's candidates
-  /// (4 bytes a coordinate; the exact test reads the positions themselves).
+  /// axis, in single precision (kept for half-stencil grids only): a first,
+  /// coarse test of a run's candidates (4 bytes a coordinate; the exact test
+  /// reads the positions themselves).
   std::span<const float> sorted_positions(int axis) const { return sorted_[static_cast<std::size_t>(axis)]; }
   /// A bound on the error of a component of x_j + xs computed in single
   /// precision from sorted_positions() and xs rounded to float, against the
@@ -81,6 +82,8 @@ class CellGrid {
   // image shift it crosses; false when it leaves an open axis or goes beyond
   // the images' reach.
   bool step(std::size_t a, int c, int offset, int& cell, int& shift) const;
+  // sorted_ and sorted_error_ from the positions, once order_ is known.
+  void sort_positions(std::span<const Vec3> x, int threads);
 
   std::array<int, 3> cells_{1, 1, 1};
   std::array<int, 3> span_{1, 1, 1};  // stencil half-width in cells

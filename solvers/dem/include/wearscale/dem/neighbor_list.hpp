@@ -90,7 +90,7 @@ class NeighborList {
                int history_size = 3);
 
  private:
-  void search(const Particles& p, const Box& box, double range, int threads);
+  void search(const Particles& p, const Box& box, double range, double max_radius, int threads);
   void sort_rows(int threads);
   void carry_history(const Particles& p, const Box& box, int threads);
 
@@ -132,8 +132,7 @@ class NeighborList {
   std::vector<Stream> streams_;
   std::vector<std::uint32_t> count_;
   CellGrid grid_;
-  std::vector<float> sorted_radius_;  // the radii in the grid's cell order
-  double max_radius_ = 0.0;
+  std::vector<float> sorted_radius_;  // the radii in the grid's cell order (half-stencil grids)
   std::vector<Vec3> built_at_;
   std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
   int history_size_ = 3;
