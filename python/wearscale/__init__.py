@@ -19,7 +19,7 @@ import os as _os
 # How idle OpenMP threads wait: spin briefly, then sleep, as the CLI's do (docs/dem.md, "Waiting
 # threads"). libgomp reads this once, when the compiled module below loads it; a user's
 # OMP_WAIT_POLICY or GOMP_SPINCOUNT wins, and a libgomp already loaded by another module keeps its own.
-_WAITING_SPIN_COUNT = "1000"  # wearscale::waiting_spin_count
+_WAITING_SPIN_COUNT = "3000"  # wearscale::waiting_spin_count
 if "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ:
     _os.environ["GOMP_SPINCOUNT"] = _WAITING_SPIN_COUNT
 

@@ -6,9 +6,11 @@
 // function, unless the user set OMP_WAIT_POLICY or GOMP_SPINCOUNT, sets
 // GOMP_SPINCOUNT to `waiting_spin_count` and starts the program again with it
 // (once, before anything else; the child processes it starts inherit it).
-// A thread then spins briefly (the gaps between a time step's regions are
-// microseconds) and sleeps if nothing comes: quick on dedicated cores, no
-// collapse on shared ones (docs/dem.md, "#23 V").
+// A thread then spins briefly and sleeps if nothing comes: quick on dedicated
+// cores, no collapse on shared ones (docs/dem.md, "#23 V"). 3000 spins (about
+// 33 µs of `pause` on the 2-vCPU KVM host of docs/dem.md "#23 IX") outlast
+// the few-µs gaps between a time step's regions and most of the threads'
+// imbalance at its barriers; a thread that sleeps there costs ~50 µs to wake.
 // The Python package does the same from its __init__.py.
 #include <string>
 
@@ -16,10 +18,10 @@ namespace wearscale {
 
 /// Spins of a waiting thread before it sleeps, as wearscale's programs set it
 /// (GOMP_SPINCOUNT's text).
-inline constexpr char waiting_spin_count[] = "1000";
+inline constexpr char waiting_spin_count[] = "3000";
 
-/// What this process's waiting threads do and who chose it, e.g. "spin 1000
-/// times, then sleep (GOMP_SPINCOUNT=1000, set by wearscale)".
+/// What this process's waiting threads do and who chose it, e.g. "spin 3000
+/// times, then sleep (GOMP_SPINCOUNT=3000, set by wearscale)".
 std::string thread_waiting();
 
 namespace detail {
