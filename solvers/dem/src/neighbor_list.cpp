@@ -368,20 +368,31 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
     for (std::size_t a = 0; a < 3; ++a) d[a] = p.image[i][a] - built_image_[i][a];
     return d;
   };
+  // Which particles were wrapped since (few, in ten steps): the pairs of
+  // two that were not keep their images' indices without a look at either.
+  rewrapped_.resize(n);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& now = p.image[i];
+    const auto& then = built_image_[i];
+    rewrapped_[i] = now[0] != then[0] || now[1] != then[1] || now[2] != then[2];
+  }
   const bool same_images = old_images_ == images_;
   std::array<Vec3, PeriodicImages::max_count> shift_vector{};
   if (touching_only_) images_.vectors(box, shift_vector.data());
   // visit(k, b) for each pair k of row i whose contact was old pair b, in
   // increasing k.
   auto match_row = [&](std::size_t i, auto&& visit) {
-    const std::array<int, 3> di = wrapped(i);
+    const bool i_wrapped = rewrapped_[i] != 0;
+    const std::array<int, 3> di = i_wrapped ? wrapped(i) : std::array<int, 3>{};
     std::uint32_t a = old_offset_[i];
     const std::uint32_t a_end = old_offset_[i + 1];
     for (std::uint32_t k = offset_[i]; k < offset_[i + 1] && a < a_end; ++k) {
       const std::uint32_t j = neighbor_[k];
       while (a < a_end && old_neighbor_[a] < j) ++a;
-      const std::array<int, 3> dj = wrapped(j);
-      const bool moved = di != dj;
+      if (a == a_end || old_neighbor_[a] != j) continue;  // a fresh pair
+      const bool moved = (i_wrapped || rewrapped_[j] != 0) && di != wrapped(j);
+      const std::array<int, 3> dj = moved ? wrapped(j) : di;
       // The old contacts of (i, j), one per image; the one that became this image.
       for (std::uint32_t b = a; b < a_end && old_neighbor_[b] == j; ++b) {
         int now = old_shift_[b];
@@ -443,6 +454,7 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   for (std::size_t t = 1; t < chunks; ++t) saved += drift(n * t / chunks);
   if (saved > new_pairs / 8 + 1024) chunks = 1;  // the list changed a lot: one chunk, nothing saved
   double* h = history_.data();
+  moves_up_.resize(n);
   struct Chunk {
     std::size_t r0, r1, lo_begin, lo_end, hi_begin, hi_end;
     std::vector<double> lo, hi;  // the saved windows
@@ -468,14 +480,22 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
       if (b >= c.hi_begin) return c.hi.data() + stride * (b - c.hi_begin);
       return h + stride * b;
     };
-    // Towards lower slots, in increasing order.
-    for (std::size_t i = r0; i < r1; ++i)
+    // Towards lower slots, in increasing order; the rows left with work
+    // for the second pass marked.
+    for (std::size_t i = r0; i < r1; ++i) {
+      std::uint32_t matched = 0;
+      bool up = false;
       match_row(i, [&](std::uint32_t k, std::uint32_t b) {
+        ++matched;
         if (b > k) std::copy_n(source(b), stride, h + stride * k);
+        up = up || b < k;
       });
+      moves_up_[i] = up || matched != no[i + 1] - no[i];
+    }
     // Towards higher slots and the fresh pairs' zeros, in decreasing order.
     std::vector<std::int64_t> from;
     for (std::size_t i = r1; i-- > r0;) {
+      if (moves_up_[i] == 0) continue;
       const std::uint32_t k0 = no[i], k1 = no[i + 1];
       from.assign(k1 - k0, -1);
       match_row(i, [&](std::uint32_t k, std::uint32_t b) { from[k - k0] = b; });

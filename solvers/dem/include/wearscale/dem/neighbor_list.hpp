@@ -135,6 +135,8 @@ class NeighborList {
   std::vector<float> sorted_radius_;  // the radii in the grid's cell order (half-stencil grids)
   std::vector<Vec3> built_at_;
   std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
+  std::vector<std::uint8_t> rewrapped_;  // carry-over: 1 where p.image moved since the last build
+  std::vector<std::uint8_t> moves_up_;   // carry-over: 1 for a row with fresh pairs or histories to move up
   int history_size_ = 3;
   double half_skin_ = 0.0;
   long builds_ = 0;
