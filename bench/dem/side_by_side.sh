@@ -17,6 +17,10 @@
 set -u
 bench=${1:-build/bench/bench_dem}
 rounds=${2:-2}
+# Seconds each wearscale benchmark runs at least (Google Benchmark's default,
+# 0.5 s, is a tenth of the LAMMPS deck's 32 000-sphere run: a host's dip of a
+# second or two then moves wearscale's figure alone).
+min_time=${WEARSCALE_BENCH_MIN_TIME:-3}
 decks=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -36,7 +40,7 @@ ours() {  # filter [threads]: one line per benchmark, each in its own process (t
   # (an upper bound of the wall-clock speed with a core per thread) and all threads' CPU over it
   local f
   for f in $(echo "$1" | tr '|' ' '); do
-    OMP_NUM_THREADS=${2:-1} "$bench" --benchmark_filter="$f" 2>/dev/null |
+    OMP_NUM_THREADS=${2:-1} "$bench" --benchmark_filter="$f" --benchmark_min_time="$min_time" 2>/dev/null |
       awk -v load="$(load)" -v t="${2:-1}" '/Mpsteps_per_cpu_s/ { c = w = b = m = u = r = 0
         for (i = 1; i <= NF; ++i) { split($i, a, "=")
           if (a[1] == "Mpsteps_per_cpu_s") c = a[2]; if (a[1] == "Mpsteps_per_wall_s") w = a[2]
@@ -49,8 +53,8 @@ ours() {  # filter [threads]: one line per benchmark, each in its own process (t
 }
 two_alone() {  # filter: two one-thread runs at once, their summed wall-clock figures
   local f=$1
-  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" > "$work/a" 2>/dev/null &
-  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" > "$work/b" 2>/dev/null
+  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" --benchmark_min_time="$min_time" > "$work/a" 2>/dev/null &
+  OMP_NUM_THREADS=1 "$bench" --benchmark_filter="$f" --benchmark_min_time="$min_time" > "$work/b" 2>/dev/null
   wait
   cat "$work/a" "$work/b" | awk -v f="$f" -v load="$(load)" '/Mpsteps_per_wall_s/ { for (i = 1; i <= NF; ++i) {
       split($i, a, "="); if (a[1] == "Mpsteps_per_wall_s") w += a[2] } }
