@@ -266,8 +266,12 @@ double Config::number(std::string_view key, const Range& range, units::Dimension
   const toml::node* n = find(state_->root, full);
   if (n == nullptr) throw error(key, "missing required number", allowed);
   double v = 0.0;
-  if (n->is_integer() || n->is_floating_point()) {
-    v = n->value<double>().value();
+  if (auto f = n->as_floating_point()) {
+    v = f->get();
+  } else if (auto i = n->as_integer()) {
+    // The nearest double: an integer beyond 2^53 is not exact as a number
+    // (toml++'s lossless value<double>() gives none), and the range decides.
+    v = static_cast<double>(i->get());
   } else if (auto s = n->as_string()) {
     units::Quantity q{};
     try {

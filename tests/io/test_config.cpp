@@ -65,6 +65,17 @@ TEST(Config, OutOfRangeNamesFileLineKeyValueAndRange) {
   EXPECT_THAT(msg, HasSubstr("[2, 64]"));
 }
 
+TEST(Config, AnIntegerTooLargeForADoubleIsANumberTheRangeJudges) {
+  // 2^53 + 1 and beyond have no exact double: read as the nearest one (the
+  // fuzzer found k_r = 499999999999999999 ending the program instead).
+  const auto c = Config::from_string("k_r = 499999999999999999\nk_s = 9007199254740993\n", "big.toml");
+  EXPECT_DOUBLE_EQ(c.number("k_s"), 9007199254740992.0);
+  const auto msg = input_error_of([&] { c.number("k_r", Range::closed(1, 1e6)); });
+  EXPECT_THAT(msg, HasSubstr("big.toml:1"));
+  EXPECT_THAT(msg, HasSubstr("k_r"));
+  EXPECT_THAT(msg, HasSubstr("out of range"));
+}
+
 TEST(Config, WrongTypeIsReportedWithTheTypeFound) {
   const auto c = Config::from_string(kCase, "demo.toml");
   EXPECT_THAT(input_error_of([&] { c.integer("scale.macro.size"); }), HasSubstr("expected an integer, got a float"));
