@@ -391,8 +391,9 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
       const std::uint32_t j = neighbor_[k];
       while (a < a_end && old_neighbor_[a] < j) ++a;
       if (a == a_end || old_neighbor_[a] != j) continue;  // a fresh pair
-      const bool moved = (i_wrapped || rewrapped_[j] != 0) && di != wrapped(j);
-      const std::array<int, 3> dj = moved ? wrapped(j) : di;
+      const bool either_wrapped = i_wrapped || rewrapped_[j] != 0;
+      const std::array<int, 3> dj = either_wrapped ? wrapped(j) : di;
+      const bool moved = either_wrapped && di != dj;
       // The old contacts of (i, j), one per image; the one that became this image.
       for (std::uint32_t b = a; b < a_end && old_neighbor_[b] == j; ++b) {
         int now = old_shift_[b];
