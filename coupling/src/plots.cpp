@@ -1,8 +1,12 @@
 #include "wearscale/coupling/plots.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -17,22 +21,47 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
+#include "wearscale/core/program_path.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/coupling/palette.hpp"
 
+extern "C" char** environ;
+
 namespace wearscale::coupling {
 
-
-bool plotting_available() {
-  static const bool available = [] {
-    const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-    if (!found) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
+namespace {
+// gnuplot on the PATH, looked up once (empty: none).
+const std::filesystem::path& gnuplot_program() {
+  static const std::filesystem::path program = [] {
+    auto found = find_on_path("gnuplot");
+    if (found.empty()) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
     return found;
   }();
-  return available;
+  return program;
 }
 
-namespace {
+// gnuplot drawing `script`, its output and messages to /dev/null; the wait
+// status, or -1 if it could not be started. Started directly (not through
+// std::system, which ignores SIGINT in the caller while it waits): a Ctrl-C,
+// which gnuplot answers by exiting with status 1, reaches this run as well.
+int run_gnuplot(const std::filesystem::path& script) {
+  posix_spawn_file_actions_t files;
+  if (posix_spawn_file_actions_init(&files) != 0) return -1;
+  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&files, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  const std::string program = gnuplot_program().string(), script_name = script.string();
+  char* argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script_name.c_str()), nullptr};
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, program.c_str(), &files, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return status;
+}
+
 // A whole PNG: the signature, and the IEND chunk closing it (gnuplot exits 0
 // even when the disk filled up under it, leaving a truncated image).
 bool complete_png(const std::filesystem::path& file) {
@@ -48,6 +77,8 @@ bool complete_png(const std::filesystem::path& file) {
 std::string data(const std::filesystem::path& csv) { return OutputSet::readable(csv).string(); }
 }  // namespace
 
+bool plotting_available() { return !gnuplot_program().empty(); }
+
 std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png, int width,
                                                  int height) {
   if (!plotting_available()) return std::nullopt;
@@ -59,7 +90,7 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
   } catch (const OutputError& e) {
     throw OutputError(fmt::format("{}; {} was not drawn", e.what(), png.string()));
   }
-  const int status = std::system(fmt::format("gnuplot '{}' 2>/dev/null", script_file.string()).c_str());
+  const int status = run_gnuplot(script_file);
   std::error_code ec;
   std::filesystem::remove(script_file, ec);
   if (status != 0) {
@@ -68,7 +99,8 @@ std::optional<std::filesystem::path> render_plot(const std::string& script, cons
     // stops too, so that it is not taken as complete without its plot.
     if ((status != -1 && WIFSIGNALED(status)) || interrupt_requested())
       throw Interrupted(fmt::format("gnuplot was stopped by a signal while drawing {}", png.string()));
-    log::warn("gnuplot could not draw {} (exit status {})", png.string(), status);
+    log::warn("gnuplot could not draw {} ({})", png.string(),
+              status == -1 ? "it could not be started" : fmt::format("exit status {}", WEXITSTATUS(status)));
     return std::nullopt;
   }
   if (!complete_png(partial)) {  // gnuplot said yes, but the file system did not take it all

@@ -6,6 +6,7 @@
 
 #include "md_test_support.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/program_path.hpp"
 #include "wearscale/md/lammps_runner.hpp"
 
 using namespace wearscale;

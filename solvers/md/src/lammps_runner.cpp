@@ -20,6 +20,7 @@
 
 #include "wearscale/core/atomic_file.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/program_path.hpp"
 #include "wearscale/core/sha256.hpp"
 
 extern "C" char** environ;
@@ -159,19 +160,6 @@ long last_thermo_step(const fs::path& log) {
 }
 
 }  // namespace
-
-fs::path find_on_path(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return {};
-  std::stringstream ss(path);
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
-    if (dir.empty()) continue;
-    const fs::path candidate = fs::path(dir) / name;
-    if (is_executable(candidate)) return candidate;
-  }
-  return {};
-}
 
 fs::path find_lmp(const std::string& requested) {
   const std::string name = requested.empty() ? std::string("lmp") : requested;

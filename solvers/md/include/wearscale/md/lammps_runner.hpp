@@ -24,9 +24,6 @@ namespace wearscale::md {
 /// it is not found or not executable.
 std::filesystem::path find_lmp(const std::string& requested = {});
 
-/// An executable of that name on PATH, or empty.
-std::filesystem::path find_on_path(const std::string& name);
-
 /// The LAMMPS version line of `lmp -h`, e.g. "29 Sep 2021 - Update 2".
 /// Remembered per executable (path, size, modification time) in
 /// `<cache_dir>/lmp-version/`, so a cached study never starts lmp.
