@@ -157,3 +157,42 @@ TEST(NeighborList, WithTheLammpsTransferOnlyTouchingHistoriesMoveOnAnyThreadCoun
   const Built one = random_rebuilds(1, true);
   EXPECT_EQ(random_rebuilds(2, true), one);
 }
+
+namespace {
+// Two spheres touching across the periodic face x = 0 of a 10³ box, the
+// history of their contact set to 7, then the list rebuilt after `moved_i`
+// and `moved_j` periods along x were added to each (positions unchanged once
+// wrapped, images changed by as much): the history left on the pair.
+double history_after_wraps(int moved_i, int moved_j) {
+  Box box;
+  box.lo = {0.0, 0.0, 0.0};
+  box.hi = {10.0, 10.0, 10.0};
+  box.periodic = {true, true, true};
+  Particles p;
+  p.add({{0.2, 5.0, 5.0}, 0.5, 1.0, {}, 0, 0});
+  p.add({{9.21, 5.0, 5.0}, 0.5, 1.0, {}, 0, 0});
+  NeighborList list;
+  list.build(p, box, 0.0, 0.1, 3);
+  EXPECT_EQ(list.pairs(), 1u);
+  for (double& h : list.history()) h = 7.0;
+  const std::array<int, 2> moved{moved_i, moved_j};
+  for (std::size_t i = 0; i < 2; ++i) {
+    p.position[i].x += 10.0 * moved[i];
+    p.image[i][0] -= box.wrap(0, p.position[i].x);
+  }
+  list.build(p, box, 0.0, 0.1, 3);
+  EXPECT_EQ(list.pairs(), 1u);
+  return list.history().at(0);
+}
+}  // namespace
+
+// The list keeps each particle's image at the last build modulo 256 (3 bytes,
+// not 12); the wraps since are exact up to NeighborList::max_wraps − 1 = 127
+// periods either way (Simulation refuses more).
+TEST(NeighborList, AContactWhoseTwoSpheresWereWrappedTogetherKeepsItsHistoryUpTo127Periods) {
+  for (const int k : {1, -1, 100, 127, -127}) EXPECT_EQ(history_after_wraps(k, k), 7.0) << k << " periods";
+}
+
+TEST(NeighborList, ASphereWrappedAloneMeetsItsPartnerThroughAnotherImageAndStartsAfresh) {
+  for (const int k : {1, -1, 100, 127, -127}) EXPECT_EQ(history_after_wraps(0, k), 0.0) << k << " periods";
+}

@@ -98,3 +98,33 @@ TEST(SimulationRun, ARunIsTheSameBitsAsItsStepsOneByOneAndAsAnObservedRun) {
   EXPECT_GT(std::abs(by_steps.wall(1).displacement.z), 0.0);
   EXPECT_GT(by_steps.kinetic_energy(), 0.0);
 }
+
+// The neighbour list follows a particle's wraps between two builds up to
+// 127 periods of the box; one that went farther (it has missed every contact
+// on the way) is a numerical failure at the rebuild, not a silent mismatch.
+TEST(SimulationRun, AParticleThatCrossedTheBox128TimesBetweenTwoBuildsIsRefusedAtTheRebuild) {
+  for (const int periods : {127, 128}) {
+    auto sim = small_block();
+    sim.step();
+    ASSERT_TRUE(sim.box().periodic[0]);
+    auto& p = sim.particles();
+    const double lo = sim.box().lo.x, length = sim.box().length()[0];
+    const int inside = static_cast<int>(std::floor((p.position[0].x - lo) / length));  // the same place, wrapped
+    p.position[0].x -= inside * length;
+    p.image[0][0] += inside;
+    const int image = p.image[0][0];
+    p.position[0].x += periods * length;
+    // The next rebuild: at once when the list checks displacements, else within its interval.
+    if (periods < NeighborList::max_wraps) {
+      EXPECT_NO_THROW(sim.run(20));
+      EXPECT_NEAR(sim.particles().image[0][0], image + periods, 1) << "wrapped once more or less near a face";
+      continue;
+    }
+    try {
+      sim.run(20);
+      ADD_FAILURE() << "no error";
+    } catch (const NumericalError& e) {
+      EXPECT_NE(std::string(e.what()).find("128 periods"), std::string::npos) << e.what();
+    }
+  }
+}

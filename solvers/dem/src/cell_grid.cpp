@@ -57,7 +57,8 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
 
   const std::size_t ncell = static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]) *
                             static_cast<std::size_t>(cells_[2]);
-  cell_.resize(n);
+  if (scratch_.size() < n) scratch_.resize(n);
+  std::uint32_t* cell = scratch_.data();
   order_.resize(n);
   auto coordinate = [&](const Vec3& xi, int a) {
     const int c = static_cast<int>(std::floor((xi[a] - lo[a]) / size[a]));
@@ -68,11 +69,11 @@ void CellGrid::build(std::span<const Vec3> x, const Box& box, double cut, int th
   // particles are one run of order_, read front to back by the search.
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t k = 0; k < n; ++k)
-    cell_[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
+    cell[k] = static_cast<std::uint32_t>(flat(coordinate(x[k], 0), coordinate(x[k], 1), coordinate(x[k], 2)));
   start_.assign(ncell + 1, 0);
-  for (std::size_t k = 0; k < n; ++k) ++start_[cell_[k] + 1];
+  for (std::size_t k = 0; k < n; ++k) ++start_[cell[k] + 1];
   for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
-  for (std::size_t k = 0; k < n; ++k) order_[start_[cell_[k]]++] = static_cast<std::uint32_t>(k);
+  for (std::size_t k = 0; k < n; ++k) order_[start_[cell[k]]++] = static_cast<std::uint32_t>(k);
   for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];  // each cursor ended at the next cell's start
   start_[0] = 0;
   if (half_stencil_) sort_positions(x, threads);

@@ -108,6 +108,7 @@ void append_kept(std::uint32_t i, std::uint8_t image, std::uint8_t mirrored, con
 std::size_t with_slack(std::size_t doubles) { return doubles + doubles / 8 + 64; }
 }  // namespace
 
+
 void NeighborList::clear() {
   offset_.clear();
   neighbor_.clear();
@@ -168,7 +169,7 @@ void NeighborList::build(const Particles& p, const Box& box, double reach, doubl
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::size_t i = 0; i < n; ++i) {
     if (keep_positions_) built_at_[i] = p.position[i];
-    built_image_[i] = p.image[i];
+    built_image_[i] = image_low_bytes(p.image[i]);
   }
 }
 
@@ -271,8 +272,9 @@ void NeighborList::search(const Particles& p, const Box& box, double range, doub
     }
   }
   // The rows' counts: each home particle in one stream; the other pairs from any.
-  count_.assign(n + 1, 0);
-  std::uint32_t* count = count_.data();
+  auto& count_buffer = grid_.scratch();  // free once the grid is built
+  count_buffer.assign(n + 1, 0);
+  std::uint32_t* count = count_buffer.data();
   const bool shared = threads > 1;
   const auto streams = static_cast<std::ptrdiff_t>(streams_.size());
 #pragma omp parallel num_threads(threads)
@@ -295,7 +297,7 @@ void NeighborList::search(const Particles& p, const Box& box, double range, doub
   const std::size_t total = offset_[n];
   neighbor_.resize(total);
   shift_.resize(total);
-  std::copy(offset_.begin() + 1, offset_.end(), count_.begin());  // each row's back cursor
+  std::copy(offset_.begin() + 1, offset_.end(), count_buffer.begin());  // each row's back cursor
   std::uint32_t* nb = neighbor_.data();
   std::uint8_t* sh = shift_.data();
 #pragma omp parallel for schedule(static, 1) num_threads(threads)
@@ -365,17 +367,25 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   // last build, Δimage_j − Δimage_i.
   auto wrapped = [&](std::size_t i) {
     std::array<int, 3> d{};
-    for (std::size_t a = 0; a < 3; ++a) d[a] = p.image[i][a] - built_image_[i][a];
+    for (std::size_t a = 0; a < 3; ++a)  // modulo 256, then as a signed byte: |wraps| < max_wraps
+      d[a] = static_cast<std::int8_t>(static_cast<std::uint8_t>(static_cast<std::uint8_t>(p.image[i][a]) - built_image_[i][a]));
     return d;
   };
+  // The carry-over's two flags a particle, bytes in the grid's scratch
+  // (free after the search; ≥ n + 1 words): rewrapped[i], particle i was
+  // wrapped since the last build; moves_up[i], row i has fresh pairs or
+  // histories to move to higher slots.
+  auto& flag_buffer = grid_.scratch();
+  if (flag_buffer.size() * sizeof(std::uint32_t) < 2 * n) flag_buffer.resize((2 * n + 3) / 4);
+  std::uint8_t* const rewrapped = reinterpret_cast<std::uint8_t*>(flag_buffer.data());  // a byte view: allowed
+  std::uint8_t* const moves_up = rewrapped + n;
   // Which particles were wrapped since (few, in ten steps): the pairs of
   // two that were not keep their images' indices without a look at either.
-  rewrapped_.resize(n);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::size_t i = 0; i < n; ++i) {
-    const auto& now = p.image[i];
+    const auto now = image_low_bytes(p.image[i]);
     const auto& then = built_image_[i];
-    rewrapped_[i] = now[0] != then[0] || now[1] != then[1] || now[2] != then[2];
+    rewrapped[i] = now[0] != then[0] || now[1] != then[1] || now[2] != then[2];
   }
   const bool same_images = old_images_ == images_;
   std::array<Vec3, PeriodicImages::max_count> shift_vector{};
@@ -383,7 +393,7 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   // visit(k, b) for each pair k of row i whose contact was old pair b, in
   // increasing k.
   auto match_row = [&](std::size_t i, auto&& visit) {
-    const bool i_wrapped = rewrapped_[i] != 0;
+    const bool i_wrapped = rewrapped[i] != 0;
     const std::array<int, 3> di = i_wrapped ? wrapped(i) : std::array<int, 3>{};
     std::uint32_t a = old_offset_[i];
     const std::uint32_t a_end = old_offset_[i + 1];
@@ -391,7 +401,7 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
       const std::uint32_t j = neighbor_[k];
       while (a < a_end && old_neighbor_[a] < j) ++a;
       if (a == a_end || old_neighbor_[a] != j) continue;  // a fresh pair
-      const bool either_wrapped = i_wrapped || rewrapped_[j] != 0;
+      const bool either_wrapped = i_wrapped || rewrapped[j] != 0;
       const std::array<int, 3> dj = either_wrapped ? wrapped(j) : di;
       const bool moved = either_wrapped && di != dj;
       // The old contacts of (i, j), one per image; the one that became this image.
@@ -455,7 +465,6 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   for (std::size_t t = 1; t < chunks; ++t) saved += drift(n * t / chunks);
   if (saved > new_pairs / 8 + 1024) chunks = 1;  // the list changed a lot: one chunk, nothing saved
   double* h = history_.data();
-  moves_up_.resize(n);
   struct Chunk {
     std::size_t r0, r1, lo_begin, lo_end, hi_begin, hi_end;
     std::vector<double> lo, hi;  // the saved windows
@@ -491,12 +500,12 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
         if (b > k) std::copy_n(source(b), stride, h + stride * k);
         up = up || b < k;
       });
-      moves_up_[i] = up || matched != no[i + 1] - no[i];
+      moves_up[i] = up || matched != no[i + 1] - no[i];
     }
     // Towards higher slots and the fresh pairs' zeros, in decreasing order.
     std::vector<std::int64_t> from;
     for (std::size_t i = r1; i-- > r0;) {
-      if (moves_up_[i] == 0) continue;
+      if (moves_up[i] == 0) continue;
       const std::uint32_t k0 = no[i], k1 = no[i + 1];
       from.assign(k1 - k0, -1);
       match_row(i, [&](std::uint32_t k, std::uint32_t b) { from[k - k0] = b; });

@@ -89,9 +89,20 @@ void Simulation::throw_wrong_law() const {
 void Simulation::rebuild() {
   auto& p = particles_;
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static) if (n >= parallel_threshold)
+  int farthest = 0;  // the most periods a particle was wrapped by
+#pragma omp parallel for schedule(static) reduction(max : farthest) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a) p.image[i][static_cast<std::size_t>(a)] -= box_.wrap(a, p.position[i][a]);
+    for (int a = 0; a < 3; ++a) {
+      const int wraps = box_.wrap(a, p.position[i][a]);
+      p.image[i][static_cast<std::size_t>(a)] -= wraps;
+      farthest = std::max(farthest, std::abs(wraps));
+    }
+  if (farthest >= NeighborList::max_wraps)
+    throw NumericalError("dem", step_, "neighbour list",
+                         fmt::format("a particle crossed {} periods of the box since the last neighbour build (at most "
+                                     "{} allowed): it has missed its contacts on the way; rebuild the list more often "
+                                     "or lower the time step",
+                                     farthest, NeighborList::max_wraps - 1));
   neighbors_.build(p, box_, reach(), settings_.skin, law_->history_size());
   prepare_pairs();
   since_build_ = 0;

@@ -114,7 +114,8 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
     if (s >= images_.count())
       throw InputError(fmt::format("{}: the DEM neighbour list in '{}' names periodic image {} of {}", in.origin,
                                    prefix, s, images_.count()));
-  built_image_.assign(p.image.begin(), p.image.end());  // images change only at builds
+  built_image_.resize(particles);  // images change only at builds
+  for (std::size_t i = 0; i < particles; ++i) built_image_[i] = image_low_bytes(p.image[i]);
   half_skin_ = in.scalar(prefix + "half_skin");
   builds_ = static_cast<long>(in.scalar(prefix + "builds"));
   old_offset_.clear();

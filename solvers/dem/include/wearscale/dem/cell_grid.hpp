@@ -71,6 +71,11 @@ class CellGrid {
   /// one end, e.g. a substrate under empty space, splits where its particles
   /// are, not where its layers are).
   std::pair<int, int> layer_range(int part, int parts) const;
+  /// A buffer of at least one 32-bit word a particle that the grid needs
+  /// only inside build() (each particle's cell while sorting): the caller
+  /// may use it between builds, resized as it needs (the neighbour list's
+  /// row counts and carry-over flags: no array of its own for them).
+  std::vector<std::uint32_t>& scratch() { return scratch_; }
 
  private:
   std::size_t flat(int cx, int cy, int cz) const {
@@ -93,7 +98,7 @@ class CellGrid {
   std::array<Vec3, PeriodicImages::max_count> shift_{};
   // The particles sorted by cell: cell c's are order_[start_[c] .. start_[c + 1]).
   std::vector<std::uint32_t> start_, order_;
-  std::vector<std::uint32_t> cell_;  // each particle's cell, while sorting
+  std::vector<std::uint32_t> scratch_;  // each particle's cell, while sorting (scratch())
   std::array<std::vector<float>, 3> sorted_;  // x, y, z by slot
   double sorted_error_ = 0.0;
 };

@@ -43,11 +43,16 @@ class NeighborList {
   /// coordinates must be wrapped into the box, and p.image count the periods
   /// each particle was wrapped by. The history of contacts present before is
   /// kept: the same particles and the same image once the wraps since the
-  /// last build are undone. InputError when a periodic length is shorter than
+  /// last build are undone; a particle's image may change by less than
+  /// max_wraps periods a component between two builds (Simulation refuses
+  /// more: a particle that went that far in a build's interval has missed
+  /// its contacts anyway). InputError when a periodic length is shorter than
   /// the largest particle diameter (a particle would overlap itself).
   /// `history_size` doubles of history per pair (the contact law's); the
   /// histories are carried over only between builds of the same size.
   void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
+  /// The periods a particle may be wrapped by between two builds, exclusive.
+  static constexpr int max_wraps = 128;
   /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
   void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
   /// Keep the positions of the last build for moved_beyond_half_skin() (24
@@ -93,6 +98,10 @@ class NeighborList {
   void search(const Particles& p, const Box& box, double range, double max_radius, int threads);
   void sort_rows(int threads);
   void carry_history(const Particles& p, const Box& box, int threads);
+  static std::array<std::uint8_t, 3> image_low_bytes(const std::array<std::int32_t, 3>& image) {
+    return {static_cast<std::uint8_t>(image[0]), static_cast<std::uint8_t>(image[1]),
+            static_cast<std::uint8_t>(image[2])};
+  }
 
   std::vector<std::uint32_t> offset_, neighbor_;
   std::vector<std::uint8_t> shift_;
@@ -106,8 +115,9 @@ class NeighborList {
   // A row of the list (of the previous one) holds a neighbour through more
   // than one image: the carry-over then checks its moves' order.
   bool several_images_ = true, old_several_images_ = true;
-  // Scratch reused between builds: each thread's search results (search()),
-  // each row's count, then its cursor. A stream on cache lines of its own:
+  // Scratch reused between builds: each thread's search results (search());
+  // each row's count, then its cursor, and the carry-over's flags are in
+  // the grid's scratch(). A stream on cache lines of its own:
   // its vectors' ends move at every pair its thread finds, and two streams
   // sharing a line would bounce it between the cores at each of them.
   // The search appends through plain pointers into room made for a whole
@@ -130,13 +140,12 @@ class NeighborList {
     std::span<const Pair> others_found() const { return {other.data(), others}; }
   };
   std::vector<Stream> streams_;
-  std::vector<std::uint32_t> count_;
   CellGrid grid_;
   std::vector<float> sorted_radius_;  // the radii in the grid's cell order (half-stencil grids)
   std::vector<Vec3> built_at_;
-  std::vector<std::array<std::int32_t, 3>> built_image_;  // p.image at the last build
-  std::vector<std::uint8_t> rewrapped_;  // carry-over: 1 where p.image moved since the last build
-  std::vector<std::uint8_t> moves_up_;   // carry-over: 1 for a row with fresh pairs or histories to move up
+  // p.image at the last build modulo 256 (3 bytes, not 12): the wraps since
+  // then are the difference modulo 256, exact below max_wraps.
+  std::vector<std::array<std::uint8_t, 3>> built_image_;
   int history_size_ = 3;
   double half_skin_ = 0.0;
   long builds_ = 0;
