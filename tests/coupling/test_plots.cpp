@@ -58,7 +58,9 @@ TEST(Plots, ASignalToTheProcessGroupWhileGnuplotDrawsStopsTheRunWithoutThePlot) 
     std::filesystem::create_directories(dir);
     const auto ready = dir / "drawing", png = dir / "slow.png";
     // About 9 s of drawing on a 2-vCPU host; the signal comes as it begins.
-    const std::string script = "system \"touch '" + ready.string() + "'\"\nset samples 1000\n"
+    // gnuplot says it has started by a file of its own (`set print`, no shell:
+    // a shell it waited for would keep SIGINT from it), then draws.
+    const std::string script = "set print '" + ready.string() + "'\nprint 'drawing'\nset print\nset samples 1000\n"
                                "plot for [i=1:300] sin(x*i) notitle\n";
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
