@@ -108,7 +108,6 @@ void append_kept(std::uint32_t i, std::uint8_t image, std::uint8_t mirrored, con
 std::size_t with_slack(std::size_t doubles) { return doubles + doubles / 8 + 64; }
 }  // namespace
 
-
 void NeighborList::clear() {
   offset_.clear();
   neighbor_.clear();
