@@ -7,6 +7,11 @@
 
 namespace wearscale {
 
+bool is_executable_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(file, ec) && ::access(file.c_str(), X_OK) == 0;
+}
+
 std::filesystem::path find_on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
   if (path == nullptr || name.empty()) return {};
@@ -15,8 +20,7 @@ std::filesystem::path find_on_path(const std::string& name) {
   while (std::getline(dirs, dir, ':')) {
     if (dir.empty()) continue;
     const std::filesystem::path candidate = std::filesystem::path(dir) / name;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (is_executable_file(candidate)) return candidate;
   }
   return {};
 }

@@ -33,11 +33,6 @@ namespace {
 
 constexpr const char* kInstall = "apt-get install lammps";
 
-bool is_executable(const fs::path& p) {
-  std::error_code ec;
-  return fs::is_regular_file(p, ec) && ::access(p.c_str(), X_OK) == 0;
-}
-
 struct Child {
   pid_t pid = -1;
 };
@@ -164,7 +159,7 @@ long last_thermo_step(const fs::path& log) {
 fs::path find_lmp(const std::string& requested) {
   const std::string name = requested.empty() ? std::string("lmp") : requested;
   if (name.find('/') != std::string::npos) {
-    if (is_executable(name)) return fs::absolute(name);
+    if (is_executable_file(name)) return fs::absolute(name);
     throw InputError(fmt::format("LAMMPS executable '{}' not found or not executable; install LAMMPS with: {} "
                                  "(Debian 12), or give its path with --lmp / md.lmp",
                                  name, kInstall));

@@ -6,6 +6,9 @@
 
 namespace wearscale {
 
+/// Whether `file` is a regular file this process may execute.
+bool is_executable_file(const std::filesystem::path& file);
+
 /// An executable regular file of that name in a directory of PATH (the first),
 /// or an empty path.
 std::filesystem::path find_on_path(const std::string& name);
