@@ -365,9 +365,10 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   // so its shift changes by the periods j and i were wrapped by since the
   // last build, Δimage_j − Δimage_i.
   auto wrapped = [&](std::size_t i) {
+    const auto now = image_low_bytes(p.image[i]);
     std::array<int, 3> d{};
     for (std::size_t a = 0; a < 3; ++a)  // modulo 256, then as a signed byte: |wraps| < max_wraps
-      d[a] = static_cast<std::int8_t>(static_cast<std::uint8_t>(static_cast<std::uint8_t>(p.image[i][a]) - built_image_[i][a]));
+      d[a] = static_cast<std::int8_t>(static_cast<std::uint8_t>(now[a] - built_image_[i][a]));
     return d;
   };
   // The carry-over's two flags a particle, bytes in the grid's scratch
