@@ -7,6 +7,7 @@
 #include "input_error_of.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
+#include "wearscale/dem/particles.hpp"
 #include "wearscale/materials/material.hpp"
 #include "pair_setup.hpp"
 
@@ -168,4 +169,36 @@ TEST(CohesiveForce, MixedPairsUseTheWeakerStrengthAndSeriesStiffness) {
   EXPECT_DOUBLE_EQ(ab.young, 1.5);
   EXPECT_DOUBLE_EQ(ab.tensile_strength, 0.1);
   EXPECT_DOUBLE_EQ(mix(a, a).young, a.young);
+}
+
+TEST(CohesiveForce, AnInterfaceStatedOnItsOwnReplacesTheMixForPairsAcrossItOnly) {
+  auto a = table_6_4();
+  auto b = table_6_4();
+  b.name = "stiff";
+  b.young = 3.0;
+  auto interface = mix(a, b);
+  interface.surface_energy = 0.3;  // a fifth of both materials' γ
+  CohesiveLaw law({a, b});
+  law.set_interface(1, 0, interface);
+  EXPECT_DOUBLE_EQ(law.pair_material(0, 1).surface_energy, 0.3);
+  EXPECT_DOUBLE_EQ(law.pair_material(1, 0).surface_energy, 0.3);
+  EXPECT_DOUBLE_EQ(law.pair_material(0, 0).surface_energy, 1.5);
+  EXPECT_DOUBLE_EQ(law.pair_material(1, 1).surface_energy, 1.5);
+
+  // Two spheres across the interface separate with 2 γ_ab A_N of work (6.18):
+  // a fifth of what the same two spheres of one material need.
+  Particles p;
+  const double r = 20.0;
+  p.add({{0, 0, 0}, r, 1.0, {}, 0, 0});
+  p.add({{2 * r, 0, 0}, r, 1.0, {}, 1, 0});
+  p.add({{4 * r, 0, 0}, r, 1.0, {}, 1, 0});
+  const double across = fracture_work(law.pair(p, 0, 1));
+  EXPECT_NEAR(across, 2.0 * 0.3 * normal_cross_section(r, a.poisson), 1e-9 * across);
+  EXPECT_NEAR(fracture_work(law.pair(p, 1, 2)), 5.0 * across, 1e-9 * across);
+  EXPECT_DOUBLE_EQ(law.pair(p, 0, 1).delta_f, 4.0 * 0.3 / 0.2);  // (6.57)
+
+  auto impossible = interface;
+  impossible.poisson = 0.3;
+  EXPECT_THROW(law.set_interface(0, 1, impossible), InputError);
+  EXPECT_THROW(law.set_interface(0, 2, interface), InputError);
 }

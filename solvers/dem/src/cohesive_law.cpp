@@ -138,6 +138,15 @@ CohesiveLaw::CohesiveLaw(std::vector<CohesiveMaterial> materials) : materials_(s
     for (const auto& b : materials_) mixed_.push_back(mix(a, b));
 }
 
+void CohesiveLaw::set_interface(std::size_t a, std::size_t b, const CohesiveMaterial& interface) {
+  const std::size_t n = materials_.size();
+  if (a >= n || b >= n)
+    throw InputError(fmt::format("cohesive law: an interface between materials {} and {} of a table of {}", a, b, n));
+  require_modelled(interface);
+  mixed_[a * n + b] = interface;
+  mixed_[b * n + a] = interface;
+}
+
 CohesivePair CohesiveLaw::pair(const Particles& p, std::size_t i, std::size_t j) const {
   return cohesive_pair(pair_material(p.material[i], p.material[j]), p.radius[i], p.radius[j],
                        p.mass[i], p.mass[j]);

@@ -71,10 +71,14 @@ double critical_time_step(double mass, double k_n);
 double critical_damping(double mass, double k_n);
 
 /// The force law over a table of materials (a particle's material tag indexes
-/// it); pairs of two materials use mix().
+/// it); pairs of two materials use mix() unless their interface is given.
 class CohesiveLaw final : public ContactLaw {
  public:
   explicit CohesiveLaw(std::vector<CohesiveMaterial> materials);
+  /// The targets of the pairs of materials a and b (both orders) in place of
+  /// mix(): an interface stated on its own, as LAMMPS' pair_coeff i j does.
+  /// InputError if it cannot be modelled or a tag is out of the table.
+  void set_interface(std::size_t a, std::size_t b, const CohesiveMaterial& interface);
 
   /// Cohesion (δ_N > 0 branch of (6.3)) and the tangential force can be
   /// switched off, as in the relaxation of an amorphous sample (§6.2.2).
