@@ -534,6 +534,20 @@ CohesiveMaterial substrate_material(const Config& root, const Config& c, double 
   return m;
 }
 
+// The SiO2–Si pairs: mix() of the two, with its adhesion energy and
+// strengths replaced by the keys given (none given: mix() itself).
+std::optional<CohesiveMaterial> interface_material(const Config& c, const CohesiveMaterial& oxide,
+                                                   const CohesiveMaterial& substrate) {
+  if (!c.has("interface_surface_energy") && !c.has("interface_tensile_strength") &&
+      !c.has("interface_shear_strength"))
+    return std::nullopt;
+  CohesiveMaterial m = mix(oxide, substrate);
+  m.surface_energy = c.number_or("interface_surface_energy", m.surface_energy, Range::positive(), units::surface_energy);
+  m.tensile_strength = c.number_or("interface_tensile_strength", m.tensile_strength, Range::positive(), units::pressure);
+  m.shear_strength = c.number_or("interface_shear_strength", m.shear_strength, Range::positive(), units::pressure);
+  return m;
+}
+
 nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
   require_cohesive_law(root, "oxide-asperity study");
@@ -541,6 +555,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   spec.oxide = dem_material(root, "SiO2");
   const Config c = root.section("dem.oxide_asperity");
   spec.substrate = substrate_material(root, c, spec.oxide.scaling_exponent);
+  spec.interface = interface_material(c, spec.oxide, spec.substrate);
   spec.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
   spec.largest = c.number_or("largest", 1.25 * spec.d0, Range::at_least(spec.d0), units::length);
   if (c.has("box")) {
@@ -900,6 +915,12 @@ class OxideAsperityStudy final : public DemStudy {
               {t + "substrate_poisson", "number", "(-1, 0.25]", "1", "min(ν, 0.2)",
                "the substrate's modelled ν (Si's 0.27 exceeds the pair force's 1/4 (6.52))", ""},
               {t + "substrate_restitution", "number", "(0, 1]", "1", "record or 0.9", "the substrate's η", ""},
+              {t + "interface_surface_energy", "number", "> 0", "J/m^2", "√(γ_oxide γ_substrate)",
+               "adhesion energy γ of the oxide–substrate pairs (the Si/SiO2 interface)", ""},
+              {t + "interface_tensile_strength", "number", "> 0", "Pa", "the weaker σ_m,N",
+               "σ_m,N of the oxide–substrate pairs", ""},
+              {t + "interface_shear_strength", "number", "> 0", "Pa", "the weaker σ_m,T",
+               "σ_m,T of the oxide–substrate pairs", ""},
               {t + "d0", "number", "> 0", "m", "1.5e-9", "Si lattice spacing and mode of the SiO2 diameters", "--d0"},
               {t + "largest", "number", "≥ d0", "m", "1.25 d0", "largest SiO2 diameter", ""},
               {t + "box", "list", "three lengths > 0", "m", "[150e-9, 150e-9, 75e-9]",

@@ -95,6 +95,7 @@ class SurfaceProfile {
 void check(const OxideAsperitySpec& s) {
   require_modelled(s.oxide);
   require_modelled(s.substrate);
+  if (s.interface) require_modelled(*s.interface);
   auto positive = [](double v, const char* what) {
     if (!(v > 0.0) || !std::isfinite(v)) refuse(what, v, "> 0");
   };
@@ -208,7 +209,8 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
 
   double max_radius = 0.0;
   for (double r : p.radius) max_radius = std::max(max_radius, r);
-  const CohesiveLaw law({spec.oxide, spec.substrate});
+  CohesiveLaw law({spec.oxide, spec.substrate});
+  if (spec.interface) law.set_interface(0, 1, *spec.interface);
   const BondCriterion bond = BondCriterion::cohesive(law, max_radius);
   Simulation sim(std::move(p), box, law, NeighborSettings{0.1 * d0, 0, true});
   const double dt = spec.time_step * sim.law().critical_time_step(sim.particles());

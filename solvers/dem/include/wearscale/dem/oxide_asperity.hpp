@@ -17,6 +17,7 @@
 // strip the body has passed, against its height before sliding.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
@@ -33,6 +34,8 @@ inline constexpr int asperity_substrate = 0, asperity_layer = 1, asperity_body =
 struct OxideAsperitySpec {
   CohesiveMaterial oxide;      ///< SiO2: layer, cylinder, plate (material tag 0)
   CohesiveMaterial substrate;  ///< Si: the HCP substrate (material tag 1)
+  /// The targets of SiO2–Si pairs; empty: mix(oxide, substrate).
+  std::optional<CohesiveMaterial> interface;
   double d0 = 1.5e-9;          ///< HCP spacing of the Si, mode of the SiO2 diameters
   double largest = 0.0;        ///< d_l of the SiO2 (0: 1.25 d0)
   /// x, y (periodic) and z: x is rounded to whole HCP cells of d0 and y of
