@@ -4,9 +4,12 @@
 // SiO2/Si pairs at the case's adhesion energy of 0.5 J/m² (docs/dem.md: with
 // mix()'s 1.34 J/m² the layer stays on the Si). Label long; slid 100 nm at
 // 50 m/s instead of the case's 10 m/s to shorten the run (§7.2.2: no effect
-// of v; the d0 = 6 nm runs agree), 81 855 steps. What Fig. 9.26 shows: the
+// of v; the d0 = 6 nm runs agree), 82 658 steps. What Fig. 9.26 shows: the
 // cylinder rolls, grows by taking layer particles, and reaches the Si,
-// leaving a trench. Its spec run to its end through the CLI: docs/dem.md.
+// leaving a trench. Its spec run to its end through the CLI (6 Dec, 1 h 11 min
+// of two threads, 898 MB): θR/travel = 0.97, 13 087 particles taken (11.8 %),
+// the body 11.6 % larger, the passed strip bare down to the Si (5.57 nm), the
+// Si reached at 26.2 nm (docs/dem.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -37,8 +40,9 @@ TEST(OxideAsperityStudy, TheCylinderRollsGrowsAndDigsATrenchToTheSi) {
               r.final_picked_up, r.trench_depth * 1e9, r.trench_max_depth * 1e9, r.layer_measured * 1e9,
               r.reached_substrate_at * 1e9, r.friction);
   EXPECT_NEAR(r.rolling_ratio, 1.0, 0.2);
-  EXPECT_GT(r.final_body, static_cast<double>(r.body_particles));
-  EXPECT_GE(r.final_picked_up, 0.01 * static_cast<double>(r.body_particles));
+  const double cylinder = static_cast<double>(r.body_particles);
+  EXPECT_GE(r.final_body, 1.04 * cylinder) << "it grows";
+  EXPECT_GE(r.final_picked_up, 0.05 * cylinder) << "by taking particles from the layer";
   EXPECT_GT(r.trench_depth, 0.5 * r.layer_measured) << "a trench through the layer along the path";
   EXPECT_GE(r.reached_substrate_at, 0.0) << "Fig. 9.26c: the wear particle reaches the Si under the layer";
 }
