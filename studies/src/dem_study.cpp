@@ -535,12 +535,8 @@ CohesiveMaterial substrate_material(const Config& root, const Config& c, double 
 }
 
 // The SiO2–Si pairs: mix() of the two, with its adhesion energy and
-// strengths replaced by the keys given (none given: mix() itself).
-std::optional<CohesiveMaterial> interface_material(const Config& c, const CohesiveMaterial& oxide,
-                                                   const CohesiveMaterial& substrate) {
-  if (!c.has("interface_surface_energy") && !c.has("interface_tensile_strength") &&
-      !c.has("interface_shear_strength"))
-    return std::nullopt;
+// strengths replaced by the keys given.
+CohesiveMaterial interface_material(const Config& c, const CohesiveMaterial& oxide, const CohesiveMaterial& substrate) {
   CohesiveMaterial m = mix(oxide, substrate);
   m.surface_energy = c.number_or("interface_surface_energy", m.surface_energy, Range::positive(), units::surface_energy);
   m.tensile_strength = c.number_or("interface_tensile_strength", m.tensile_strength, Range::positive(), units::pressure);

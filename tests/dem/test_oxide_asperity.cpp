@@ -79,7 +79,7 @@ TEST(OxideAsperity, TheCylinderRollsGrowsFromTheLayerAndLeavesATrench) {
 }
 
 TEST(OxideAsperity, AnInterfaceAsStrongAsTheOxideKeepsTheLayerOnTheSi) {
-  const auto spec = test_support::reduced_oxide_asperity(60e-9, 0.0);  // mix(): 1.34 J/m²
+  const auto spec = test_support::reduced_oxide_asperity(60e-9, std::nullopt);  // mix(): 1.34 J/m²
   ASSERT_FALSE(spec.interface.has_value());
   const auto r = run_oxide_asperity(spec);
   EXPECT_NEAR(r.rolling_ratio, 1.0, 0.2) << "rotation " << r.rotation << " rad, travel " << r.travel;
