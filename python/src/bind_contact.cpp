@@ -54,7 +54,8 @@ Boundary boundary_from(const std::string& name) {
 ContactMethod method_from(const std::string& name) {
   if (name == "preconditioned") return ContactMethod::PreconditionedCG;
   if (name == "polonsky-keer") return ContactMethod::PolonskyKeer;
-  throw InputError("contact: method = '" + name + "'; allowed: preconditioned | polonsky-keer");
+  if (name == "two-level") return ContactMethod::TwoLevelCG;
+  throw InputError("contact: method = '" + name + "'; allowed: preconditioned | two-level | polonsky-keer");
 }
 
 py::dict to_dict(const ContactResult& r) {
@@ -232,7 +233,9 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
            R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
-"preconditioned" (default) or "polonsky-keer". predict_load: for a load ramp on one surface, start
+"preconditioned" (default), "two-level" (the preconditioner on a 2x coarser grid: the same iterations
+at a quarter of its transforms, about 20 % less time a solve from 1024^2; periodic even grids, the full one
+otherwise) or "polonsky-keer". predict_load: for a load ramp on one surface, start
 from the secant through the last two solutions (kept_solutions) instead of the last pressure
 rescaled (about 11 iterations per +0.1 % step against 17 at 512^2). Releases the GIL; Ctrl-C ends the solve within an
 iteration (KeyboardInterrupt). Returns a dict: iterations,

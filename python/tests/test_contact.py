@@ -47,6 +47,23 @@ def test_normal_contact_meets_the_contact_conditions_and_the_imposed_load(rough)
     assert r["error"] < 1e-12 and r["solve_seconds"] > 0
 
 
+def test_every_method_reaches_the_same_contact(rough):
+    # "two-level" (the preconditioner on a 2x coarser grid), "preconditioned" and
+    # "polonsky-keer": the same contact set and pressures to the tolerance's accuracy.
+    results = {}
+    for method in ("preconditioned", "two-level", "polonsky-keer"):
+        c = ws.contact.NormalContact(rough, e_star=E_STAR)
+        r = c.solve(mean_pressure=2e6, tolerance=1e-12, method=method)
+        results[method] = (r, c.pressure.copy())
+    r0, p0 = results["preconditioned"]
+    for method in ("two-level", "polonsky-keer"):
+        r, p = results[method]
+        assert np.array_equal(p > 0, p0 > 0), method
+        assert np.abs(p - p0).max() < 1e-8 * p0.max(), method
+    with pytest.raises(ws.InputError, match="method.*preconditioned \\| two-level \\| polonsky-keer"):
+        ws.contact.NormalContact(rough, e_star=E_STAR).solve(mean_pressure=2e6, method="multigrid")
+
+
 def test_result_arrays_are_views_on_the_solver_without_a_copy(rough):
     c = ws.contact.NormalContact(rough, e_star=E_STAR)
     c.solve(mean_pressure=1e6)

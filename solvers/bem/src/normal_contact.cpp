@@ -313,7 +313,8 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
     p_.fill(p0);
   t_.fill(0.0);
 
-  const bool preconditioned = opt.method == ContactMethod::PreconditionedCG;
+  const bool preconditioned = opt.method != ContactMethod::PolonskyKeer;
+  const bool two_level = opt.method == ContactMethod::TwoLevelCG;
   if (preconditioned && !(z_.grid() == h_.grid())) z_ = RealField(h_.grid());
   readmit_stiffness_ = preconditioned ? body_->stiffness_diagonal() : 1.0;
   double first_error = 0.0;
@@ -342,7 +343,10 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
       return r;
     }
     if (preconditioned) {
-      body_->stiffness(gap_, z_);  // z = S r
+      if (two_level)
+        body_->two_level_stiffness(gap_, z_);  // z = M r ≈ S r
+      else
+        body_->stiffness(gap_, z_);  // z = S r
       preconditioned_direction(gap, state, descent);
     } else {
       state.residual_old = gap.norm2;

@@ -47,6 +47,7 @@ class AddedCompliance {
 enum class ContactMethod {
   PreconditionedCG,  ///< Polonsky–Keer with the FFT preconditioner S (default)
   PolonskyKeer,      ///< the textbook, unpreconditioned Polonsky–Keer iteration
+  TwoLevelCG,        ///< preconditioned by TwoLevelStiffness (S where the body has no coarse grid)
 };
 
 struct ContactOptions {

@@ -6,11 +6,13 @@
 // (SlabHalfSpace, distributed over MPI ranks with FFTW-MPI): NormalContact is
 // one solver over either.
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <utility>
 
 #include "wearscale/bem/half_space.hpp"
+#include "wearscale/bem/two_level_stiffness.hpp"
 
 namespace wearscale::bem {
 
@@ -28,6 +30,10 @@ class NormalOperator {
   virtual void displacement(const RealField& p, RealField& u, double scale) = 0;
   /// z = S g, Ŝ(q) = E*|q|/2 (zero mode: 0).
   virtual void stiffness(const RealField& g, RealField& z) = 0;
+  /// z ≈ S g by TwoLevelStiffness (a preconditioner at a quarter of the
+  /// transforms) where the body has it; S itself where not (the default: a
+  /// free window, an odd grid, a body in slabs).
+  virtual void two_level_stiffness(const RealField& g, RealField& z) { stiffness(g, z); }
   /// Σ over every point of the grid of t K t.
   virtual double form(const RealField& t) = 0;
   /// u_z of a cell per unit pressure on it alone [m/Pa]; S at offset 0 [Pa/m].
@@ -74,6 +80,12 @@ class WholeGridBody : public Base {
     body_.normal_displacement(p, u, work_, scale);
   }
   void stiffness(const RealField& g, RealField& z) override { body_.normal_stiffness(g, z, work_); }
+  void two_level_stiffness(const RealField& g, RealField& z) override {
+    if (body_.boundary() != Boundary::Periodic || !TwoLevelStiffness::supports(body_.grid()))
+      return stiffness(g, z);
+    if (!two_level_) two_level_ = std::make_unique<TwoLevelStiffness>(body_.grid(), body_.contact_modulus());  // once
+    two_level_->apply(g, z);
+  }
   double form(const RealField& t) override { return body_.normal_form(t, work_); }
   double self_compliance() const override { return body_.self_compliance(); }
   double stiffness_diagonal() const override { return body_.normal_stiffness_diagonal(); }
@@ -83,6 +95,7 @@ class WholeGridBody : public Base {
  protected:
   HalfSpace body_;
   HalfSpace::Workspace work_;
+  std::unique_ptr<TwoLevelStiffness> two_level_;
 };
 
 /// The serial body: a whole-grid HalfSpace's normal block (periodic or free).
