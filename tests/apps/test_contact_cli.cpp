@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -32,6 +34,27 @@ TEST(ContactCli, RoughCaseWritesFieldsClustersAndJson) {
   EXPECT_EQ(j["parameters"]["contact"]["grid"], 128);
   for (const char* f : {"contact.h5", "contact.xdmf", "clusters.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(work / "rc" / f)) << f;
+}
+
+TEST(ContactCli, TheTwoLevelPreconditionerGivesTheSameContact) {
+  // contact.preconditioner = "two-level" (S on a 2× coarser grid): the figures of
+  // the full preconditioner to the tolerance's accuracy.
+  std::map<std::string, nlohmann::json> results;
+  for (const std::string pre : {"full", "two-level"}) {
+    const auto r = run_cli("contact " + rough_case + " --set contact.grid=128 --set contact.preconditioner=" + pre +
+                               " --out pre-" + pre + " --json",
+                           work);
+    ASSERT_EQ(r.status, 0) << r.err;
+    results[pre] = nlohmann::json::parse(r.out);
+  }
+  const auto& a = results["full"]["results"];
+  const auto& b = results["two-level"]["results"];
+  EXPECT_EQ(results["two-level"]["parameters"]["contact"]["preconditioner"], "two-level");
+  EXPECT_EQ(a["contact_fraction"]["value"], b["contact_fraction"]["value"]);
+  EXPECT_EQ(a["clusters"]["value"], b["clusters"]["value"]);
+  EXPECT_NEAR(b["interference"]["value"].get<double>(), a["interference"]["value"].get<double>(),
+              1e-8 * std::abs(a["interference"]["value"].get<double>()));
+  EXPECT_LT(b["error"]["value"].get<double>(), 1e-10);
 }
 
 TEST(ContactCli, ASphereGivesTheHertzContactRadius) {
@@ -95,6 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadContact{"typo", "--set contact.tolerence=1e-8", "did you mean 'tolerance'"},
         BadContact{"missing_file", "--surface /nonexistent.h5", "/nonexistent.h5"},
         BadContact{"unknown_boundary", "--set contact.boundary=fixed", "contact.boundary"},
+        BadContact{"unknown_preconditioner", "--set contact.preconditioner=multigrid", "contact.preconditioner"},
         BadContact{"free_with_friction", "--set contact.boundary=free --set contact.friction=coulomb "
                    "--set contact.poisson=0.3 --set contact.friction_coefficient=0.5", "frictionless contact only"}),
     [](const auto& p) { return p.param.name; });

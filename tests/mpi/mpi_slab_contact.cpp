@@ -118,7 +118,13 @@ void compare_with_serial_body(SlabBody& slab, const Grid2D& g, Boundary boundary
   slab.displacement(rows_of(p, lg, first), u_s, 1.5);
   slab.stiffness(rows_of(t, lg, first), z_s);
   const double form_s = slab.form(rows_of(t, lg, first));
+  // The two-level stiffness (S itself on a free window or an odd grid), against the serial body's.
+  HalfSpaceNormal whole(g, e_star, boundary);
+  RealField m(g), m_s(lg);
+  whole.two_level_stiffness(t, m);
+  slab.two_level_stiffness(rows_of(t, lg, first), m_s);
   const std::string at = std::string(boundary == Boundary::Free ? " (free)" : "") + " on " + g.to_string();
+  check(row_difference(m_s, m, first) < 1e-13, "z = M t (two-level) differs from the serial body's" + at);
   check(slab.boundary() == boundary, "the body's boundary differs" + at);
   check(row_difference(u_s, u, first) < 1e-13, "u = K p differs from the serial body's" + at);
   check(row_difference(z_s, z, first) < 1e-13, "z = S t differs from the serial body's" + at);
@@ -167,7 +173,9 @@ void test_solve(std::size_t n, ContactMethod method) {
   const Grid2D lg = body->local_grid();
   NormalContact slab(std::move(body), rows_of(h, lg, first), 1.0);
   const ContactResult s = slab.solve_mean_pressure(0.03, options);
-  const std::string at = std::string(method == ContactMethod::PolonskyKeer ? " (Polonsky–Keer)" : " (preconditioned)") +
+  const std::string at = std::string(method == ContactMethod::PolonskyKeer ? " (Polonsky–Keer)"
+                                     : method == ContactMethod::TwoLevelCG ? " (two-level)"
+                                                                            : " (preconditioned)") +
                          " on " + spec.grid.to_string();
   check(s.iterations == r.iterations,
         "iterations " + std::to_string(s.iterations) + " against serial " + std::to_string(r.iterations) + at);
@@ -525,6 +533,8 @@ int main(int argc, char** argv) {
     test_operator(Grid2D::square(256, 1.0));
     test_operator(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular
     test_operator(Grid2D(64, 33, 1.0, 0.5));  // odd columns
+    test_operator(Grid2D(20, 24, 1.0, 1.2));  // FFTW's slabs start on odd rows at P = 3 (7, 7, 6)
+    test_operator(Grid2D(6, 8, 1.0, 1.0));    // and at P = 2 (3, 3); two rows a rank at P = 3
   } else if (mode == "surface") {
     test_surface(Grid2D::square(256, 1.0), 1);
     test_surface(Grid2D(45, 32, 1.0, 1.0), 3);
@@ -532,6 +542,8 @@ int main(int argc, char** argv) {
   } else if (mode == "solve") {
     test_solve(256, ContactMethod::PreconditionedCG);
     test_solve(128, ContactMethod::PolonskyKeer);
+    test_solve(256, ContactMethod::TwoLevelCG);
+    test_solve(90, ContactMethod::TwoLevelCG);  // slabs of 45 rows at P = 2: moved to even rows
   } else if (mode == "traction") {
     test_traction(Grid2D::square(64, 1.0));
     test_traction(Grid2D(45, 32, 2.0, 1.5));  // odd rows, rectangular

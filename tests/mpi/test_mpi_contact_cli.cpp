@@ -217,6 +217,14 @@ TEST(MpiContactCli, TheCommandsFlagsCountUnderMpirunAsWithout) {
   expect_same_results(r.serial, r.slab, 2);
 }
 
+TEST(MpiContactCli, TheTwoLevelPreconditionerOnThreeRanksGivesTheSerialSummary) {
+  // 128 rows on 3 ranks (43, 43, 42): slabs that start on odd rows, moved to even ones for the coarse grid.
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --set contact.preconditioner=two-level --json";
+  const auto r = serial_and_slab(args, 3, "two_level");
+  ASSERT_FALSE(r.slab.is_null());
+  expect_same_results(r.serial, r.slab, 3);
+}
+
 TEST(MpiContactCli, ASphereOnARoughSurfaceGivesTheSerialSummaryAndFiles) {
   const std::string args = "contact " + rough_case +
                            " --set contact.grid=160 --set contact.sphere.radius=2 --set contact.rough.hprime_rms=0.2 "

@@ -26,7 +26,7 @@ const Grid2D& checked(const Grid2D& g, double e_star) { return checked_slab_grid
 }  // namespace
 
 SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor)
-    : grid_(checked(grid, e_star)), fft_(grid.nx, grid.ny, rigor) {
+    : grid_(checked(grid, e_star)), fft_(grid.nx, grid.ny, rigor), e_star_(e_star), rigor_(rigor) {
   local_ = grid_.slab(fft_.rows());
   const std::size_t cols = grid_.spectral_ny(), first = fft_.first_row();
   zz_.assign(fft_.rows() * cols, 0.0);
@@ -40,7 +40,7 @@ SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double e_star, PlanRigor rigor)
 }
 
 SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double young, double poisson, PlanRigor rigor)
-    : grid_(checked(grid, young)), fft_(grid.nx, grid.ny, rigor) {
+    : grid_(checked(grid, young)), fft_(grid.nx, grid.ny, rigor), rigor_(rigor) {
   if (!(poisson > -1.0 && poisson <= 0.5))
     throw InputError(fmt::format(
         "distributed half-space: Poisson's ratio ν = {} is not allowed; allowed: −1 < ν ≤ 0.5", poisson));
@@ -49,6 +49,7 @@ SlabHalfSpace::SlabHalfSpace(const Grid2D& grid, double young, double poisson, P
   local_ = grid_.slab(fft_.rows());
   const std::size_t cols = grid_.spectral_ny(), first = fft_.first_row(), modes = fft_.rows() * cols;
   const double shear = young / (2.0 * (1.0 + poisson)), e_star = young / (1.0 - poisson * poisson);
+  e_star_ = e_star;
   tensor_.assign(modes, {});
   zz_.assign(modes, 0.0);
   stiffness_.assign(modes, 0.0);
@@ -84,6 +85,15 @@ void SlabHalfSpace::apply(const RealField& in, RealField& out, const std::vector
 
 void SlabHalfSpace::displacement(const RealField& p, RealField& u, double scale) { apply(p, u, zz_, scale); }
 void SlabHalfSpace::stiffness(const RealField& g, RealField& z) { apply(g, z, stiffness_, 1.0); }
+
+void SlabHalfSpace::two_level_stiffness(const RealField& g, RealField& z) {
+  if (!TwoLevelStiffness::supports(grid_)) return stiffness(g, z);
+  if (!(g.grid() == local_) || !(z.grid() == local_))
+    throw std::invalid_argument("SlabHalfSpace: a field that is not this rank's slab");
+  if (!two_level_)
+    two_level_ = std::make_unique<SlabTwoLevelStiffness>(grid_, RowRange{fft_.first_row(), fft_.rows()}, e_star_, rigor_);
+  two_level_->apply(g.data(), z.data());
+}
 
 double SlabHalfSpace::form(const RealField& t) {
   if (!(t.grid() == local_)) throw std::invalid_argument("SlabHalfSpace: a field that is not this rank's slab");

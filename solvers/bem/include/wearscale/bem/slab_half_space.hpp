@@ -9,8 +9,10 @@
 // Built from E and ν it holds the whole Boussinesq–Cerruti tensor
 // (HalfSpace::tensor_mode) and serves the frictional solver (TractionOperator).
 #include <complex>
+#include <memory>
 #include <vector>
 
+#include "wearscale/bem/slab_two_level_stiffness.hpp"
 #include "wearscale/bem/traction_operator.hpp"
 #include "wearscale/core/slab_fft.hpp"
 
@@ -40,6 +42,8 @@ class SlabHalfSpace final : public TractionOperator {
 
   void displacement(const RealField& p, RealField& u, double scale) override;
   void stiffness(const RealField& g, RealField& z) override;
+  /// SlabTwoLevelStiffness (made at the first call, collectively); S itself on an odd grid.
+  void two_level_stiffness(const RealField& g, RealField& z) override;
   double form(const RealField& t) override;
   double self_compliance() const override { return self_compliance_; }
   double stiffness_diagonal() const override { return stiffness_diagonal_; }
@@ -63,7 +67,9 @@ class SlabHalfSpace final : public TractionOperator {
   SlabFFT fft_;
   std::vector<double> zz_, stiffness_;  // this rank's rows of the half spectrum, 1/N folded in
   double self_compliance_ = 0.0, stiffness_diagonal_ = 0.0;
-  double young_ = 0.0, poisson_ = 0.0;
+  double young_ = 0.0, poisson_ = 0.0, e_star_ = 0.0;
+  PlanRigor rigor_;
+  std::unique_ptr<SlabTwoLevelStiffness> two_level_;
   std::vector<HalfSpace::TensorMode> tensor_;     // the full tensor's modes (E, ν constructor), 1/N folded in
   std::vector<std::complex<double>> sx_, sy_, sz_;  // the three components' spectra of one application
 };

@@ -9,8 +9,9 @@
 // over the finest band), R full weighting onto the 2× coarser grid, P = 4 Rᵀ
 // bilinear prolongation, and C the coarse grid's Ŝ − (a + b q²) by one FFT
 // pair of a quarter of the points. M is symmetric (P = 4 Rᵀ) and, on the
-// issue's rough case, keeps the iterations of S itself (docs/bem.md).
-// Periodic grids with an even number of points ≥ 4 each way (supports()).
+// rough case of docs/bem.md, keeps the iterations of S itself. Periodic grids
+// with an even number of points ≥ 4 each way (supports()). The same operator
+// on a grid held in slabs: SlabTwoLevelStiffness.
 #include <memory>
 #include <vector>
 
@@ -21,27 +22,30 @@ namespace wearscale::bem {
 
 class TwoLevelStiffness {
  public:
+  /// The stencil's coefficients: a [Pa/m], b [Pa·m], and cx = b/dx², cy = b/dy².
+  struct Stencil {
+    double a, b, cx, cy;
+  };
   /// Whether the grid has a 2× coarser grid (nx, ny even and ≥ 4).
   static bool supports(const Grid2D& grid);
+  static Stencil stencil(const Grid2D& grid, double e_star);
+  /// The 2× coarser grid of `grid` (the same size).
+  static Grid2D coarse_grid(const Grid2D& grid);
+  /// C at r2c mode (i, j) of the coarse grid, 1/N_coarse folded in: Ŝ − (a + b q²), 0 at q = 0.
+  static double correction_mode(const Grid2D& coarse, std::size_t i, std::size_t j, const Stencil& s, double e_star);
+
   /// std::invalid_argument unless supports(grid) and E* > 0.
   TwoLevelStiffness(const Grid2D& grid, double e_star);
 
   /// z = M r on the grid (z may not alias r). Allocates nothing.
   void apply(const RealField& r, RealField& z);
 
-  /// The stencil's coefficients: a [Pa/m], b [Pa·m].
-  double a() const { return a_; }
-  double b() const { return b_; }
-
  private:
-  void restrict_to_coarse(const RealField& r);            // coarse_ = R r
-  void prolong_and_add(const RealField& r, RealField& z);  // z = a r + b(−Δ_h r) + P coarse_
-
   Grid2D grid_, coarse_grid_;
-  double a_, b_, cx_, cy_;  // cx = b/dx², cy = b/dy²
+  Stencil stencil_;
   std::shared_ptr<const FFTPlan> plan_;
-  std::vector<double> correction_;  // Ŝ − (a + b q²) on the coarse modes, 1/N_coarse folded in
-  std::vector<double> half_;        // R or P in y alone: nx × ny/2 (restriction), nx/2 × ny (prolongation)
+  std::vector<double> correction_;  // C on the coarse grid's r2c modes
+  std::vector<double> half_;        // R or P along rows alone: nx × ny/2 (restriction), nx/2 × ny (prolongation)
   RealField coarse_;
   ComplexField spectrum_;
 };
