@@ -229,15 +229,15 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
              return d;
            },
            py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(), py::arg("tolerance") = 1e-12,
-           py::arg("max_iterations") = 10000, py::arg("method") = "preconditioned", py::arg("predict_load") = false,
+           py::arg("max_iterations") = 10000, py::arg("method") = "two-level", py::arg("predict_load") = false,
            R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
-"preconditioned" (default), "two-level" (the preconditioner on a 2x coarser grid: the same iterations
-at a quarter of its transforms, about 20 % less time a solve from 1024^2; periodic even grids, the full one
-otherwise) or "polonsky-keer". predict_load: for a load ramp on one surface, start
+"two-level" (default: the preconditioner S on a 2x coarser grid, the same iterations at a quarter of
+its transforms, 15-20 % less time a solve from 1024^2; a free window or an odd grid uses the full one),
+"preconditioned" (S by a full FFT pair) or "polonsky-keer". predict_load: for a load ramp on one surface, start
 from the secant through the last two solutions (kept_solutions) instead of the last pressure
-rescaled (about 11 iterations per +0.1 % step against 17 at 512^2). Releases the GIL; Ctrl-C ends the solve within an
+rescaled (about 13 iterations per +0.1 % step against 18 at 512^2). Releases the GIL; Ctrl-C ends the solve within an
 iteration (KeyboardInterrupt). Returns a dict: iterations,
 error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
 solve_seconds (wall time of the C++ solve, GIL released).

@@ -76,9 +76,9 @@ NormalCase read_normal_case(const Config& c, const Grid2D& g) {
   n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
   n.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
   n.options.stop = [] { return interrupt_requested(); };  // SIGINT/SIGTERM end a long solve within an iteration
-  n.options.method = c.choice_or("preconditioner", "full", {"full", "two-level"}) == "two-level"
-                         ? ContactMethod::TwoLevelCG
-                         : ContactMethod::PreconditionedCG;
+  n.options.method = c.choice_or("preconditioner", "two-level", {"two-level", "full"}) == "full"
+                         ? ContactMethod::PreconditionedCG
+                         : ContactMethod::TwoLevelCG;
   n.connectivity =
       c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
   n.boundary = contact_boundary(c);

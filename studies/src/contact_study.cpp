@@ -183,9 +183,9 @@ Schema ContactStudy::schema() const {
       {"contact.tolerance", "number", "(0, 1)", "1", "1e-12 (frictional 1e-10)", "relative convergence tolerance", ""},
       {"contact.max_iterations", "integer", "≥ 1", "1", "10000 (frictional 20000)", "iteration limit", ""},
       {"contact.connectivity", "choice", "four | eight", "", "four", "neighbours joining a micro-contact", ""},
-      {"contact.preconditioner", "choice", "full | two-level", "", "full",
-       "normal solve's preconditioner: the stiffness S by an FFT pair, or two-level (S on a 2× coarser grid: "
-       "the same iterations at a quarter of the transforms, periodic even grids)",
+      {"contact.preconditioner", "choice", "two-level | full", "", "two-level",
+       "normal solve's preconditioner: two-level (S on a 2× coarser grid: the same iterations at a quarter of "
+       "the transforms; a free window or an odd grid uses full), or full (the stiffness S by an FFT pair)",
        ""},
   };
 }

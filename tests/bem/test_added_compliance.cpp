@@ -85,7 +85,10 @@ TEST_P(CompliantContact, ARigidBodyOnALayerAloneCarriesThePressureOfAWinklerFoun
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, CompliantContact,
-                         ::testing::Values(ContactMethod::PreconditionedCG, ContactMethod::PolonskyKeer),
+                         ::testing::Values(ContactMethod::PreconditionedCG, ContactMethod::TwoLevelCG,
+                                           ContactMethod::PolonskyKeer),
                          [](const ::testing::TestParamInfo<ContactMethod>& method) {
-                           return method.param == ContactMethod::PreconditionedCG ? "Preconditioned" : "PolonskyKeer";
+                           return method.param == ContactMethod::PreconditionedCG ? "Preconditioned"
+                                  : method.param == ContactMethod::TwoLevelCG     ? "TwoLevel"
+                                                                                  : "PolonskyKeer";
                          });

@@ -56,9 +56,9 @@ RealField benchmark_surface(std::size_t n, std::uint64_t seed) {
 }  // namespace
 
 TEST(RoughContact, PreconditionedIterationsAreFewAndGrowSlowlyWithResolution) {
-  // p̄ = 0.03 E* (6.5 % contact) to ε < 1e-10. Measured: 35 (512²) and 46
+  // p̄ = 0.03 E* (6.5 % contact) to ε < 1e-10, z = S r. Measured: 35 (512²) and 46
   // (1024²) iterations; unpreconditioned Polonsky–Keer takes 80 and 187.
-  const ContactOptions options{1e-10, 1000};
+  const ContactOptions options{1e-10, 1000, ContactMethod::PreconditionedCG};
   NormalContact at512(benchmark_surface(512, 1), 1.0);
   const int i512 = at512.solve_mean_pressure(0.03, options).iterations;
   NormalContact at1024(benchmark_surface(1024, 1), 1.0);
@@ -118,8 +118,9 @@ TEST(RoughContact, PreconditionedAndPolonskyKeerSolutionsAgree) {
 namespace {
 // Iterations per step of a load ramp from p̄ = 0.03 in relative steps `step`,
 // steps 2..6 (the first has one kept solution only: no secant yet).
-std::vector<int> ramp_iterations(NormalContact& contact, double step, bool predict) {
-  ContactOptions options{1e-10, 1000};
+std::vector<int> ramp_iterations(NormalContact& contact, double step, bool predict,
+                                 ContactMethod method = ContactMethod::PreconditionedCG) {
+  ContactOptions options{1e-10, 1000, method};
   options.predict_load = predict;
   contact.reset();
   contact.solve_mean_pressure(0.03, options);
@@ -137,16 +138,21 @@ TEST(RoughContact, TheLoadPredictorShortensSmallLoadSteps) {
   // secant of λ = p − c g through the last two solutions. 512², seed 1, 1e-10.
   // Not 10 a step: the prediction leaves ε ≈ 1.5e-7 (the points entering the
   // contact), and the restarted iteration gains ≈ 0.45 decade a step to 1e-10.
+  // Measured, worst of steps 2–6 at +0.1 % / +1 %: 11 / 16 with S, 13 / 17 with
+  // the two-level preconditioner (cheaper iterations: the ramp's time is 5 % less).
   NormalContact contact(benchmark_surface(512, 1), 1.0);
-  for (const double step : {0.001, 0.01}) {
-    const std::vector<int> plain = ramp_iterations(contact, step, false);
-    const std::vector<int> predicted = ramp_iterations(contact, step, true);
-    const int worst = *std::max_element(predicted.begin(), predicted.end());
-    EXPECT_LE(worst, step < 0.005 ? 12 : 17) << "step " << step;
-    EXPECT_LT(worst, *std::min_element(plain.begin(), plain.end())) << "step " << step;
-    RecordProperty("worst_step_predicted_" + std::to_string(step), std::to_string(worst));
-    RecordProperty("best_step_plain_" + std::to_string(step),
-                   std::to_string(*std::min_element(plain.begin(), plain.end())));
+  for (const auto method : {ContactMethod::PreconditionedCG, ContactMethod::TwoLevelCG}) {
+    const bool full = method == ContactMethod::PreconditionedCG;
+    for (const double step : {0.001, 0.01}) {
+      const std::vector<int> plain = ramp_iterations(contact, step, false, method);
+      const std::vector<int> predicted = ramp_iterations(contact, step, true, method);
+      const int worst = *std::max_element(predicted.begin(), predicted.end());
+      const std::string at = std::string(full ? "S" : "two-level") + ", step " + std::to_string(step);
+      EXPECT_LE(worst, step < 0.005 ? (full ? 12 : 13) : (full ? 17 : 18)) << at;
+      EXPECT_LT(worst, *std::min_element(plain.begin(), plain.end())) << at;
+      RecordProperty("worst_step_predicted_" + at, std::to_string(worst));
+      RecordProperty("best_step_plain_" + at, std::to_string(*std::min_element(plain.begin(), plain.end())));
+    }
   }
 }
 

@@ -217,10 +217,11 @@ TEST(MpiContactCli, TheCommandsFlagsCountUnderMpirunAsWithout) {
   expect_same_results(r.serial, r.slab, 2);
 }
 
-TEST(MpiContactCli, TheTwoLevelPreconditionerOnThreeRanksGivesTheSerialSummary) {
-  // 128 rows on 3 ranks (43, 43, 42): slabs that start on odd rows, moved to even ones for the coarse grid.
-  const std::string args = "contact " + rough_case + " --set contact.grid=128 --set contact.preconditioner=two-level --json";
-  const auto r = serial_and_slab(args, 3, "two_level");
+TEST(MpiContactCli, TheFullPreconditionerOnThreeRanksGivesTheSerialSummary) {
+  // The two-level default runs in the tests above (128 rows on 3 ranks: 43, 43, 42, slabs that start on odd
+  // rows, moved to even ones for the coarse grid); the full preconditioner S alike.
+  const std::string args = "contact " + rough_case + " --set contact.grid=128 --set contact.preconditioner=full --json";
+  const auto r = serial_and_slab(args, 3, "full");
   ASSERT_FALSE(r.slab.is_null());
   expect_same_results(r.serial, r.slab, 3);
 }

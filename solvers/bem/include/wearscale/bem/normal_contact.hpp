@@ -45,15 +45,15 @@ class AddedCompliance {
 };
 
 enum class ContactMethod {
-  PreconditionedCG,  ///< Polonsky–Keer with the FFT preconditioner S (default)
+  PreconditionedCG,  ///< Polonsky–Keer with the FFT preconditioner S
   PolonskyKeer,      ///< the textbook, unpreconditioned Polonsky–Keer iteration
-  TwoLevelCG,        ///< preconditioned by TwoLevelStiffness (S where the body has no coarse grid)
+  TwoLevelCG,        ///< preconditioned by TwoLevelStiffness (S where the body has no coarse grid): the default
 };
 
 struct ContactOptions {
   double tolerance = 1e-12;   ///< on ε above
   int max_iterations = 10000;
-  ContactMethod method = ContactMethod::PreconditionedCG;
+  ContactMethod method = ContactMethod::TwoLevelCG;
   /// Asked once an iteration (if set): true ends the solve with Interrupted,
   /// on every process at the same iteration (the answers are summed with the
   /// iteration's own sums), e.g. [] { return interrupt_requested(); }.

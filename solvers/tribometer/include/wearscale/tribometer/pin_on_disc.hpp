@@ -166,6 +166,8 @@ class PinOnDisc {
   struct StageCompliance;
   void build_profile(double s);
   void classify(double s, const double* disc, std::vector<char>& layer) const;
+  // S itself, not the two-level default: on the pin-on-disc's 32–128 grids the two-level saves no time,
+  // and the tilted reading's wear history turns iterate-level differences into percent (docs/bem.md).
   bem::ContactResult solve_contact(double s, int max_iterations,
                                   bem::ContactMethod method = bem::ContactMethod::PreconditionedCG);
   void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
