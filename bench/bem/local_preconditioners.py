@@ -16,9 +16,12 @@ k_l = k_r = 4, k_s = 64, h'_rms = 1, p = 0.03 E*, seed 1) for:
                 sqrt(lambda)/2 over lambda >= f (2 pi)^2
   twolevel<b>:<a>  a + b(-Lap_h) with S - (a + b q^2) added from a 4x coarser
                 grid (block average, piecewise-constant prolongation)
+  fw<a>:<b>     wearscale's TwoLevelStiffness: a + b(-Lap_h) with S - (a + b q^2)
+                on the 2x coarser grid, full weighting R and P = 4 R^T
+                (a, b in units of q_max; wearscale: fw0.05:1)
 
 Usage: local_preconditioners.py N PRECONDITIONER [...]
-e.g.   local_preconditioners.py 512 none fourier lap4 poly2:256 twolevel2:0.05
+e.g.   local_preconditioners.py 512 none fourier lap4 poly2:256 twolevel2:0.05 fw0.05:1
 Needs numpy. Results recorded in docs/bem.md (#22, "cheaper preconditioners").
 """
 import sys
@@ -140,6 +143,30 @@ def preconditioner(name, n):
             rc = r.reshape(nc, 4, nc, 4).mean(axis=(1, 3))
             coarse = np.fft.irfft2(correction * np.fft.rfft2(rc), s=(nc, nc))
             return a * r + b * laplacian(r) / dx ** 2 + np.repeat(np.repeat(coarse, 4, 0), 4, 1)
+        return apply
+    if name.startswith("fw"):
+        a, b = (float(v) for v in name[2:].split(":"))
+        q_max = np.pi * n * np.sqrt(2)
+        a, b = a * q_max, b / q_max
+        nc = n // 2
+        qc = wavenumbers(nc)
+        correction = np.where(qc > 0, qc / 2 - (a + b * qc ** 2), 0.0)
+
+        def weight(f, axis):  # (f[2I-1] + 3 f[2I] + 3 f[2I+1] + f[2I+2]) / 8, periodic
+            even, odd = np.take(f, range(0, f.shape[axis], 2), axis), np.take(f, range(1, f.shape[axis], 2), axis)
+            return (np.roll(odd, 1, axis) + 3 * even + 3 * odd + np.roll(even, -1, axis)) / 8
+
+        def prolong(c, axis):  # 2 R^T along one axis: (c[I-1] + 3c[I])/4, (3c[I] + c[I+1])/4
+            out = np.repeat(c, 2, axis)
+            lo, hi = [slice(None)] * 2, [slice(None)] * 2
+            lo[axis], hi[axis] = slice(0, None, 2), slice(1, None, 2)
+            out[tuple(lo)] = (np.roll(c, 1, axis) + 3 * c) / 4
+            out[tuple(hi)] = (3 * c + np.roll(c, -1, axis)) / 4
+            return out
+
+        def apply(r):
+            coarse = np.fft.irfft2(correction * np.fft.rfft2(weight(weight(r, 0), 1)), s=(nc, nc))
+            return a * r + b * laplacian(r) / dx ** 2 + prolong(prolong(coarse, 0), 1)
         return apply
     raise SystemExit(f"unknown preconditioner '{name}'")
 

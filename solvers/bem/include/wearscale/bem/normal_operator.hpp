@@ -31,8 +31,8 @@ class NormalOperator {
   /// z = S g, Ŝ(q) = E*|q|/2 (zero mode: 0).
   virtual void stiffness(const RealField& g, RealField& z) = 0;
   /// z ≈ S g by TwoLevelStiffness (a preconditioner at a quarter of the
-  /// transforms) where the body has it; S itself where not (the default: a
-  /// free window, an odd grid, a body in slabs).
+  /// transforms) where the body has a 2× coarser grid (periodic, even); S
+  /// itself where not (a free window, an odd grid), as this default does.
   virtual void two_level_stiffness(const RealField& g, RealField& z) { stiffness(g, z); }
   /// Σ over every point of the grid of t K t.
   virtual double form(const RealField& t) = 0;
