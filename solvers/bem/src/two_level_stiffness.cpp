@@ -11,9 +11,9 @@ namespace wearscale::bem {
 namespace {
 // The stencil's fit to Ŝ = E*|q|/2 (q_max = π√(1/dx² + 1/dy²), the lattice's
 // corner): a = 0.1 Ŝ(q_max), b = E*/q_max. Chosen on the rough case of
-// docs/bem.md (a numpy prototype): 33, 38, 45, 53 iterations at 256² to 2048²
-// against S's own 31, 36, 44, 55; a = 0.2 Ŝ(q_max), or b halved or 1.5×,
-// cost 2–15 more at 1024².
+// docs/bem.md (bench/bem/local_preconditioners.py, fw0.05:1): 33, 38, 45, 53,
+// 56 iterations at 256² to 4096² against S's own 31, 36, 44, 55, 61; at 1024²
+// a doubled 47, a × 4 or b × 1.5 50.
 constexpr double kA = 0.1, kB = 1.0;
 }  // namespace
 
