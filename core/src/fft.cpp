@@ -38,6 +38,17 @@ unsigned flags_of(PlanRigor r) { return detail::fftw_flags(r); }
 fftw_complex* as_fftw(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
 }  // namespace
 
+void multiply_modes(std::span<std::complex<double>> modes, std::span<const double> symbol, double scale) {
+  if (modes.size() != symbol.size())
+    throw std::invalid_argument(fmt::format("multiply_modes: {} modes, {} values of the symbol", modes.size(),
+                                            symbol.size()));
+  std::complex<double>* s = modes.data();
+  const double* k = symbol.data();
+  const std::size_t n = modes.size();
+#pragma omp parallel for simd schedule(static)
+  for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
+}
+
 FFTPlan::FFTPlan(std::size_t nx, std::size_t ny, PlanRigor rigor, int threads)
     : nx_(nx), ny_(ny), threads_(threads) {
   if (nx == 0 || ny == 0) throw std::invalid_argument("FFTPlan: empty grid");

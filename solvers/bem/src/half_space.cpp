@@ -289,33 +289,21 @@ void HalfSpace::displacement(const VectorField& p, VectorField& u, Workspace& w)
 void HalfSpace::normal_displacement(const RealField& p, RealField& u, Workspace& w, double scale) const {
   if (!keeps(Response::Normal)) throw std::logic_error("HalfSpace::normal_displacement needs the normal response");
   forward(p, w.sz, w);
-  auto* s = w.sz.data();
-  const double* k = zz_.data();
-  const std::size_t n = zz_.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
+  multiply_modes(w.sz.values(), zz_, scale);
   backward(w.sz, u, w);
 }
 
 void HalfSpace::normal_stiffness(const RealField& g, RealField& p, Workspace& w) const {
   if (!keeps(Response::Normal)) throw std::logic_error("HalfSpace::normal_stiffness needs the normal response");
   forward(g, w.sz, w);
-  auto* s = w.sz.data();
-  const double* k = stiffness_.data();
-  const std::size_t n = stiffness_.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < n; ++m) s[m] *= k[m];
+  multiply_modes(w.sz.values(), stiffness_);
   backward(w.sz, p, w);
 }
 
 void HalfSpace::shear_displacement(const RealField& p, RealField& u, Workspace& w) const {
   if (!keeps(Response::ShearX)) throw std::logic_error("HalfSpace::shear_displacement needs the shear response");
   forward(p, w.sx, w);
-  auto* s = w.sx.data();
-  const double* k = xx_.data();
-  const std::size_t n = xx_.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < n; ++m) s[m] *= k[m];
+  multiply_modes(w.sx.values(), xx_);
   backward(w.sx, u, w);
 }
 

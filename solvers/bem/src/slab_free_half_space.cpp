@@ -91,11 +91,7 @@ void SlabFreeHalfSpace::store(RealField& out) {
 void SlabFreeHalfSpace::apply(const RealField& in, RealField& out, const std::vector<double>& kernel, double scale) {
   load(in);
   fft_.forward();
-  auto* s = fft_.spectrum();
-  const double* k = kernel.data();
-  const std::size_t n = kernel.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
+  multiply_modes({fft_.spectrum(), kernel.size()}, kernel, scale);
   fft_.backward();
   store(out);
 }

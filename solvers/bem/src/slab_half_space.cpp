@@ -74,11 +74,7 @@ void SlabHalfSpace::apply(const RealField& in, RealField& out, const std::vector
     throw std::invalid_argument("SlabHalfSpace: a field that is not this rank's slab");
   fft_.load(in.data());
   fft_.forward();
-  auto* s = fft_.spectrum();
-  const double* k = kernel.data();
-  const std::size_t n = kernel.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < n; ++m) s[m] *= scale * k[m];
+  multiply_modes({fft_.spectrum(), kernel.size()}, kernel, scale);
   fft_.backward();
   fft_.store(out.data());
 }

@@ -28,16 +28,15 @@ std::span<const double> row(const double* rows, std::size_t count, std::size_t k
 SlabTwoLevelStiffness::SlabTwoLevelStiffness(const Grid2D& grid, RowRange mine, double e_star, PlanRigor rigor)
     : grid_(grid),
       coarse_grid_(TwoLevelStiffness::supports(grid) ? TwoLevelStiffness::coarse_grid(grid) : grid),
-      mine_(mine),
       paired_(paired(mine)),
       coarse_fft_(coarse_grid_.nx, coarse_grid_.ny, rigor) {
   if (!TwoLevelStiffness::supports(grid)) throw std::invalid_argument("SlabTwoLevelStiffness: the grid has no 2× coarser grid");
   if (!(e_star > 0.0)) throw std::invalid_argument("SlabTwoLevelStiffness: E* must be > 0");
   stencil_ = TwoLevelStiffness::stencil(grid, e_star);
   const std::size_t ny = grid.ny, my = coarse_grid_.ny, rows = paired_.rows;
-  const bool moved = paired_.first != mine_.first || paired_.rows != mine_.rows;
+  const bool moved = paired_.first != mine.first || paired_.rows != mine.rows;
   if (mpi::max(moved ? 1.0 : 0.0) > 0.0) {  // collective: every rank takes part in the moves
-    to_paired_ = std::make_unique<RowExchange>(mine_, paired_, ny);
+    to_paired_ = std::make_unique<RowExchange>(mine, paired_, ny);
     r_.assign(rows * ny, 0.0);
     z_.assign(rows * ny, 0.0);
   }
@@ -86,11 +85,7 @@ void SlabTwoLevelStiffness::apply(const double* r, double* z) {
   to_coarse_fft_->forward(c, coarse_fft_rows_.data());
   coarse_fft_.load(coarse_fft_rows_.data());
   coarse_fft_.forward();
-  auto* s = coarse_fft_.spectrum();
-  const double* k = correction_.data();
-  const std::size_t modes = correction_.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < modes; ++m) s[m] *= k[m];
+  multiply_modes({coarse_fft_.spectrum(), correction_.size()}, correction_);
   coarse_fft_.backward();
   coarse_fft_.store(coarse_fft_rows_.data());
   to_coarse_fft_->backward(coarse_fft_rows_.data(), c);

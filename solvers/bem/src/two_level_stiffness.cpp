@@ -68,11 +68,7 @@ void TwoLevelStiffness::apply(const RealField& r, RealField& z) {
                           h + ((2 * I + 2) % nx) * my, my, c + I * my);
   // C on the coarse grid.
   plan_->forward(coarse_, spectrum_);
-  auto* s = spectrum_.data();
-  const double* k = correction_.data();
-  const std::size_t modes = correction_.size();
-#pragma omp parallel for simd schedule(static)
-  for (std::size_t m = 0; m < modes; ++m) s[m] *= k[m];
+  multiply_modes(spectrum_.values(), correction_);
   plan_->backward_unnormalized(spectrum_, coarse_);
   // P along the rows into half_ (mx × ny), then across them with the stencil into z.
 #pragma omp parallel for schedule(static)

@@ -1,11 +1,13 @@
 #pragma once
 // Real-to-complex FFTs of 2D fields through FFTW, with plans made once per
 // grid shape and shared by every solver that uses that shape.
+#include <complex>
 #include <cstddef>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -22,6 +24,11 @@ std::mutex& fftw_planner_mutex();
 /// FFTW's planner flags for a rigor.
 unsigned fftw_flags(PlanRigor r);
 }  // namespace detail
+
+/// modes[m] *= scale · symbol[m]: a convolution by a real, even kernel applied
+/// to the modes of a half spectrum (whole or a slab's rows). The two spans must
+/// have the same length (std::invalid_argument otherwise).
+void multiply_modes(std::span<std::complex<double>> modes, std::span<const double> symbol, double scale = 1.0);
 
 /// A forward (r2c) and backward (c2r) transform pair for one nx × ny shape.
 /// Thread-safe to execute concurrently on different fields.

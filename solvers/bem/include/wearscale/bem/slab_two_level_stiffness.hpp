@@ -30,7 +30,7 @@ class SlabTwoLevelStiffness {
  private:
   Grid2D grid_, coarse_grid_;
   TwoLevelStiffness::Stencil stencil_;
-  RowRange mine_, paired_;                     // FFTW's rows here; the same moved to start on an even row
+  RowRange paired_;                            // this rank's rows moved to start on an even row
   std::unique_ptr<RowExchange> to_paired_;     // null when every rank's rows already start even
   std::unique_ptr<RowExchange> to_coarse_fft_;  // coarse rows I = paired/2 → the coarse transform's rows
   SlabFFT coarse_fft_;
