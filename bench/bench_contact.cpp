@@ -76,6 +76,15 @@ double fft_pair_seconds(const Grid2D& g, bool cpu = false) {
   if (cpu) return (cpu_seconds() - c0) / reps;
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps;
 }
+
+// The solver's method for a benchmark's code (0: S, 1: unpreconditioned, 3:
+// two-level); the two-level's coarse plan is made here, before the clock starts.
+ContactMethod bench_method(int code, std::size_t n) {
+  if (code == 3) FFTPlanCache::global().plan(n / 2, n / 2);
+  return code == 0 ? ContactMethod::PreconditionedCG
+         : code == 3 ? ContactMethod::TwoLevelCG
+                     : ContactMethod::PolonskyKeer;
+}
 }  // namespace
 
 static void BM_RoughContact(benchmark::State& state) {
@@ -88,7 +97,7 @@ static void BM_RoughContact(benchmark::State& state) {
   const RealField h = rough(n);
   NormalContact contact(h, 1.0);
   const double fft = fft_pair_seconds(h.grid()), fft_cpu = fft_pair_seconds(h.grid(), true);
-  if (method == 3) FFTPlanCache::global().plan(n / 2, n / 2);  // the coarse grid's plan, made before the clock starts
+  const ContactMethod solver = bench_method(method, n);
   int iterations = 0;
   double seconds = 0.0, cpu = 0.0, fraction = 0.0;
   for (auto _ : state) {
@@ -100,7 +109,7 @@ static void BM_RoughContact(benchmark::State& state) {
       iterations = r.iterations;
       fraction = r.contact_fraction;
     } else {
-      ContactOptions o{1e-10, 100000, method == 0 ? ContactMethod::PreconditionedCG : method == 3 ? ContactMethod::TwoLevelCG : ContactMethod::PolonskyKeer};
+      ContactOptions o{1e-10, 100000, solver};
       const auto r = contact.solve_mean_pressure(0.03, o);
       iterations = r.iterations;
       fraction = r.contact_fraction;
@@ -137,8 +146,7 @@ static void BM_ContactLoadRamp(benchmark::State& state) {
   const RealField h = rough(n);
   NormalContact contact(h, 1.0);
   const double fft = fft_pair_seconds(h.grid());
-  if (method == 3) FFTPlanCache::global().plan(n / 2, n / 2);
-  ContactOptions o{1e-10, 100000, method == 3 ? ContactMethod::TwoLevelCG : ContactMethod::PreconditionedCG};
+  ContactOptions o{1e-10, 100000, bench_method(method, n)};
   o.predict_load = predict;
   const int steps = 10;
   double total = 0.0, worst = 0.0, seconds = 0.0;

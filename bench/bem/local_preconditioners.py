@@ -110,6 +110,15 @@ def polynomial_fit(m, lam_min, lam_max):
     return c
 
 
+def coarse_correction(n, a, b, factor):
+    """a + b q^2 from a, b in units of q_max; the coarse grid (n / factor) and S - (a + b q^2) on it."""
+    q_max = np.pi * n * np.sqrt(2)
+    a, b = a * q_max, b / q_max
+    nc = n // factor
+    qc = wavenumbers(nc)
+    return a, b, nc, np.where(qc > 0, qc / 2 - (a + b * qc ** 2), 0.0)
+
+
 def preconditioner(name, n):
     dx = 1.0 / n
     q = wavenumbers(n)
@@ -133,11 +142,8 @@ def preconditioner(name, n):
         return apply
     if name.startswith("twolevel"):
         b, a = (float(v) for v in name[8:].split(":"))
-        q_max = np.pi * n * np.sqrt(2)
-        a, b = a * q_max, b / q_max
-        nc = n // 4
-        qc = wavenumbers(nc)
-        correction = np.maximum(np.where(qc > 0, qc / 2 - (a + b * qc ** 2), 0.0), 0.0)
+        a, b, nc, correction = coarse_correction(n, a, b, 4)
+        correction = np.maximum(correction, 0.0)
 
         def apply(r):
             rc = r.reshape(nc, 4, nc, 4).mean(axis=(1, 3))
@@ -146,11 +152,7 @@ def preconditioner(name, n):
         return apply
     if name.startswith("fw"):
         a, b = (float(v) for v in name[2:].split(":"))
-        q_max = np.pi * n * np.sqrt(2)
-        a, b = a * q_max, b / q_max
-        nc = n // 2
-        qc = wavenumbers(nc)
-        correction = np.where(qc > 0, qc / 2 - (a + b * qc ** 2), 0.0)
+        a, b, nc, correction = coarse_correction(n, a, b, 2)
 
         def weight(f, axis):  # (f[2I-1] + 3 f[2I] + 3 f[2I+1] + f[2I+2]) / 8, periodic
             even, odd = np.take(f, range(0, f.shape[axis], 2), axis), np.take(f, range(1, f.shape[axis], 2), axis)
