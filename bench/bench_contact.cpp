@@ -8,6 +8,13 @@
 //
 //   build/bench/bench_contact --benchmark_filter=BM_RoughContact --benchmark_counters_tabular=true
 //
+// BM_IterationFloor: the operator work one iteration of each method cannot
+// do without, on fixed fields and without the solver's passes: u = K p and
+// t·Kt (Polonsky–Keer's 1.5 pairs of transforms, with the operator's own
+// spectral multiplies), and with z = M r by the two-level (part 1) or z = S r
+// (part 2) added. Its iter/fft_pair is the floor of the solvers' figure
+// above; the difference is the passes over the fields.
+//
 // BM_ContactLoadRamp: the same surface at 2048² loaded in steps of +1 % from
 // p̄ = 0.03 (warm starts, as the wear maps and the pin-on-disc do): iterations
 // per step.
@@ -30,6 +37,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <ctime>
 
 #include "wearscale/bem/frictional_contact.hpp"
@@ -131,6 +139,44 @@ BENCHMARK(BM_RoughContact)
     ->ArgNames({"method", "n", "threads"})
     ->ArgsProduct({{0, 1, 2, 3}, {512, 1024, 2048, 4096}, {1}})
     ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
+
+static void BM_IterationFloor(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const int part = static_cast<int>(state.range(1));
+  omp_set_num_threads(1);
+  FFTPlanCache::global().clear();
+  FFTPlanCache::global().set_threads(1);
+  const RealField h = rough(n);
+  HalfSpaceNormal body(h.grid(), 1.0, Boundary::Periodic);
+  RealField p(h.grid()), u(h.grid()), t(h.grid()), z(h.grid());
+  for (std::size_t k = 0; k < h.size(); ++k) {  // supported where the surface is high, as a contact is
+    p[k] = std::max(h[k] - 1.5, 0.0);
+    t[k] = p[k] > 0.0 ? h[k] - 2.0 : 0.0;
+  }
+  const double fft = fft_pair_seconds(h.grid());
+  bench_method(3, n);
+  if (part == 1) body.two_level_stiffness(t, z);  // made (and its coarse plan) before the clock
+  double form = 0.0, seconds = 0.0;
+  std::int64_t reps = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    body.displacement(p, u, 1.0);
+    form += body.form(t);
+    if (part == 1) body.two_level_stiffness(t, z);
+    if (part == 2) body.stiffness(t, z);
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    state.SetIterationTime(dt);
+    seconds += dt;
+    ++reps;
+  }
+  benchmark::DoNotOptimize(form);
+  state.counters["fft_pair_ms"] = 1e3 * fft;
+  state.counters["iter/fft_pair"] = seconds / static_cast<double>(reps) / fft;
+}
+BENCHMARK(BM_IterationFloor)
+    ->ArgNames({"n", "part"})
+    ->ArgsProduct({{512, 1024, 2048, 4096}, {0, 1, 2}})
+    ->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // A load ramp on one surface (warm starts, as a wear map walks its loads):
 // ten steps of `step` hundredths of a per cent from p̄ = 0.03, the iterations
