@@ -1,9 +1,11 @@
-// Normal contact on rough surfaces, three solvers side by side in one run:
-//   method 0: NormalContact, preconditioned (the default): u = K p (one FFT
-//             pair), z = S r (one pair), t·Kt by Parseval (one r2c): 2.5 pairs;
+// Normal contact on rough surfaces, four solvers side by side in one run:
+//   method 0: NormalContact preconditioned by S: u = K p (one FFT pair),
+//             z = S r (one pair), t·Kt by Parseval (one r2c): 2.5 pairs;
 //   method 1: NormalContact, unpreconditioned Polonsky–Keer: 1.5 pairs;
 //   method 2: a textbook Polonsky–Keer (polonsky_keer_reference.hpp): u = K p
-//             and r = K t, two pairs.
+//             and r = K t, two pairs;
+//   method 3: NormalContact preconditioned by the two-level (the default):
+//             z = M r by one pair of a quarter of the points, ≈ 1.73 pairs.
 // iter/fft_pair is the time of one iteration over that of one r2c + c2r pair.
 //
 //   build/bench/bench_contact --benchmark_filter=BM_RoughContact --benchmark_counters_tabular=true
@@ -15,9 +17,9 @@
 // (part 2) added. Its iter/fft_pair is the floor of the solvers' figure
 // above; the difference is the passes over the fields.
 //
-// BM_ContactLoadRamp: the same surface at 2048² loaded in steps of +1 % from
-// p̄ = 0.03 (warm starts, as the wear maps and the pin-on-disc do): iterations
-// per step.
+// BM_ContactLoadRamp: the same surface at 512² and 2048² loaded in ten steps
+// of +0.1 % or +1 % from p̄ = 0.03 (warm starts, as the wear maps do), with S or
+// the two-level, with or without the load predictor: iterations per step.
 //
 // BM_FrictionalRoughSphere: the frictional solver (Appendix A) on the rough
 // sphere of Fig. A.5 on 512² points: L = 500 µm, R = 6 mm, E = 70 GPa,
