@@ -1,4 +1,4 @@
-// Hertz contact of the thesis' pin (§8.1, VERIFICATION.md): SiO2 sphere of
+// Hertz contact of the thesis' pin (§8.1; the thesis is cited in docs/references.md): SiO2 sphere of
 // R = 3 mm on SiO2 at F = 1 N → E* = 37.6 GPa, a = 39.1 µm (2a = 78.2 µm), p0 = 312 MPa.
 #include <gtest/gtest.h>
 
