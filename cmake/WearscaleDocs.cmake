@@ -47,18 +47,27 @@ file(GLOB WEARSCALE_DOXYGEN_DIRS LIST_DIRECTORIES true
 list(JOIN WEARSCALE_DOXYGEN_DIRS " " WEARSCALE_DOXYGEN_INPUT)
 configure_file(${PROJECT_SOURCE_DIR}/docs/Doxyfile.in ${WEARSCALE_DOCS_DIR}/Doxyfile @ONLY)
 
+# The Python API page reads the built module's docstrings.
+set(WEARSCALE_DOCS_PYTHON_DIR "")
+if(TARGET wearscale_python)
+  set(WEARSCALE_DOCS_PYTHON_DIR ${PROJECT_BINARY_DIR}/python)
+endif()
+
 # One script builds the site, for the target and the test alike.
 set(WEARSCALE_DOCS_BUILD_COMMAND
     sh ${PROJECT_SOURCE_DIR}/tests/docs/build_site.sh
     "${WEARSCALE_DOXYGEN}" "${WEARSCALE_SPHINX_BUILD}" ${WEARSCALE_DOCS_DIR}/Doxyfile
     ${WEARSCALE_DOXYGEN_OUT}/xml ${PROJECT_SOURCE_DIR}/docs ${WEARSCALE_DOCS_DIR}
-    ${PROJECT_VERSION} "${WEARSCALE_DOCS_MISSING}")
+    ${PROJECT_VERSION} "python_dir=${WEARSCALE_DOCS_PYTHON_DIR}" "missing=${WEARSCALE_DOCS_MISSING}")
 
 if(WEARSCALE_DOCS_MISSING STREQUAL "")
   add_custom_target(docs
     COMMAND ${WEARSCALE_DOCS_BUILD_COMMAND}
     COMMENT "The manual: Doxygen's XML, then sphinx-build -W into ${WEARSCALE_DOCS_DIR}/html"
     VERBATIM)
+  if(TARGET wearscale_python)
+    add_dependencies(docs wearscale_python)
+  endif()
 else()
   message(STATUS "wearscale: no `docs` target; missing: ${WEARSCALE_DOCS_MISSING}")
 endif()
