@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <set>
@@ -69,12 +70,13 @@ nlohmann::json CaseReport::to_json() const {
   nlohmann::json runs_memory = nlohmann::json::array();
   for (const auto& run : memory) {
     nlohmann::json items = nlohmann::json::array();
-    double sum = 0.0;
+    double largest = 0.0;
     for (const auto& [what, bytes] : run) {
       items.push_back({{"what", what}, {"bytes", bytes}});
-      sum += bytes;
+      largest = std::max(largest, bytes);
     }
-    runs_memory.push_back({{"bytes", run.empty() ? nlohmann::json(nullptr) : nlohmann::json(sum)}, {"declared", items}});
+    runs_memory.push_back(
+        {{"bytes", run.empty() ? nlohmann::json(nullptr) : nlohmann::json(largest)}, {"declared", items}});
   }
   nlohmann::json j = {{"valid", true},
                       {"study", study},
@@ -156,14 +158,13 @@ std::string CaseReport::text() const {
   else
     out += fmt::format("# a sweep of {} runs over {} into {}/... (nothing written by the check)\n", output_dirs.size(),
                        sweep_key, output_dirs.front().parent_path().string());
-  // The runs' memory, as each declared it before starting.
+  // The runs' memory, as each declared it before starting: the largest need (each is a whole
+  // data set's, checked against the limit; two may overlap, so they are not summed).
   std::size_t largest = 0;
   double most = -1.0;
-  for (std::size_t k = 0; k < memory.size(); ++k) {
-    double sum = 0.0;
-    for (const auto& m : memory[k]) sum += m.second;
-    if (!memory[k].empty() && sum > most) most = sum, largest = k;
-  }
+  for (std::size_t k = 0; k < memory.size(); ++k)
+    for (const auto& m : memory[k])
+      if (m.second > most) most = m.second, largest = k;
   const auto& limit = memory_limit();
   if (most < 0.0) {
     out += fmt::format("# memory: study {} declares none before it starts (it sizes its data as the run builds "
@@ -173,7 +174,8 @@ std::string CaseReport::text() const {
     std::string items;
     for (const auto& [what, bytes] : memory[largest])
       items += fmt::format("\n#   {}: {}", what, format_bytes(bytes));
-    out += fmt::format("# memory declared before the run starts{}: {}, of the {} this process may use ({}):{}\n",
+    out += fmt::format("# memory declared before the run starts{}: {} (the largest need), of the {} this process "
+                       "may use ({}):{}\n",
                        memory.size() > 1 ? fmt::format(" (the largest of the {} runs, run {})", memory.size(), largest + 1)
                                          : std::string(),
                        format_bytes(most), format_bytes(limit.bytes), limit.source, items);

@@ -1104,7 +1104,11 @@ CaseReport inspect_case(const CaseLoader& parse, const RunOptions& options) {
     runs.push_back(prepare(std::move(probe), options.output_dir, options));
   }
   for (auto& run : runs) {
-    if (!run.cfg.fully_checked()) check_keys_in_run(*run.study, run.cfg);  // a study that reads them in run()
+    if (!run.cfg.fully_checked()) {  // a study that reads its keys in run(): up to its check
+      const MemoryTally tally;
+      check_keys_in_run(*run.study, run.cfg);
+      run.memory.insert(run.memory.end(), tally.requests().begin(), tally.requests().end());
+    }
     report.output_dirs.push_back(run.summary.output_dir);
     report.memory.push_back(run.memory);
   }

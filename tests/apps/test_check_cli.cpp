@@ -117,13 +117,16 @@ TEST(CheckCli, TheErrorsOfAStudyThatReadsItsKeysInItsRunAreListedToo) {
 
 TEST(CheckCli, DryRunOfAStudyCommandChecksAsCheckDoes) {
   const auto dir = work / "dry";
-  const auto r = run_cli("contact '" + (cases / "rough_contact.toml").string() + "' --pressure 0.05 --out c --dry-run",
+  const auto r = run_cli("contact '" + (cases / "rough_contact.toml").string() +
+                             "' --set contact.grid=64 --set contact.rough.k_s=16 --pressure 0.05 --out c --dry-run",
                          dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("mean_pressure = 0.05"));
-  EXPECT_THAT(r.out, HasSubstr("memory declared before the run starts: "));
+  EXPECT_THAT(r.out, HasSubstr("memory declared before the run starts: 640 KiB (the largest need)"));  // 160 B × 64²
   EXPECT_FALSE(fs::exists(dir / "c"));
-  const auto bad = run_cli("contact '" + (cases / "rough_contact.toml").string() + "' --pressure -1 --dry-run", dir);
+  const auto bad = run_cli("contact '" + (cases / "rough_contact.toml").string() +
+                               "' --set contact.grid=64 --set contact.rough.k_s=16 --pressure -1 --dry-run",
+                           dir);
   EXPECT_EQ(bad.status, 2);
   EXPECT_THAT(bad.err, HasSubstr("--pressure -1"));
 }

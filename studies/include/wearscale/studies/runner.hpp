@@ -113,7 +113,8 @@ struct CaseReport {
   nlohmann::json defaults;    ///< those defaults alone: {dotted key: value}
   /// Keys of the study's schema still absent: {key: its default in words, e.g. "0.6 d_c"}, worked out at run time.
   nlohmann::json described_defaults;
-  /// Per run: what it declared it needs before it starts (require_memory), each "what" with its bytes.
+  /// Per run: the needs it declared before it starts (require_memory: each a whole data set's, checked
+  /// against the memory limit), each "what" with its bytes.
   std::vector<std::vector<std::pair<std::string, double>>> memory;
   nlohmann::json to_json() const;
   /// The report as `wearscale check` prints it: the resolved case as TOML, defaults marked, then the memory.
