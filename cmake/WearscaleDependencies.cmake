@@ -119,24 +119,27 @@ endif()
 
 # --- MPI (optional): Open MPI and FFTW's MPI transforms -----------------------
 # WEARSCALE_MPI is ON when both are found; the serial build needs neither.
-find_package(MPI QUIET COMPONENTS C)
+# MPI's C API as the C++ compiler sees it (MPI::MPI_CXX without the removed
+# MPI-2 C++ bindings), so that a C++-only project can find_package(wearscale).
+set(MPI_CXX_SKIP_MPICXX TRUE)
+find_package(MPI QUIET COMPONENTS CXX)
 find_library(FFTW3_MPI_LIBRARY NAMES fftw3_mpi)
 find_path(FFTW3_MPI_INCLUDE_DIR NAMES fftw3-mpi.h)
 set(wearscale_mpi_found OFF)
-if(MPI_C_FOUND AND FFTW3_MPI_LIBRARY AND FFTW3_MPI_INCLUDE_DIR)
+if(MPI_CXX_FOUND AND FFTW3_MPI_LIBRARY AND FFTW3_MPI_INCLUDE_DIR)
   set(wearscale_mpi_found ON)
 endif()
 option(WEARSCALE_MPI "Distributed runs under mpirun/srun (Open MPI, FFTW-MPI); ON when both are found"
        ${wearscale_mpi_found})
 add_library(wearscale_mpi INTERFACE)
 if(WEARSCALE_MPI)
-  if(NOT MPI_C_FOUND)
+  if(NOT MPI_CXX_FOUND)
     wearscale_missing("MPI (for WEARSCALE_MPI=ON)" "libopenmpi-dev openmpi-bin")
   endif()
   if(NOT FFTW3_MPI_LIBRARY OR NOT FFTW3_MPI_INCLUDE_DIR)
     wearscale_missing("FFTW-MPI (for WEARSCALE_MPI=ON)" "libfftw3-mpi-dev")
   endif()
-  target_link_libraries(wearscale_mpi INTERFACE MPI::MPI_C ${FFTW3_MPI_LIBRARY})
+  target_link_libraries(wearscale_mpi INTERFACE MPI::MPI_CXX ${FFTW3_MPI_LIBRARY})
   target_include_directories(wearscale_mpi SYSTEM INTERFACE ${FFTW3_MPI_INCLUDE_DIR})
   # The C API only: without these, mpi.h also pulls in the removed MPI-2 C++ bindings.
   target_compile_definitions(wearscale_mpi INTERFACE WEARSCALE_MPI=1 OMPI_SKIP_MPICXX=1 MPICH_SKIP_MPICXX=1)

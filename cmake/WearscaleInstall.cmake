@@ -3,7 +3,8 @@
 # here), the exported targets wearscale::<layer> with wearscaleConfig.cmake
 # and wearscaleConfigVersion.cmake, a pkg-config file, the shipped data
 # (share/wearscale/data, found by the library relative to the installed
-# program or module, or through WEARSCALE_DATA) and the CLI. The Python
+# program or module, or through WEARSCALE_DATA), the example cases and scripts
+# (share/wearscale/cases, share/wearscale/examples) and the CLI. The Python
 # package installs from python/CMakeLists.txt. docs/install.md says how to use them.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -39,10 +40,13 @@ file(RELATIVE_PATH WEARSCALE_PC_UP /p/${CMAKE_INSTALL_LIBDIR}/pkgconfig /p)
 set(pc_cflags)
 set(pc_libs ${HDF5_C_LIBRARIES})
 if(WEARSCALE_MPI)
-  list(APPEND pc_cflags -DWEARSCALE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 ${MPI_C_COMPILE_DEFINITIONS}
-       ${MPI_C_COMPILE_OPTIONS})
-  set(pc_include_dirs ${FFTW3_MPI_INCLUDE_DIR} ${MPI_C_INCLUDE_DIRS})
-  list(APPEND pc_libs ${FFTW3_MPI_LIBRARY} ${MPI_C_LIBRARIES} ${MPI_C_LINK_FLAGS})
+  set(mpi_definitions ${MPI_CXX_COMPILE_DEFINITIONS})
+  list(FILTER mpi_definitions EXCLUDE REGEX "SKIP_MPICXX")  # given below, once
+  list(TRANSFORM mpi_definitions PREPEND "-D")
+  list(APPEND pc_cflags -DWEARSCALE_MPI=1 -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX=1 ${mpi_definitions}
+       ${MPI_CXX_COMPILE_OPTIONS})
+  set(pc_include_dirs ${FFTW3_MPI_INCLUDE_DIR} ${MPI_CXX_INCLUDE_DIRS})
+  list(APPEND pc_libs ${FFTW3_MPI_LIBRARY} ${MPI_CXX_LIBRARIES} ${MPI_CXX_LINK_FLAGS})
 endif()
 list(APPEND pc_include_dirs ${HDF5_C_INCLUDE_DIRS})
 list(REMOVE_DUPLICATES pc_include_dirs)
@@ -66,4 +70,9 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/wearscale.pc.in ${PROJECT_BINARY_DIR}
 install(FILES ${PROJECT_BINARY_DIR}/wearscale.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/materials/data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/wearscale/data)
+# The example cases and scripts: the help's and the man page's examples name cases/<case>.toml,
+# which the CLI finds here when the working folder has none (share/wearscale/cases).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/ DESTINATION ${CMAKE_INSTALL_DATADIR}/wearscale/cases)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/ DESTINATION ${CMAKE_INSTALL_DATADIR}/wearscale/examples
+        PATTERN "__pycache__" EXCLUDE)
 install(TARGETS wearscale RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

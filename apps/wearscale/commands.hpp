@@ -27,5 +27,6 @@ Command add_dem(CLI::App& app);
 Command add_wearmap(CLI::App& app);
 Command add_completion(CLI::App& app);
 Command add_merge(CLI::App& app);
+Command add_check(CLI::App& app);
 
 }  // namespace wearscale::app

@@ -25,6 +25,10 @@ const std::map<std::string, std::vector<std::string>>& table() {
        {"wearscale run cases/hertz_pin.toml --out hertz", pod + "    # 1 mm of sliding on a 32² grid",
         "wearscale run cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --set scale.macro.distance=0.001 "
         "--out sweep    # the oxide-thickness sweep, coarse"}},
+      {"check",
+       {"wearscale check cases/pin_on_disc_si_oxide.toml    # the resolved case, every default, the memory; nothing "
+        "written",
+        "wearscale check cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --json"}},
       {"backends", {"wearscale backends", "wearscale backends --json"}},
       {"version", {"wearscale version", "wearscale version --json"}},
       {"surface", {generate, "wearscale surface analyze rough/surface.h5 --no-window    # periodic: no window"}},

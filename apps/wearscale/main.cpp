@@ -25,6 +25,7 @@
 #include "commands.hpp"
 #include "completion.hpp"
 #include "examples.hpp"
+#include "parse_error.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
@@ -70,7 +71,6 @@ int run(int argc, char** argv) {
                "wearscale"};
   app.require_subcommand(1);
   app.fallthrough();  // -q, -v, -j are accepted after the subcommand too
-  app.failure_message(CLI::FailureMessage::help);
   bool quiet = false, verbose = false;
   int threads = 0;
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors on stderr; no progress bar");
@@ -86,6 +86,7 @@ int run(int argc, char** argv) {
     commands[app.get_subcommands({}).back()] = std::move(command);  // the subcommand just added
   };
   add(app::add_run);
+  add(app::add_check);
   add(app::add_backends);
   add(app::add_version);
   add(app::add_surface);
@@ -113,7 +114,7 @@ int run(int argc, char** argv) {
     std::cout << app::help_of_every_command(app);
     return 0;
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    log::error("{}", app::parse_error_line(app, argc, argv, e));
     return exit_bad_input;
   }
 

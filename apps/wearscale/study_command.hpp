@@ -24,6 +24,7 @@ struct StudyFlags {
   studies::RunOptions options;
   std::string out, resume;
   bool json = false;
+  bool dry_run = false;  ///< --dry-run: check and print the resolved case, as `wearscale check`
   std::map<std::string, Given> keys;  ///< schema key → its alias flag and value
 };
 
@@ -31,8 +32,13 @@ struct StudyFlags {
 void add_runner_flags(CLI::App* cmd, StudyFlags& flags, const std::string& example);
 /// Adds the command-line alias of every key of `study`'s schema that has one.
 void add_schema_flags(CLI::App* cmd, StudyFlags& flags, const std::string& study);
-/// Runs the study through the runner and prints its summary (JSON with --json).
+/// Runs the study through the runner and prints its summary (JSON with --json);
+/// with --dry-run checks it instead (check_study).
 int run_study(StudyFlags& flags);
+/// Checks the case as the runner reads it, every error at once, and prints
+/// the resolved case with every default and the memory it needs (JSON with
+/// --json); runs and writes nothing. 0 when valid (InputError otherwise).
+int check_study(StudyFlags& flags);
 /// Prints a summary as run_study does (JSON with `json`).
 void print_summary(const studies::RunSummary& summary, bool json);
 

@@ -90,7 +90,21 @@ double parse_bytes(const std::string& text) {
   return -1.0;
 }
 
+namespace {
+thread_local MemoryTally* current_tally = nullptr;
+}  // namespace
+
+MemoryTally::MemoryTally() : outer_(current_tally) { current_tally = this; }
+MemoryTally::~MemoryTally() { current_tally = outer_; }
+
+double MemoryTally::bytes() const {
+  double sum = 0.0;
+  for (const auto& r : requests_) sum += r.second;
+  return sum;
+}
+
 void require_memory(double bytes, const std::string& what, const std::string& advice) {
+  if (current_tally != nullptr) current_tally->requests_.emplace_back(what, bytes);
   const MemoryLimit& limit = memory_limit();
   if (std::isfinite(bytes) && bytes <= limit.bytes) return;
   throw InputError(fmt::format("{} needs {}, more than the {} this process may use ({}){}", what, format_bytes(bytes),

@@ -15,7 +15,7 @@ targets = ws.dem.material()
 lengths = [8, 12, 25]
 results = []
 for length in lengths:
-    r = ws.dem.patch_test(d0=0.6 * targets["d_c"], length=length, width=3)
+    r = ws.dem.patch_test(d0=0.6 * targets["d_c"], length=length, width=3, strengths=False)
     results.append(r)
     print(f"L = {length} d0: {r['particles']} particles, E = {r['young']:.4f}, nu = {r['poisson']:.4f}, "
           f"{r['elastic_steps']} steps")

@@ -23,13 +23,10 @@ args = arguments(__doc__.splitlines()[0], grid=(48, "BEM grid of the pin (case: 
                  distance=(0.05, "sliding distance [m] (case: 0.5)"))
 run = ws.run(SOURCE / "cases" / "oxide_thickness_sweep.toml", out=f"{args.out}/oxide_thickness_sweep",
              scale__macro__grid=args.grid, scale__macro__distance=f"{args.distance} m")
-h, mu = [], []
-for r in run["sweep"]["runs"]:
-    value = float(r["value"])
-    h.append(value)
-    mu.append(r["results"]["mu_final"]["value"])
-    print(f"h_layer = {value * 1e6 if math.isfinite(value) else math.inf:g} um: mu_final = {mu[-1]:.4f}, "
-          f"mu_mean = {r['results']['mu_mean']['value']:.4f}")
+table = run.results  # the sweep's table as columns (run.table(): a pandas DataFrame), in SI
+h, mu = table[next(iter(table))], table["mu_final"]  # the swept thickness is the first column
+for value, m, mean in zip(h, mu, table["mu_mean"]):
+    print(f"h_layer = {value * 1e6 if math.isfinite(value) else math.inf:g} um: mu_final = {m:.4f}, mu_mean = {mean:.4f}")
 
 finite = [(x * 1e6, m) for x, m in zip(h, mu) if math.isfinite(x)]
 bulk = [m for x, m in zip(h, mu) if not math.isfinite(x)]

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -39,6 +41,11 @@ struct Config::State {
   std::filesystem::path base_dir;  // relative paths in the file are relative to its folder
   std::set<std::string, std::less<>> used;
   std::map<std::string, std::string, std::less<>> overridden;  // key → origin of its value
+  bool collecting = false;          // collect_errors()
+  std::vector<std::string> errors;  // what was recorded while collecting
+  bool checked = false;             // reject_unknown_keys() passed on the whole case
+  bool stop_when_checked = false;
+  nlohmann::json defaults = nlohmann::json::object();  // key → the default a getter applied
 };
 
 namespace {
@@ -84,6 +91,24 @@ std::string type_name(const toml::node& n) {
   }
 }
 
+
+// The allowed value nearest to `v` (a stand-in for an out-of-range value while
+// errors are collected), or nullopt when there is none (NaN, an empty range).
+std::optional<double> nearest_allowed(const Range& range, double v) {
+  if (std::isnan(v)) return std::nullopt;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double lo = range.lo_open ? std::nextafter(range.lo, inf) : range.lo;
+  const double hi = range.hi_open ? std::nextafter(range.hi, -inf) : range.hi;
+  if (!(lo <= hi)) return std::nullopt;
+  const double s = std::clamp(v, lo, hi);
+  if (!range.contains(s)) return std::nullopt;
+  return s;
+}
+
+nlohmann::json json_number(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";  // as to_json writes an infinite value
+  return v;
+}
 
 nlohmann::json to_json_node(const toml::node& n) {
   if (auto t = n.as_table()) {
@@ -258,6 +283,16 @@ namespace {
 const toml::node* find(const toml::table& root, const std::string& full) { return root.at_path(full).node(); }
 }  // namespace
 
+bool Config::record(const InputError& e) const {
+  if (!state_->collecting) return false;
+  state_->errors.emplace_back(e.what());
+  return true;
+}
+
+void Config::record_default(std::string_view key, nlohmann::json value) const {
+  state_->defaults[full_key(key)] = std::move(value);
+}
+
 double Config::number(std::string_view key, const Range& range, units::Dimension dim) const {
   const std::string full = full_key(key);
   mark_used(key);
@@ -287,13 +322,27 @@ double Config::number(std::string_view key, const Range& range, units::Dimension
     throw error(key, fmt::format("expected a number, got {}", type_name(*n)), allowed);
   }
   v = range.snap(v);
-  if (!range.contains(v)) throw error(key, "out of range", allowed);
+  if (!range.contains(v)) {
+    const auto e = error(key, "out of range", allowed);
+    const auto stand_in = nearest_allowed(range, v);
+    if (stand_in && record(e)) return *stand_in;
+    throw e;
+  }
   return v;
 }
 
 double Config::number_or(std::string_view key, double fallback, const Range& range, units::Dimension dim) const {
   mark_used(key);
-  return has(key) ? number(key, range, dim) : fallback;
+  if (!has(key)) {
+    record_default(key, json_number(fallback));
+    return fallback;
+  }
+  try {
+    return number(key, range, dim);
+  } catch (const InputError& e) {
+    if (record(e)) return fallback;
+    throw;
+  }
 }
 
 long Config::integer(std::string_view key, const Range& range) const {
@@ -303,13 +352,32 @@ long Config::integer(std::string_view key, const Range& range) const {
   if (n == nullptr) throw error(key, "missing required integer", allowed);
   if (!n->is_integer()) throw error(key, fmt::format("expected an integer, got {}", type_name(*n)), allowed);
   const auto v = n->as_integer()->get();
-  if (!range.contains(static_cast<double>(v))) throw error(key, "out of range", allowed);
+  if (!range.contains(static_cast<double>(v))) {
+    const auto e = error(key, "out of range", allowed);
+    Range whole = range;  // the nearest integer inside
+    whole.lo = std::ceil(range.lo_open ? std::nextafter(range.lo, INFINITY) : range.lo);
+    whole.hi = std::floor(range.hi_open ? std::nextafter(range.hi, -INFINITY) : range.hi);
+    whole.lo_open = whole.hi_open = false;
+    const auto stand_in = nearest_allowed(whole, static_cast<double>(v));
+    if (stand_in && std::abs(*stand_in) < 9e15 && range.contains(*stand_in) && record(e))
+      return static_cast<long>(*stand_in);
+    throw e;
+  }
   return static_cast<long>(v);
 }
 
 long Config::integer_or(std::string_view key, long fallback, const Range& range) const {
   mark_used(key);
-  return has(key) ? integer(key, range) : fallback;
+  if (!has(key)) {
+    record_default(key, fallback);
+    return fallback;
+  }
+  try {
+    return integer(key, range);
+  } catch (const InputError& e) {
+    if (record(e)) return fallback;
+    throw;
+  }
 }
 
 bool Config::boolean(std::string_view key) const {
@@ -322,7 +390,16 @@ bool Config::boolean(std::string_view key) const {
 
 bool Config::boolean_or(std::string_view key, bool fallback) const {
   mark_used(key);
-  return has(key) ? boolean(key) : fallback;
+  if (!has(key)) {
+    record_default(key, fallback);
+    return fallback;
+  }
+  try {
+    return boolean(key);
+  } catch (const InputError& e) {
+    if (record(e)) return fallback;
+    throw;
+  }
 }
 
 std::string Config::string(std::string_view key) const {
@@ -335,7 +412,16 @@ std::string Config::string(std::string_view key) const {
 
 std::string Config::string_or(std::string_view key, std::string fallback) const {
   mark_used(key);
-  return has(key) ? string(key) : fallback;
+  if (!has(key)) {
+    record_default(key, fallback);
+    return fallback;
+  }
+  try {
+    return string(key);
+  } catch (const InputError& e) {
+    if (record(e)) return fallback;
+    throw;
+  }
 }
 
 std::string Config::choice(std::string_view key, std::initializer_list<std::string_view> allowed) const {
@@ -353,7 +439,16 @@ std::string Config::choice(std::string_view key, std::initializer_list<std::stri
 std::string Config::choice_or(std::string_view key, std::string fallback,
                               std::initializer_list<std::string_view> allowed) const {
   mark_used(key);
-  return has(key) ? choice(key, allowed) : fallback;
+  if (!has(key)) {
+    record_default(key, fallback);
+    return fallback;
+  }
+  try {
+    return choice(key, allowed);
+  } catch (const InputError& e) {
+    if (record(e)) return fallback;
+    throw;
+  }
 }
 
 std::vector<double> Config::numbers(std::string_view key, const Range& range, units::Dimension dim) const {
@@ -415,28 +510,103 @@ void Config::reject_unknown_keys() const {
     }
   };
   const toml::table* start = prefix_.empty() ? &state_->root : state_->root.at_path(prefix_).as_table();
-  if (start == nullptr) return;
-  walk(walk, *start, prefix_);
-  if (unknown.empty()) return;
+  if (start != nullptr) walk(walk, *start, prefix_);
 
-  const std::string key = unknown.front();
-  const std::string parent = parent_of(key);
-  std::vector<std::string> known;
-  for (const auto& u : used)
-    if (parent_of(u) == parent && u.find('[') == std::string::npos) known.push_back(leaf_of(u));
-  std::string allowed;
-  if (known.empty()) {
-    allowed = parent.empty() ? "no such top-level table is read" : fmt::format("nothing in [{}] is read by this case", parent);
-  } else {
-    std::string best;
-    std::size_t best_d = 3;  // suggest only close matches
-    for (const auto& k : known)
-      if (auto d = edit_distance(leaf_of(key), k); d < best_d) best_d = d, best = k;
-    allowed = fmt::format("keys read in [{}]: {}", parent, fmt::join(known, ", "));
-    if (!best.empty()) allowed += fmt::format(" (did you mean '{}'?)", best);
+  // Each unknown key with the keys read beside it and the closest of them.
+  std::vector<std::string> messages;
+  const Config root(state_, "");
+  for (const auto& key : unknown) {
+    const std::string parent = parent_of(key);
+    std::vector<std::string> known;
+    for (const auto& u : used)
+      if (parent_of(u) == parent && u.find('[') == std::string::npos) known.push_back(leaf_of(u));
+    std::string allowed;
+    if (known.empty()) {
+      allowed = parent.empty() ? "no such top-level table is read"
+                               : fmt::format("nothing in [{}] is read by this case", parent);
+    } else {
+      std::string best;
+      std::size_t best_d = 3;  // suggest only close matches
+      for (const auto& k : known)
+        if (auto d = edit_distance(leaf_of(key), k); d < best_d) best_d = d, best = k;
+      allowed = fmt::format("keys read in [{}]: {}", parent, fmt::join(known, ", "));
+      if (!best.empty()) allowed += fmt::format(" (did you mean '{}'?)", best);
+    }
+    messages.push_back(root.error(key, "unknown key (no component of this case reads it)", allowed).what());
   }
-  Config root(state_, "");
-  throw root.error(key, "unknown key (no component of this case reads it)", allowed);
+  if (!prefix_.empty()) {  // a part of the case: the rest may still be read
+    if (messages.empty()) return;
+    if (state_->collecting) {
+      state_->errors.insert(state_->errors.end(), messages.begin(), messages.end());
+      return;
+    }
+    state_->errors = messages;
+    raise_collected_errors();
+  }
+  // The whole case: every key has been read.
+  state_->errors.insert(state_->errors.end(), messages.begin(), messages.end());
+  raise_collected_errors();
+  state_->checked = true;
+  if (state_->stop_when_checked) throw CaseChecked{};
+}
+
+void Config::collect_errors(bool on) const { state_->collecting = on; }
+
+bool Config::has_collected_errors() const { return !state_->errors.empty(); }
+
+namespace {
+InputError error_of(const std::string& source, const std::vector<std::string>& errors) {
+  if (errors.size() == 1) return InputError(errors.front());
+  std::string text = fmt::format("{}: {} errors in the case:", source, errors.size());
+  for (std::size_t k = 0; k < errors.size(); ++k) text += fmt::format("\n  {}. {}", k + 1, errors[k]);
+  return InputError(text);
+}
+}  // namespace
+
+void Config::raise_collected_errors() const {
+  state_->collecting = false;
+  if (state_->errors.empty()) return;
+  const auto errors = std::move(state_->errors);
+  state_->errors.clear();
+  throw error_of(state_->source, errors);
+}
+
+InputError Config::collected_with(const std::string& last) const {
+  state_->collecting = false;
+  auto errors = std::move(state_->errors);
+  state_->errors.clear();
+  if (errors.empty()) return InputError(last);
+  errors.push_back(last + " (found with the values in error above replaced by their default or nearest allowed "
+                          "value; it may follow from them)");
+  return error_of(state_->source, errors);
+}
+
+bool Config::fully_checked() const { return state_->checked; }
+
+void Config::stop_when_checked(bool on) const { state_->stop_when_checked = on; }
+
+const nlohmann::json& Config::applied_defaults() const { return state_->defaults; }
+
+nlohmann::json Config::to_json_with_defaults() const {
+  nlohmann::json j = to_json_node(state_->root);
+  for (const auto& [key, value] : state_->defaults.items()) {
+    if (key.find('[') != std::string::npos) continue;  // an element of an array: the array is there
+    nlohmann::json* at = &j;
+    std::size_t start = 0;
+    for (;;) {
+      const auto dot = key.find('.', start);
+      const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      if (dot == std::string::npos) {
+        if (!at->contains(part)) (*at)[part] = value;
+        break;
+      }
+      if (!at->contains(part)) (*at)[part] = nlohmann::json::object();
+      at = &(*at)[part];
+      if (!at->is_object()) break;  // a value where a table would be: the case has its own
+      start = dot + 1;
+    }
+  }
+  return j;
 }
 
 nlohmann::json Config::to_json() const {

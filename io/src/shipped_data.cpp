@@ -42,6 +42,14 @@ std::filesystem::path installed_data_directory() {
 
 }  // namespace
 
+std::filesystem::path installed_file(const std::filesystem::path& relative) {
+  static const std::filesystem::path installed = installed_data_directory();
+  if (installed.empty() || relative.empty() || relative.is_absolute()) return {};
+  const auto candidate = installed.parent_path() / relative;  // share/wearscale/<relative>
+  std::error_code ec;
+  return std::filesystem::is_regular_file(candidate, ec) ? candidate : std::filesystem::path();
+}
+
 void set_data_directory(const std::filesystem::path& dir) {
   const std::lock_guard lock(override_mutex);
   override_dir = dir;

@@ -4,7 +4,10 @@
 // solver's storage (valid until its next solve: copy() to keep one).
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <cmath>
 #include <memory>
@@ -19,6 +22,8 @@
 #include "wearscale/bem/subsurface_stress.hpp"
 #include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/xdmf.hpp"
 
 namespace wearscale::python {
 
@@ -56,6 +61,22 @@ ContactMethod method_from(const std::string& name) {
   if (name == "polonsky-keer") return ContactMethod::PolonskyKeer;
   if (name == "two-level") return ContactMethod::TwoLevelCG;
   throw InputError("contact: method = '" + name + "'; allowed: preconditioned | two-level | polonsky-keer");
+}
+
+const char* method_name(ContactMethod method) {
+  switch (method) {
+    case ContactMethod::PreconditionedCG: return "preconditioned";
+    case ContactMethod::PolonskyKeer: return "polonsky-keer";
+    case ContactMethod::TwoLevelCG: return "two-level";
+  }
+  return "two-level";
+}
+
+// A normal load [N] as the mean pressure on the window (the CLI's normal_load, --load).
+double normal_pressure_of(double load, const Grid2D& g, const char* where) {
+  if (!(load >= 0.0) || !std::isfinite(load))
+    throw InputError(fmt::format("{}: load = {} N; allowed: a finite force >= 0", where, load));
+  return load / g.area();
 }
 
 py::dict to_dict(const ContactResult& r) {
@@ -161,6 +182,51 @@ py::dict stresses(const InArray& pressure, double lx, double ly, double poisson,
   return out;
 }
 
+// One field of a contact file: its dataset in contact.h5, the field, its unit, its name in ParaView.
+struct FieldOut {
+  std::string dataset;
+  const RealField* field;
+  const char* unit;
+  std::string name;
+};
+
+// A solved contact's fields as the CLI's contact study writes them: an HDF5
+// file of the same datasets and an XDMF sidecar beside it (ParaView). Returns the sidecar.
+std::string write_fields(const std::string& file, const Grid2D& g, const std::vector<FieldOut>& fields) {
+  std::filesystem::path h5_path(file);
+  if (h5_path.extension() != ".h5")
+    throw InputError(fmt::format("contact write: file = '{}'; allowed: a name ending in .h5 (its XDMF sidecar goes "
+                                 "beside it, .xdmf)",
+                                 file));
+  auto sidecar = h5_path;
+  sidecar.replace_extension(".xdmf");
+  {
+    py::gil_scoped_release release;
+    XdmfSidecar xdmf(g);
+    std::vector<XdmfField> shown;
+    {
+      H5Writer h5(h5_path, Commit::Now);
+      for (const auto& f : fields) {
+        h5.write_field(f.dataset, *f.field, f.unit);
+        shown.push_back({f.dataset, f.name});
+      }
+      h5.set_attribute("/", "written_by", "wearscale Python: contact write()");
+      xdmf.add(h5, shown);
+      std::error_code ec;
+      std::filesystem::remove(sidecar, ec);  // an old sidecar never describes a new file
+      h5.commit();
+    }
+    xdmf.write(sidecar, h5_path);
+  }
+  return sidecar.string();
+}
+
+RealField in_contact(const RealField& p) {
+  RealField c(p.grid());
+  for (std::size_t k = 0; k < p.size(); ++k) c[k] = p[k] > 0.0 ? 1.0 : 0.0;
+  return c;
+}
+
 // A sphere pressed on a free (non-periodic) window against Hertz's solution.
 py::dict hertz_check(std::size_t n, double radius, double load, double e_star) {
   const HertzContact hertz{radius, load, e_star};
@@ -194,6 +260,9 @@ py::dict hertz_check(std::size_t n, double radius, double load, double e_star) {
 }  // namespace
 
 void bind_contact(py::module_& m) {
+  // The defaults of the solves' keyword arguments: the options structs' own.
+  const ContactOptions contact_defaults{};
+  const FrictionalOptions frictional_defaults{};
   py::class_<PyNormalContact>(m, "NormalContact", R"(Frictionless normal contact (§2.3.2, (2.43)) of a rigid surface on an elastic half-space.
 
 NormalContact(heights, lx, ly=-1, e_star, boundary="periodic")
@@ -208,9 +277,12 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
            py::arg("lx"), py::arg("ly") = -1.0, py::arg("e_star"), py::arg("boundary") = "periodic")
       .def("solve",
            [](PyNormalContact& self, std::optional<double> mean_pressure, std::optional<double> interference,
-              double tolerance, int max_iterations, const std::string& method, bool predict_load) {
-             if (mean_pressure.has_value() == interference.has_value())
-               throw InputError("contact.NormalContact.solve: give exactly one of mean_pressure [Pa] >= 0, interference [m]");
+              double tolerance, int max_iterations, const std::string& method, bool predict_load,
+              std::optional<double> load) {
+             if (int(mean_pressure.has_value()) + int(interference.has_value()) + int(load.has_value()) != 1)
+               throw InputError("contact.NormalContact.solve: give exactly one of mean_pressure [Pa] >= 0, "
+                                "load [N] >= 0, interference [m]");
+             if (load) mean_pressure = normal_pressure_of(*load, self.solver.grid(), "contact.NormalContact.solve");
              ContactOptions options;
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
@@ -225,12 +297,16 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
                                  : self.solver.solve_interference(*interference, options);
              }
              auto d = to_dict(r);
+             d["normal_load_N"] = r.mean_pressure * self.solver.grid().area();
              d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
              return d;
            },
-           py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(), py::arg("tolerance") = 1e-12,
-           py::arg("max_iterations") = 10000, py::arg("method") = "two-level", py::arg("predict_load") = false,
-           R"(Solves for the imposed mean pressure p0 [Pa] >= 0 or interference delta = max h - d [m].
+           py::arg("mean_pressure") = py::none(), py::arg("interference") = py::none(),
+           py::arg("tolerance") = contact_defaults.tolerance, py::arg("max_iterations") = contact_defaults.max_iterations,
+           py::arg("method") = method_name(contact_defaults.method), py::arg("predict_load") = contact_defaults.predict_load,
+           py::arg("load") = py::none(),
+           R"(Solves for the imposed mean pressure p0 [Pa] >= 0, normal load F = p0 lx ly [N] >= 0 (force
+control, as the CLI's --load) or interference delta = max h - d [m]: exactly one of them.
 
 tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
 "two-level" (default: the preconditioner S on a 2x coarser grid, the same iterations at a quarter of
@@ -240,11 +316,25 @@ from the secant through the last two solutions (kept_solutions) instead of the l
 rescaled (about 13 iterations per +0.1 % step against 18 at 512^2). Releases the GIL; Ctrl-C ends the solve within an
 iteration (KeyboardInterrupt). Returns a dict: iterations,
 error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy_J (per cell),
-solve_seconds (wall time of the C++ solve, GIL released).
+normal_load_N (p0 lx ly), solve_seconds (wall time of the C++ solve, GIL released).
 ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
       .def("set_surface", [](PyNormalContact& self, const InArray& h) {
              self.solver.set_surface(field_from(h, self.solver.grid()));
            }, py::arg("heights"), "Replaces the rigid surface (same grid), keeping the last pressure as a warm start.")
+      .def("write", [](PyNormalContact& self, const std::string& file) {
+             const auto& c = self.solver;
+             const RealField contact = in_contact(c.pressure());
+             return write_fields(file, c.grid(),
+                                 {{"/surface/height", &c.surface(), "m", "height"},
+                                  {"/fields/pressure", &c.pressure(), "Pa", "pressure"},
+                                  {"/fields/gap", &c.gap(), "m", "gap"},
+                                  {"/fields/displacement", &c.displacement(), "m", "displacement"},
+                                  {"/fields/contact", &contact, "1", "contact"}});
+           }, py::arg("file"),
+           R"(Writes the last solve's fields for ParaView as `wearscale contact` writes contact.h5: the HDF5 file
+`file` (*.h5: /surface/height [m], /fields/pressure [Pa], /fields/gap [m], /fields/displacement [m],
+/fields/contact [1]) and its XDMF sidecar beside it (same name, .xdmf; open that one in ParaView).
+Returns the sidecar's path.)")
       .def("reset", [](PyNormalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
       .def_property_readonly("kept_solutions", [](PyNormalContact& self) { return self.solver.kept_solutions(); },
                              "Solutions kept for predict_load on this surface (0, 1 or 2).")
@@ -294,8 +384,11 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
            py::arg("heights"), py::arg("lx"), py::arg("ly") = -1.0, py::arg("young"), py::arg("poisson"),
            py::arg("law") = "coulomb", py::arg("mu") = py::none(), py::arg("shear_strength") = py::none())
       .def("solve",
-           [](PyFrictionalContact& self, double mean_pressure, double traction_x, double traction_y, double tolerance,
-              int max_iterations) {
+           [](PyFrictionalContact& self, std::optional<double> mean_pressure, double traction_x, double traction_y,
+              double tolerance, int max_iterations, std::optional<double> load) {
+             if (mean_pressure.has_value() == load.has_value())
+               throw InputError("contact.FrictionalContact.solve: give exactly one of mean_pressure [Pa] >= 0, load [N] >= 0");
+             if (load) mean_pressure = normal_pressure_of(*load, self.solver.grid(), "contact.FrictionalContact.solve");
              FrictionalOptions options;
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
@@ -304,20 +397,45 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
              const auto start = std::chrono::steady_clock::now();
              {
                py::gil_scoped_release release;
-               r = self.solver.solve(MeanTraction{mean_pressure, traction_x, traction_y}, options);
+               r = self.solver.solve(MeanTraction{*mean_pressure, traction_x, traction_y}, options);
              }
              auto d = to_dict(r);
+             d["normal_load_N"] = r.mean_traction.normal * self.solver.grid().area();
              d["solve_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
              return d;
            },
-           py::arg("mean_pressure"), py::arg("traction_x") = 0.0, py::arg("traction_y") = 0.0,
-           py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 20000,
-           R"(Solves for imposed mean tractions <p_N> = mean_pressure >= 0 and <p_T> = (traction_x, traction_y) [Pa].
+           py::arg("mean_pressure") = py::none(), py::arg("traction_x") = 0.0, py::arg("traction_y") = 0.0,
+           py::arg("tolerance") = frictional_defaults.tolerance, py::arg("max_iterations") = frictional_defaults.max_iterations,
+           py::arg("load") = py::none(),
+           R"(Solves for imposed mean tractions <p_N> = mean_pressure >= 0 (or the normal load [N], load =
+<p_N> lx ly: force control) and <p_T> = (traction_x, traction_y) [Pa].
 
 tolerance on the relative cost (A.14). Releases the GIL; Ctrl-C ends the solve within an iteration
 (KeyboardInterrupt). A tangential load above what friction
 carries (gross sliding) is a ValueError, never clamped. Returns a dict of scalars (units in the
 names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement_x_m, ...)")
+      .def("write", [](PyFrictionalContact& self, const std::string& file) {
+             const auto& c = self.solver;
+             const RealField contact = in_contact(c.traction().z);
+             return write_fields(file, c.grid(),
+                                 {{"/surface/height", &c.surface(), "m", "height"},
+                                  {"/fields/pressure", &c.traction().z, "Pa", "p_N"},
+                                  {"/fields/traction_x", &c.traction().x, "Pa", "p_x"},
+                                  {"/fields/traction_y", &c.traction().y, "Pa", "p_y"},
+                                  {"/fields/stick_slip", &c.stick_slip_map(), "1", "stick_slip"},
+                                  {"/fields/gap", &c.normal_gap(), "m", "gap"},
+                                  {"/fields/slip_x", &c.slip().x, "m", "slip_x"},
+                                  {"/fields/slip_y", &c.slip().y, "m", "slip_y"},
+                                  {"/fields/displacement", &c.displacement().z, "m", "u_z"},
+                                  {"/fields/displacement_x", &c.displacement().x, "m", "u_x"},
+                                  {"/fields/displacement_y", &c.displacement().y, "m", "u_y"},
+                                  {"/fields/contact", &contact, "1", "contact"}});
+           }, py::arg("file"),
+           R"(Writes the last solve's fields for ParaView as `wearscale contact --friction ...` writes contact.h5
+(the same datasets and names: /surface/height, /fields/pressure, traction_x, traction_y [Pa], stick_slip
+(0 open, 1 stick, 2 slip), gap, slip_x, slip_y, displacement, displacement_x, displacement_y [m], contact [1];
+the subsurface stresses are contact.stresses()'s) into `file` (*.h5) and its XDMF sidecar beside it (.xdmf).
+Returns the sidecar's path.)")
       .def("reset", [](PyFrictionalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
       .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().z, self); },
                              "p_N [Pa], read-only view.")

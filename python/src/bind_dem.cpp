@@ -257,6 +257,11 @@ py::dict trapped_particles(const CellArgs& cell, int count, double diameter, dou
 }  // namespace
 
 void bind_dem(py::module_& m) {
+  // The defaults of the keyword arguments: the spec structs' own (one place for each).
+  static const PatchTestSpec patch_defaults{};
+  static const RoughShearSpec rough_defaults{};
+  static const SlidingCellSpec cell_defaults{};
+  static const TrappedParticlesSpec trapped_defaults{};
   m.def("material", [](const std::string& name, std::optional<double> poisson, double s) {
           return targets(material_of(name, poisson, s));
         }, py::arg("name") = "table-6.4", py::arg("poisson") = py::none(), py::arg("scaling_exponent") = 0.5,
@@ -307,12 +312,15 @@ sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), wi
           return d;
         },
         py::arg("material") = "table-6.4", py::arg("poisson") = py::none(), py::arg("d0") = py::none(),
-        py::arg("lattice") = "hcp", py::arg("load_along_c_axis") = false, py::arg("length") = 25.0,
-        py::arg("width") = 3.0, py::arg("load") = 0.01, py::arg("time_step") = 0.1, py::arg("strengths") = false,
-        py::arg("max_elastic_steps") = 40000, py::arg("seed") = 1, py::arg("scaling_exponent") = 0.5,
+        py::arg("lattice") = patch_defaults.amorphous ? "amorphous" : "hcp",
+        py::arg("load_along_c_axis") = patch_defaults.load_along_c_axis, py::arg("length") = patch_defaults.length,
+        py::arg("width") = patch_defaults.width, py::arg("load") = patch_defaults.load,
+        py::arg("time_step") = patch_defaults.time_step, py::arg("strengths") = patch_defaults.strengths,
+        py::arg("max_elastic_steps") = patch_defaults.max_elastic_steps, py::arg("seed") = patch_defaults.seed,
+        py::arg("scaling_exponent") = 0.5,
         R"(The DEM patch test of §6.2.1: a sample between two walls in confined compression gives
 C11, C12 and so E and nu; with strengths=True the walls are also pulled apart and sheared
-(sigma_mN, sigma_mT; minutes). d0: particle size (default 0.6 d_c, in the material's units);
+(sigma_mN, sigma_mT; minutes; strengths=False for E and nu alone). d0: particle size (default 0.6 d_c, in the material's units);
 length, width in d0; load in units of E; time_step in the critical step. Releases the GIL.)");
   m.def("sheared_junction", &sheared_junction, py::arg("material") = "SiO2", py::arg("diameter") = 20e-9,
         py::arg("d0") = 3e-9, py::arg("largest") = 7.5e-9, py::arg("box") = std::vector<double>{60e-9, 40e-9, 40e-9},
@@ -342,12 +350,14 @@ the thesis' D = 20 nm.)");
                                        settle_distance, time_step, record_every, seed, scaling_exponent, law, friction),
                              roughness, hurst, shortest_wavelength);
         },
-        py::arg("roughness") = 0.02, py::arg("hurst") = 0.8, py::arg("shortest_wavelength") = 4.0,
-        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = 0.0,
-        py::arg("box") = std::vector<double>{150e-9, 10.5e-9, 60e-9}, py::arg("velocity") = 50.0,
+        py::arg("roughness") = rough_defaults.roughness, py::arg("hurst") = rough_defaults.hurst,
+        py::arg("shortest_wavelength") = rough_defaults.shortest_wavelength,
+        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
+        py::arg("box") = std::vector<double>{150e-9, 10.5e-9, 60e-9}, py::arg("velocity") = cell_defaults.velocity,
         py::arg("pressure") = 0.5e9, py::arg("sliding_distance") = 150e-9, py::arg("settle_distance") = 3e-9,
-        py::arg("time_step") = 0.1, py::arg("record_every") = 200, py::arg("seed") = 1,
-        py::arg("scaling_exponent") = 0.5, py::arg("law") = "cohesive", py::arg("friction") = 0.5,
+        py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
+        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
+        py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
         R"(The sheared rough surfaces of §7.2 (Figs. 7.4-7.7): two amorphous surfaces of self-affine
 roughness Sa = roughness * L (Hurst exponent hurst, shortest wavelength in d0) carved from one
 relaxed box, the bottom wall fixed, the top wall pressed at `pressure` [Pa] and slid at `velocity`
@@ -368,12 +378,14 @@ defaults (the thesis' 50 d0 cell).)");
                                              scaling_exponent, law, friction),
                                    count, diameter, clearance, fit_from);
         },
-        py::arg("count") = 3, py::arg("diameter") = 30e-9, py::arg("clearance") = 0.25, py::arg("fit_from") = 0.8,
-        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = 0.0,
-        py::arg("box") = std::vector<double>{300e-9, 10.5e-9, 54e-9}, py::arg("velocity") = 50.0,
+        py::arg("count") = trapped_defaults.count, py::arg("diameter") = 30e-9,
+        py::arg("clearance") = trapped_defaults.clearance, py::arg("fit_from") = trapped_defaults.fit_from,
+        py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
+        py::arg("box") = std::vector<double>{300e-9, 10.5e-9, 54e-9}, py::arg("velocity") = cell_defaults.velocity,
         py::arg("pressure") = 0.6e9, py::arg("sliding_distance") = 300e-9, py::arg("settle_distance") = 3e-9,
-        py::arg("time_step") = 0.1, py::arg("record_every") = 200, py::arg("seed") = 1,
-        py::arg("scaling_exponent") = 0.5, py::arg("law") = "cohesive", py::arg("friction") = 0.5,
+        py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
+        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
+        py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
         R"(Loose particles trapped between flat surfaces, §7.3 (Figs. 7.8-7.9): `count` discs of
 diameter D [m] in a gap of height D (clearance in d0 from the surfaces), the top wall pressed at
 `pressure` [Pa] and slid at `velocity` [m/s]. The regime from the loose particles' rigid-body misfit

@@ -5,6 +5,8 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/units.hpp"
+#include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 
 namespace wearscale::python {
@@ -35,6 +37,26 @@ void bind_io(py::module_& m) {
             return py::str(h5.string_attribute(object, name));  // a string attribute, or the error naming it
           }
         }, py::arg("file"), py::arg("object"), py::arg("name"), "A string or number attribute (e.g. 'unit', 'lx').");
+  m.def("column_name", [](const std::string& name, const std::string& unit) {
+          try {
+            return csv_column_name(name, unit);
+          } catch (const std::invalid_argument& e) {
+            throw InputError(std::string("io.column_name: ") + e.what());
+          }
+        }, py::arg("name"), py::arg("unit"),
+        "The name of a quantity with its SI unit, as every CSV table of wearscale spells its columns and as the "
+        "results of run() and of the contact solves are keyed: ('p_N', 'Pa') -> 'p_N_Pa', ('wear', 'm^3') -> "
+        "'wear_m3', ('friction', '1') -> 'friction'.");
+  m.def("quantity", [](const std::string& text) {
+          try {
+            const auto q = units::parse_quantity(text);
+            return py::make_tuple(q.value, q.dimension.to_string());
+          } catch (const std::invalid_argument& e) {
+            throw InputError("io.quantity: '" + text + "': " + e.what());
+          }
+        }, py::arg("text"),
+        "A case file's quantity (\"1 um\", \"8 mm/s\", \"2.5\") in SI: (value, SI unit of its dimension; '1' for a "
+        "plain number).");
 }
 
 }  // namespace wearscale::python

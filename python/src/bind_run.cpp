@@ -90,15 +90,25 @@ void bind_run(py::module_& m) {
         }, py::arg("dir"), py::arg("quiet") = true,
         "`wearscale merge DIR --json`: the outputs of an ensemble whose shards (task='K/N') ran into DIR; returns "
         "the JSON text.");
-  m.def("check_case", [](const std::string& case_file, const std::vector<std::string>& overrides) {
+  m.def("inspect_case", [](const std::string& case_file, const std::vector<std::string>& overrides,
+                           std::optional<std::string> out, std::optional<std::string> case_text) {
           studies::RunOptions options;
           options.case_file = case_file;
+          options.case_text = std::move(case_text);
           options.overrides = overrides;
-          std::vector<std::string> dirs;
-          for (const auto& d : studies::check_case([&] { return Config::load(case_file); }, options)) dirs.push_back(d.string());
-          return dirs;
-        }, py::arg("case_file"), py::arg("overrides") = std::vector<std::string>{},
-        "Every check run_case makes before writing anything; returns each run's output folder.");
+          if (out) options.output_dir = *out;
+          std::string json, text;
+          {
+            py::gil_scoped_release release;
+            const auto report = studies::inspect_case(studies::case_loader(options), options);
+            json = report.to_json().dump();
+            text = report.text();
+          }
+          return py::make_tuple(json, text);
+        }, py::arg("case_file"), py::arg("overrides") = std::vector<std::string>{}, py::arg("out") = py::none(),
+        py::arg("case_text") = py::none(),
+        "`wearscale check CASE --set K=V... [--out DIR]`: the case checked as run_case reads it (every error at once), "
+        "nothing run or written; returns (the JSON of `--json`, the text it prints).");
 }
 
 }  // namespace wearscale::python

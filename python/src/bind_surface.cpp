@@ -2,6 +2,8 @@
 // spectra, and the topography files wearscale reads.
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -89,7 +91,20 @@ py::dict analyze(const InArray& heights, double lx, double ly, double q_min, dou
   out["psd_c_m4"] = owned(std::move(radial.c));
   out["psd_count"] = radial.count;
   out["psd_2d_m4"] = owned(std::move(psd));
-  if (fit) {
+  // A self-affine surface has 0 < H <= 1: a fit outside says the band is not self-affine, and gives no H
+  // (as `wearscale surface analyze`: the fit failed, why, and the rest stands).
+  std::string failure;
+  if (!fit)
+    failure = "too few PSD bins in the band for a fit";
+  else if (!(fit->hurst > 0.0 && fit->hurst <= 1.0 + 3.0 * fit->hurst_error) || !std::isfinite(fit->hurst_error))
+    failure = fmt::format("the PSD over q = {:.4g} … {:.4g} rad/m fits H = {:.3f} ± {:.3f}, outside (0, 1]: that band "
+                          "is not self-affine; give the self-affine band as q_min, q_max",
+                          fit->q_min, fit->q_max, fit->hurst, fit->hurst_error);
+  py::dict status;
+  status["status"] = failure.empty() ? "done" : "failed";
+  status["reason"] = failure;
+  out["hurst_fit"] = status;
+  if (fit && failure.empty()) {
     out["hurst"] = fit->hurst;
     out["hurst_error"] = fit->hurst_error;
     out["psd_slope"] = fit->slope;
@@ -144,7 +159,8 @@ Returns (heights [m], an (n, ny) float64 array with y fastest, metadata dict).)"
 Returns a dict: sa_m (1.4), h_rms_m (1.5), h_prime_rms (1.6, spectral; and _finite_difference),
 the radial PSD (1.9) psd_q_rad_per_m, psd_c_m4, psd_count, the 2D PSD psd_2d_m4 (nx x ny/2+1),
 and the Hurst exponent fitted on C ~ q^-2(H+1) in [q_min, q_max] rad/m (every bin by default):
-hurst, hurst_error (standard error), psd_slope, psd_slope_error, fit_bins.
+hurst, hurst_error (standard error), psd_slope, psd_slope_error, fit_bins; hurst_fit: {status: "done"
+or "failed", reason}: a fit outside 0 < H <= 1 (a band that is not self-affine) gives no hurst.
 detrend: subtract the least-squares plane first; window: radial Hann window (measured data).)");
   m.def("read", &read, py::arg("file"), py::arg("dataset") = default_surface_dataset, py::arg("lx") = py::none(),
         py::arg("ly") = py::none(), py::arg("missing") = "refuse",

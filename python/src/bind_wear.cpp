@@ -119,6 +119,7 @@ py::dict energy_release(const BoolArray& contact, double lx, double shear_modulu
 }  // namespace
 
 void bind_wear(py::module_& m) {
+  static const RoughWearMapSpec map_defaults{};  // the defaults of rough_wear_map's keywords
   m.def("analytic_map_2d", [](double x_max, double y_max, std::size_t nx, std::size_t ny) {
           WearMap map;
           {
@@ -207,11 +208,11 @@ of the whole loading elastic_energy_J = 1/2 dA sum p u (4.2). shear_modulus [Pa]
           d["candidates"] = map.candidates;
           return d;
         }, py::arg("n") = 128, py::arg("hurst") = 0.8, py::arg("k_l") = 8.0, py::arg("k_s") = 16.0,
-        py::arg("poisson") = 0.3, py::arg("seeds") = std::vector<std::uint64_t>{1}, py::arg("loads"),
-        py::arg("critical_diameters"), py::arg("tensile_strength") = 1.0,
+        py::arg("poisson") = 0.3, py::arg("seeds") = std::vector<std::uint64_t>{1}, py::kw_only(), py::arg("loads"),
+        py::arg("critical_diameters"), py::arg("tensile_strength") = map_defaults.tensile_strength,
         R"(The numerical wear map of rough surfaces (§5.3): particles detached by sheared micro-contacts.
 
-n: grid; hurst, k_l, k_s: the surface (§5.3: 512, 0.8, 8, n/8); loads: normalised p_N, increasing;
+n: grid; hurst, k_l, k_s: the surface (§5.3: 512, 0.8, 8, n/8); loads (keyword): normalised p_N, increasing;
 critical_diameters: d*/L; tensile_strength: sigma_m/sigma_j (4.25). Returns (loads x d*) arrays of
 the particle count, wear volume / L^3 (mean, sd over seeds), largest particle / L, A/A0, validity.)");
 }

@@ -308,3 +308,103 @@ def test_ctrl_c_ends_a_long_solve_within_an_iteration_as_keyboard_interrupt():
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+
+
+def test_a_force_controlled_solve_imposes_the_load_over_the_window(rough):
+    # load = F [N] is the mean pressure F / (lx ly), as the CLI's --load (contact.normal_load).
+    area = rough.lx * rough.ly
+    by_load = ws.contact.NormalContact(rough, e_star=E_STAR)
+    r = by_load.solve(load=2e6 * area)
+    by_pressure = ws.contact.NormalContact(rough, e_star=E_STAR)
+    q = by_pressure.solve(mean_pressure=2e6)
+    assert np.array_equal(by_load.pressure, by_pressure.pressure)
+    assert r["normal_load_N"] == approx(2e6 * area, rel=1e-12) and r["mean_pressure_Pa"] == approx(2e6, rel=1e-12)
+    assert by_load.pressure.sum() * area / by_load.pressure.size == approx(2e6 * area, rel=1e-12)
+    with pytest.raises(ValueError, match="exactly one of mean_pressure"):
+        by_load.solve(load=1.0, mean_pressure=1.0)
+    with pytest.raises(ValueError, match="load = -1"):
+        by_load.solve(load=-1.0)
+    f = sphere_frictional(n=32)
+    lx, ly = f.size
+    a = f.solve(load=2e5 * lx * ly, traction_x=0.2e5)
+    assert a["mean_pressure_Pa"] == approx(2e5, rel=1e-9) and a["normal_load_N"] == approx(2e5 * lx * ly, rel=1e-9)
+
+
+def test_a_force_controlled_solve_equals_the_cli_contact_with_load(cli, tmp_path):
+    case = tmp_path / "load.toml"
+    case.write_text("""[case]
+name = "by-load"
+[contact]
+grid = 32
+size = "100 um"
+e_star = "100 GPa"
+normal_load = "2 N"
+[contact.rough]
+hurst = 0.8
+k_l = 2
+k_s = 8
+seed = 4
+hprime_rms = 0.1
+""")
+    out = tmp_path / "out"
+    done = subprocess.run([cli, "-q", "-j", "1", "contact", str(case), "--out", str(out), "--json"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    h = ws.io.read(str(out / "contact.h5"), "/surface/height")
+    lx = ws.io.attribute(str(out / "contact.h5"), "/surface/height", "lx")
+    c = ws.contact.NormalContact(h, lx, e_star=1e11)
+    c.solve(load=2.0)
+    p_cli = ws.io.read(str(out / "contact.h5"), "/fields/pressure")
+    assert np.abs(c.pressure - p_cli).max() <= 1e-12 * p_cli.max()
+
+
+def test_a_contact_writes_the_fields_of_the_cli_for_paraview(cli, rough, tmp_path):
+    import xml.etree.ElementTree as ET
+    h5py = pytest.importorskip("h5py")
+    c = ws.contact.NormalContact(rough, e_star=E_STAR)
+    c.solve(mean_pressure=2e6)
+    sidecar = c.write(str(tmp_path / "mine.h5"))
+    assert sidecar == str(tmp_path / "mine.xdmf")
+    with h5py.File(tmp_path / "mine.h5", "r") as f:
+        assert np.array_equal(f["/fields/pressure"][()], c.pressure)
+        assert np.array_equal(f["/fields/gap"][()], c.gap)
+        assert np.array_equal(f["/surface/height"][()], rough.heights)
+        assert np.array_equal(f["/fields/contact"][()], c.contact.astype(float))
+        assert f["/surface/height"].attrs["lx"] == approx(rough.lx, rel=1e-15)
+        mine = {k for k in f["/fields"]}
+    # The CLI's contact.h5 of a normal contact: the same fields under the same names.
+    s = tmp_path / "s.h5"
+    ws.surface.write(s, rough)
+    done = subprocess.run([cli, "-q", "-j", "1", "contact", "--surface", str(s), "--pressure", "2e6", "--e-star", "1e11",
+                           "--out", str(tmp_path / "cli")], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    with h5py.File(tmp_path / "cli" / "contact.h5", "r") as f:
+        assert mine == {k for k in f["/fields"]}
+        assert np.abs(f["/fields/pressure"][()] - c.pressure).max() <= 1e-10 * c.pressure.max()
+    # The sidecar names the views ParaView reads, in the file beside it.
+    items = [e.text.strip() for e in ET.parse(sidecar).iter("DataItem") if e.get("Format") == "HDF"]
+    assert "mine.h5:/xdmf/fields/pressure" in items and "mine.h5:/xdmf/surface/height" in items
+    f = sphere_frictional(n=32)
+    f.solve(mean_pressure=2e5, traction_x=0.2e5)
+    f.write(str(tmp_path / "fr.h5"))
+    with h5py.File(tmp_path / "fr.h5", "r") as g:
+        assert np.array_equal(g["/fields/stick_slip"][()], f.stick_slip.astype(float))
+        assert np.array_equal(g["/fields/traction_x"][()], f.traction_x)
+    with pytest.raises(ValueError, match=r"\.h5"):
+        c.write(str(tmp_path / "mine.hdf"))
+
+
+def test_paraview_opens_what_a_contact_writes(rough, tmp_path, source_dir):
+    import shutil
+    if shutil.which("pvpython") is None:
+        pytest.skip("ParaView's pvpython is not on PATH: the XDMF written from Python is checked with h5py only")
+    c = ws.contact.NormalContact(rough, e_star=E_STAR)
+    c.solve(mean_pressure=2e6)
+    sidecar = c.write(str(tmp_path / "c.h5"))
+    dx = rough.lx / rough.shape[0]
+    done = subprocess.run(["pvpython", str(source_dir / "tests" / "apps" / "paraview_probe.py"), sidecar, "pressure",
+                           str(5 * dx), str(7 * dx)], capture_output=True, text=True)
+    line = [l for l in done.stdout.splitlines() if l.startswith("PROBE ")]
+    assert line, done.stdout + done.stderr
+    for reader in json.loads(line[0][6:]).values():
+        assert reader["value"] == approx(c.pressure[5, 7], rel=1e-12, abs=1e-300)

@@ -30,10 +30,10 @@ def members():
                     if attr.startswith("_") or hasattr(object, attr):
                         continue
                     seen.append((f"{module.__name__}.{name}.{attr}", inspect.getattr_static(obj, attr)))
-    for name in ("run", "RunResult"):
+    for name in ("run", "check", "merge", "RunResult", "CaseCheck", "to_toml"):
         obj = getattr(ws, name)
         seen.append((f"wearscale.{name}", obj))
-    for attr in ("output_dir", "results", "h5_files", "load"):
+    for attr in ("output_dir", "is_sweep", "units", "results", "runs", "table", "h5_files", "load"):
         seen.append((f"wearscale.RunResult.{attr}", inspect.getattr_static(ws.RunResult, attr)))
     return seen
 

@@ -1,39 +1,118 @@
 """wearscale.run: cases through the CLI's runner, from a file, a TOML string or a dict, with
---set-style overrides; bad cases are ValueErrors naming the key, before anything is written."""
+--set-style overrides; bad cases are ValueErrors naming every key in error, before anything is
+written; wearscale.check reads a case as run does and writes nothing; results carry their units
+in their keys as the CSV tables do, and a sweep's table is a DataFrame."""
+import json
+import sys
+
 import pytest
 
 import wearscale as ws
-from wearscale.run import to_toml
+from wearscale.runner import to_toml
 from _approx import approx
+
+HERTZ = {"case": {"name": "hertz-dict"},
+         "scale": {"macro": {"backend": "hertz", "pin_radius": "3 mm", "normal_load": "1 N",
+                             "elastic_modulus": "73 GPa", "poisson_ratio": 0.17}}}
 
 
 def test_the_hertz_pin_case_gives_the_thesis_contact_diameter(source_dir, tmp_path):
     r = ws.run(source_dir / "cases" / "hertz_pin.toml", out=tmp_path / "o")
     assert isinstance(r, dict) and r.output_dir == tmp_path / "o"
     values = r.results
-    diameter = 2 * values["contact_radius"]
+    diameter = 2 * values["contact_radius_m"]
     assert diameter == approx(78.2e-6, rel=2e-3)  # §8.1
+    # Keyed as the CSV tables name their columns, each figure's unit in its key and in .units.
+    assert set(values) == {"approach_m", "contact_radius_m", "effective_modulus_Pa", "mean_pressure_Pa",
+                           "peak_pressure_Pa"}
+    assert r.units["contact_radius_m"] == "m" == r["results"]["contact_radius"]["unit"]
+    assert values["contact_radius_m"] == r["results"]["contact_radius"]["value"]
 
 
-def test_check_writes_nothing_and_a_run_lists_its_hdf5_outputs(source_dir, tmp_path):
+def test_run_check_and_merge_are_three_functions_of_the_package(source_dir, tmp_path):
+    # wearscale.run is the function (not a module hiding it), wearscale.check the validator.
+    assert callable(ws.run) and ws.run.__module__ == "wearscale.runner"
+    assert ws.check is ws.runner.check and ws.merge is ws.runner.merge
+    assert not hasattr(ws.run, "check")
+
+
+def test_check_reads_the_case_as_run_does_and_writes_nothing(source_dir, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
     case = source_dir / "cases" / "hertz_pin.toml"
-    assert ws.run.__module__ == "wearscale.run"
-    from wearscale.run import check
-    assert [str(d) for d in check(case)] and not (tmp_path / "o").exists()
+    c = ws.check(case, out=tmp_path / "o")
+    assert not (tmp_path / "o").exists() and list(tmp_path.iterdir()) == []
+    assert c["valid"] and c["study"] == "pipeline" and c["output_dirs"] == [str(tmp_path / "o")]
+    # The resolved case: the file's values and every default the run applies, marked.
+    assert c["parameters"]["scale"]["macro"]["normal_load"] == "1 N"
+    assert c["defaults"]["run.fft_planning"] == c["parameters"]["run"]["fft_planning"] == "measure"
+    assert "fft_planning = \"measure\"    # default" in c.text and "[scale.macro]" in c.text
+    # The same through the CLI's runner as run() would take it: keywords, dicts
+    assert ws.check(HERTZ, scale__macro__normal_load="2 N")["parameters"]["scale"]["macro"]["normal_load"] == "2 N"
     with pytest.raises(ValueError, match="normal_load"):
-        check(case, scale__macro__normal_load="-1 N")
+        ws.check(case, scale__macro__normal_load="-1 N")
     r = ws.run(case, out=tmp_path / "o")
     assert tmp_path / "o" / "run.h5" in r.h5_files()
 
 
+def test_every_independent_error_of_a_case_is_reported_at_once(tmp_path):
+    case = {"case": {"name": "bad"},
+            "run": {"fft_planning": "exhaustive"},  # not a choice: a key with a default
+            "scale": {"macro": {"backend": "hertz", "pin_radius": "-3 mm", "normal_load": "1 N",
+                                "elastic_modulus": "73 GPa", "poisson_ratio": 0.7, "pin_radus": 1}}}
+    with pytest.raises(ws.InputError) as e:
+        ws.check(case, out=tmp_path / "bad")
+    message = str(e.value)
+    assert "4 errors in the case" in message, message
+    for key in ("run.fft_planning", "scale.macro.pin_radius", "scale.macro.poisson_ratio", "scale.macro.pin_radus"):
+        assert f"key '{key}'" in message, (key, message)
+    assert "did you mean 'pin_radius'?" in message
+    with pytest.raises(ws.InputError) as again:  # run() refuses it alike, before writing anything
+        ws.run(case, out=tmp_path / "bad")
+    assert str(again.value) == message and not (tmp_path / "bad").exists()
+
+
+def sweep_case():
+    case = json.loads(json.dumps(HERTZ))
+    case["case"]["name"] = "hertz-sweep"
+    case["sweep"] = {"key": "scale.macro.normal_load", "values": ["1 N", "8 N", "27 N"]}
+    return case
+
+
+def test_a_sweeps_results_and_table_are_its_csv_table(tmp_path):
+    pandas = pytest.importorskip("pandas")
+    r = ws.run(sweep_case(), out=tmp_path / "s")
+    assert r.is_sweep and len(r.runs) == 3
+    table = r.table()
+    on_disk = pandas.read_csv(tmp_path / "s" / "sweep.csv")
+    assert list(table.columns) == list(on_disk.columns)
+    assert table.columns[0] == "scale.macro.normal_load_N"
+    assert ((table - on_disk).abs() <= 1e-9 * on_disk.abs()).all().all()  # the CSV's 10 significant digits
+    assert table.attrs["units"]["contact_radius_m"] == "m"
+    # a ∝ F^(1/3) (1.12)
+    a = table["contact_radius_m"]
+    assert a[1] / a[0] == approx(2.0, rel=1e-12) and a[2] / a[0] == approx(3.0, rel=1e-12)
+    assert r.results["contact_radius_m"] == list(a) and r.results["scale.macro.normal_load_N"] == [1.0, 8.0, 27.0]
+    one = r.runs[1]
+    assert one.results["contact_radius_m"] == a[1] and one["value"] == "8 N"
+    assert one.output_dir.parent == tmp_path / "s" and (one.output_dir / "run.h5").exists()
+
+
+def test_without_pandas_a_table_is_plain_columns(tmp_path, monkeypatch):
+    import numpy as np
+    r = ws.run(sweep_case(), out=tmp_path / "s")
+    monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas raises ImportError
+    table = r.table()
+    assert isinstance(table, dict) and isinstance(table["contact_radius_m"], np.ndarray)
+    assert list(table["scale.macro.normal_load_N"]) == [1.0, 8.0, 27.0]
+    single = ws.run(HERTZ, out=tmp_path / "one").table()
+    assert single["contact_radius_m"].shape == (1,)
+
+
 def test_a_dict_case_with_keyword_overrides_runs_like_its_file(source_dir, tmp_path):
-    case = {"case": {"name": "hertz-dict"},
-            "scale": {"macro": {"backend": "hertz", "pin_radius": "3 mm", "normal_load": "1 N",
-                                "elastic_modulus": "73 GPa", "poisson_ratio": 0.17}}}
+    case = HERTZ
     a = ws.run(case, out=tmp_path / "a").results
     b = ws.run(case, out=tmp_path / "b", scale__macro__normal_load="8 N").results
-    assert b["contact_radius"] == approx(2 * a["contact_radius"], rel=1e-12)  # a ∝ F^(1/3)
-    from wearscale.run import to_toml
+    assert b["contact_radius_m"] == approx(2 * a["contact_radius_m"], rel=1e-12)  # a ∝ F^(1/3)
     assert ws.run(to_toml(case), out=tmp_path / "c").results == a  # the same case as TOML text
 
 

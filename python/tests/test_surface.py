@@ -85,3 +85,31 @@ def test_the_supported_formats_are_named_and_an_h5_output_is_seen_by_io(tmp_path
 def test_a_missing_file_is_a_value_error_naming_it(tmp_path):
     with pytest.raises(ValueError, match="nothing.h5"):
         ws.surface.read(tmp_path / "nothing.h5")
+
+
+def test_the_roughness_measures_take_a_surface_as_the_contact_does():
+    s = ws.surface.generate(64, 2e-4, k_l=2, k_s=16, seed=3, slope_rms=0.2, ny=32, ly=1e-4)
+    assert ws.surface.h_prime_rms(s) == ws.surface.h_prime_rms(s.heights, s.lx, s.ly) == approx(0.2, rel=1e-12)
+    assert ws.surface.sa(s) == ws.surface.sa(s.heights)
+    assert ws.surface.h_rms(s) == ws.surface.h_rms(s.heights)
+    with pytest.raises(ValueError, match="lx"):
+        ws.surface.h_prime_rms(s.heights)  # a plain array needs its size
+
+
+def test_generate_and_read_say_they_return_a_surface():
+    for call in (ws.surface.generate, ws.surface.read):
+        doc = call.__doc__
+        assert "Returns a Surface" in doc and "Returns (heights" not in doc, doc
+    assert isinstance(ws.surface.generate(16, 1e-4, k_s=8), ws.surface.Surface)
+
+
+def test_a_fit_that_is_not_self_affine_is_reported_failed_and_the_rest_stands():
+    # A sphere's PSD is no power law of 0 < H <= 1 over every bin.
+    cap = ws.surface.sphere(64, 1e-3, radius=2e-3)
+    a = ws.surface.analyze(cap)
+    assert a["hurst_fit"]["status"] == "failed" and "not self-affine" in a["hurst_fit"]["reason"]
+    assert "hurst" not in a and a["sa_m"] > 0 and a["h_prime_rms"] > 0 and a["psd_c_m4"].size > 10
+    s = ws.surface.generate(128, 1e-3, hurst=0.8, k_l=4, k_s=48, seed=2)
+    q = 2 * math.pi / 1e-3
+    good = ws.surface.analyze(s, q_min=4 * q, q_max=48 * q)
+    assert good["hurst_fit"] == {"status": "done", "reason": ""} and "hurst" in good

@@ -8,7 +8,10 @@ Submodules (each function's docstring gives units, ranges and the thesis' equati
 - :mod:`wearscale.wear`      analytic 2D/3D wear maps, the rough-surface wear map
 - :mod:`wearscale.dem`       the cohesive DEM: targets, patch test, sheared junction, rough shear, trapped particles
 - :mod:`wearscale.io`        HDF5 datasets of wearscale's outputs as NumPy arrays
-- :func:`wearscale.run`      any case through the CLI's runner, ``--set`` overrides as keywords
+- :func:`wearscale.run`      any case through the CLI's runner, ``--set`` overrides as keywords;
+  results keyed ``<name>_<SI unit>``, ``.table()`` (a pandas DataFrame when pandas is importable)
+- :func:`wearscale.check`    a case checked as ``run`` reads it (every error at once), nothing written
+- :mod:`wearscale.runner`    the module of run, check, merge, RunResult, to_toml
 
 All quantities are SI (m, Pa, N, J). Bad input raises :class:`InputError` (a ValueError)
 naming the key, value and allowed range; a numerical failure raises :class:`NumericalError`
@@ -24,8 +27,8 @@ if "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ:
     _os.environ["GOMP_SPINCOUNT"] = _WAITING_SPIN_COUNT
 
 from ._wearscale import InputError, NumericalError, OutputError, __version__
-from . import contact, dem, io, materials, surface, wear
-from .run import RunResult, merge, run
+from . import contact, dem, io, materials, runner, surface, wear
+from .runner import CaseCheck, RunResult, check, merge, run, to_toml
 
-__all__ = ["InputError", "NumericalError", "OutputError", "RunResult", "__version__", "contact", "dem", "io",
-           "materials", "merge", "run", "surface", "wear"]
+__all__ = ["CaseCheck", "InputError", "NumericalError", "OutputError", "RunResult", "__version__", "check",
+           "contact", "dem", "io", "materials", "merge", "run", "runner", "surface", "to_toml", "wear"]

@@ -11,18 +11,24 @@ Heights may be a :class:`wearscale.surface.Surface` (its size is used) or an (nx
 with ``lx`` (and ``ly``) in metres. Result arrays are read-only views on the solver's storage,
 overwritten by its next solve: ``.copy()`` one to keep it.
 """
+from ._signatures import defaults_of, sign_class, signed
 from ._wearscale import contact as _c
 from .surface import Surface, _heights_and_size
 
-effective_modulus = _c.effective_modulus
-hertz = _c.hertz
-hertz_check = _c.hertz_check
+effective_modulus = signed(_c.effective_modulus, __name__)
+hertz = signed(_c.hertz, __name__)
+hertz_check = signed(_c.hertz_check, __name__)
+sign_class(_c.NormalContact)
+sign_class(_c.FrictionalContact)
+# The defaults of the constructors are the compiled ones (one place: python/src/bind_contact.cpp).
+_normal = defaults_of(_c.NormalContact.__init__)
+_frictional = defaults_of(_c.FrictionalContact.__init__)
 
 
 class NormalContact(_c.NormalContact):
     __doc__ = _c.NormalContact.__doc__
 
-    def __init__(self, heights, lx=None, ly=None, e_star=None, boundary="periodic"):
+    def __init__(self, heights, lx=None, ly=None, e_star=None, boundary=_normal["boundary"]):
         if e_star is None:
             raise TypeError("NormalContact: e_star [Pa] is required")
         h, lx, ly = _heights_and_size(heights, lx, ly)
@@ -38,7 +44,7 @@ class NormalContact(_c.NormalContact):
 class FrictionalContact(_c.FrictionalContact):
     __doc__ = _c.FrictionalContact.__doc__
 
-    def __init__(self, heights, lx=None, ly=None, young=None, poisson=None, law="coulomb", mu=None,
+    def __init__(self, heights, lx=None, ly=None, young=None, poisson=None, law=_frictional["law"], mu=None,
                  shear_strength=None):
         if young is None or poisson is None:
             raise TypeError("FrictionalContact: young [Pa] and poisson are required")
@@ -46,7 +52,11 @@ class FrictionalContact(_c.FrictionalContact):
         super().__init__(h, lx, ly, young, poisson, law, mu, shear_strength)
 
 
-def stresses(pressure, lx, ly=-1.0, poisson=None, depths=(0.0,), traction_x=None, traction_y=None, tensor=False):
+_stresses = defaults_of(_c.stresses)
+
+
+def stresses(pressure, lx, ly=_stresses["ly"], poisson=None, depths=(0.0,), traction_x=None, traction_y=None,
+             tensor=_stresses["tensor"]):
     if poisson is None:
         raise TypeError("stresses: poisson is required")
     return _c.stresses(pressure, lx, ly, poisson, list(depths), traction_x, traction_y, tensor)

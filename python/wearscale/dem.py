@@ -3,7 +3,6 @@
 each with its results, history arrays (time series) and final particles where the study has them.
 The same studies run as cases through :func:`wearscale.run` (``[dem.*]``)."""
 from . import _wearscale
+from ._signatures import sign_module
 
-_compiled = _wearscale.dem
-globals().update({k: getattr(_compiled, k) for k in dir(_compiled) if not k.startswith("_")})
-__all__ = sorted(k for k in dir(_compiled) if not k.startswith("_"))
+__all__ = sign_module(_wearscale.dem, globals())

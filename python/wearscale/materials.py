@@ -4,7 +4,6 @@ Shipped data are found in $WEARSCALE_DATA, else share/wearscale/data of the inst
 else the source tree (see :func:`data_directory`).
 """
 from . import _wearscale
+from ._signatures import sign_module
 
-_compiled = _wearscale.materials
-globals().update({k: getattr(_compiled, k) for k in dir(_compiled) if not k.startswith("_")})
-__all__ = sorted(k for k in dir(_compiled) if not k.startswith("_"))
+__all__ = sign_module(_wearscale.materials, globals())

@@ -9,12 +9,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._signatures import defaults_of, own_doc, signed
 from ._wearscale import surface as _s
 
-supported_formats = _s.supported_formats
-sa = _s.sa
-h_rms = _s.h_rms
-h_prime_rms = _s.h_prime_rms
+supported_formats = signed(_s.supported_formats, __name__)
+# The defaults of the wrappers below are the compiled functions' (one place: python/src/bind_surface.cpp).
+_generate = defaults_of(_s.generate)
+_analyze = defaults_of(_s.analyze)
+_read = defaults_of(_s.read)
+_sa = defaults_of(_s.sa)
 
 
 @dataclass
@@ -44,7 +47,7 @@ def _heights_and_size(heights, lx, ly):
         return heights.heights, heights.lx if lx is None else lx, heights.ly if ly is None else ly
     if lx is None:
         raise _s_input_error("a size lx [m] is needed for a plain array of heights")
-    return heights, lx, -1.0 if ly is None else ly
+    return heights, lx, _analyze["ly"] if ly is None else ly
 
 
 def _s_input_error(message):
@@ -52,23 +55,56 @@ def _s_input_error(message):
     return InputError(message)
 
 
-def generate(n, size, hurst=0.8, k_l=1.0, k_r=None, k_s=16.0, seed=0, ny=None, ly=None, sa=None, rms=None,
+def generate(n, size, hurst=_generate["hurst"], k_l=_generate["k_l"], k_r=_generate["k_r"],
+             k_s=_generate["k_s"], seed=_generate["seed"], ny=None, ly=None, sa=None, rms=None,
              slope_rms=None):
     h, meta = _s.generate(n, size, hurst, k_l, k_r, k_s, seed, ny, ly, sa, rms, slope_rms)
     return Surface(h, meta["lx_m"], meta["ly_m"], meta)
 
 
-generate.__doc__ = _s.generate.__doc__.split("\n", 2)[-1] if _s.generate.__doc__ else None
-
-
-def analyze(heights, lx=None, ly=None, q_min=0.0, q_max=float("inf"), detrend=False, window=False):
+def analyze(heights, lx=None, ly=None, q_min=_analyze["q_min"], q_max=_analyze["q_max"],
+            detrend=_analyze["detrend"], window=_analyze["window"]):
     h, lx, ly = _heights_and_size(heights, lx, ly)
     return _s.analyze(h, lx, ly, q_min, q_max, detrend, window)
 
 
-def read(file, dataset="/surface/height", lx=None, ly=None, missing="refuse"):
+def read(file, dataset=_read["dataset"], lx=None, ly=None, missing=_read["missing"]):
     h, meta = _s.read(str(file), dataset, lx, ly, missing)
     return Surface(h, meta["lx_m"], meta["ly_m"], meta)
+
+
+def _size_free(heights, lx):
+    """Heights and an lx for Sa and h_rms, which do not depend on the size."""
+    if lx is None and not isinstance(heights, Surface):
+        lx = _sa["lx"]
+    h, lx, _ = _heights_and_size(heights, lx, None)
+    return h, lx
+
+
+def sa(heights, lx=None):
+    return _s.sa(*_size_free(heights, lx))
+
+
+def h_rms(heights, lx=None):
+    return _s.h_rms(*_size_free(heights, lx))
+
+
+def h_prime_rms(heights, lx=None, ly=None):
+    h, lx, ly = _heights_and_size(heights, lx, ly)
+    return _s.h_prime_rms(h, lx, ly)
+
+
+# generate and read return a Surface where the compiled calls return (heights, metadata).
+generate.__doc__ = own_doc(_s.generate).replace(
+    "Returns (heights [m], an (n, ny) float64 array with y fastest, metadata dict).",
+    "Returns a Surface: heights [m] (an (n, ny) float64 array, y fastest), lx, ly [m] and meta (the\n"
+    "generation parameters: lx_m, ly_m, hurst, k_l, k_r, k_s, seed).")
+read.__doc__ = own_doc(_s.read).replace(
+    "Returns (heights [m], metadata dict with lx_m, ly_m, format).",
+    "Returns a Surface: heights [m], lx, ly [m] and meta (lx_m, ly_m, format, missing_points, file).")
+sa.__doc__ = own_doc(_s.sa) + "\nheights: a Surface or an array of heights [m]."
+h_rms.__doc__ = own_doc(_s.h_rms) + "\nheights: a Surface or an array of heights [m]."
+h_prime_rms.__doc__ = own_doc(_s.h_prime_rms) + "\nheights: a Surface (its lx, ly) or an array of heights [m] with lx (and ly)."
 
 
 def write(file, heights, lx=None, ly=None):
@@ -82,7 +118,6 @@ def sphere(n, size, radius, cx=None, cy=None):
     return Surface(_s.sphere(n, size, radius, cx, cy), size, size, {"radius_m": radius})
 
 
-for _f, _c in ((analyze, _s.analyze), (read, _s.read)):
-    _f.__doc__ = _c.__doc__.split("\n", 2)[-1] if _c.__doc__ else None
+analyze.__doc__ = own_doc(_s.analyze) + "\nheights: a Surface (its lx, ly) or an array of heights [m] with lx (and ly)."
 
 __all__ = ["Surface", "analyze", "generate", "h_prime_rms", "h_rms", "read", "sa", "sphere", "supported_formats", "write"]

@@ -20,6 +20,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/output_lock.hpp"
@@ -38,6 +39,7 @@
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/studies/study.hpp"
+#include "case_report.hpp"
 #include "contact_slab.hpp"
 
 namespace wearscale::studies {
@@ -109,6 +111,7 @@ struct PreparedRun {
   mpi::TaskStore::Mode tasks = mpi::TaskStore::Mode::Keep;
   std::size_t shard = 1, shards = 1;
   std::function<std::string(std::size_t)> owner;  // Assemble: who owes a missing task
+  std::vector<std::pair<std::string, double>> memory;  // what its checks declared it needs (require_memory)
 };
 
 // The folder of a run's kept tasks (made when the first is kept).
@@ -159,9 +162,9 @@ void require_folder_or_nothing(const std::filesystem::path& dir, const char* opt
                                  option, dir.string()));
 }
 
-PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
+PreparedRun prepare_keys(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
   PreparedRun run{std::move(cfg_in), {}, {}, {}, PlanRigor::Measure, {}, std::nullopt, false, false,
-                  mpi::TaskStore::Mode::Keep, 1, 1, {}};
+                  mpi::TaskStore::Mode::Keep, 1, 1, {}, {}};
   Config& cfg = run.cfg;
   run.study = study_for(cfg, options);
   run.summary.study = run.study->name();
@@ -182,6 +185,32 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();
   run.fingerprint = case_fingerprint(run.summary.parameters);
+  return run;
+}
+
+// A case checked as prepare_keys() reads it, every independent error found
+// at once (Config::collect_errors). A study that reads its keys at the start
+// of run() goes on collecting there, until it has checked the whole case.
+PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& out, const RunOptions& options) {
+  const Config cfg = cfg_in;  // shares the case's state: its errors
+  cfg.collect_errors(true);
+  const MemoryTally tally;
+  PreparedRun run = [&] {
+    try {
+      return prepare_keys(std::move(cfg_in), out, options);
+    } catch (const OutputError&) {
+      throw;
+    } catch (const InputError& e) {
+      if (cfg.has_collected_errors()) throw cfg.collected_with(e.what());
+      throw;
+    } catch (const std::exception&) {  // a consequence of a value in error standing in: the errors are the news
+      if (cfg.has_collected_errors()) cfg.raise_collected_errors();
+      throw;
+    }
+  }();
+  cfg.raise_collected_errors();
+  cfg.collect_errors(!cfg.fully_checked());
+  run.memory = tally.requests();
   return run;
 }
 
@@ -275,7 +304,14 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   if (run.tasks != mpi::TaskStore::Mode::Assemble) claim_task_store(run);
   mpi::TaskStore task_store(tasks_dir(run), run.tasks, run.shard, run.shards, run.fingerprint);
   task_store.owner = run.owner;
-  run.study->run(run.cfg, context);
+  try {
+    run.study->run(run.cfg, context);
+  } catch (const InputError& e) {  // a key of a study that reads them in run(), after others in error
+    if (run.cfg.has_collected_errors() && dynamic_cast<const OutputError*>(&e) == nullptr)
+      throw run.cfg.collected_with(e.what());
+    throw;
+  }
+  run.cfg.raise_collected_errors();  // a study that read keys without checking the whole case: before any output
   // A shard writes none of the run's outputs, even when the other shards' tasks were all there: merge does.
   if (run.tasks == mpi::TaskStore::Mode::Shard) throw mpi::ShardDone("every task of the run is done");
   for (const auto& [name, r] : context.results().items()) {
@@ -917,13 +953,17 @@ RunSummary run_shard(PreparedRun& run, const RunOptions& options, const Shard& s
 
 }  // namespace
 
-RunSummary run_case(const RunOptions& options_in) {
-  RunOptions options = options_in;
-  const int threads = thread_budget();
-  const CaseLoader parse = [&] {
+CaseLoader case_loader(const RunOptions& options) {
+  return [options] {
     if (options.case_text) return Config::from_string(*options.case_text, options.case_file.string());
     return options.case_file.empty() ? Config::from_string("", "<command line>") : Config::load(options.case_file);
   };
+}
+
+RunSummary run_case(const RunOptions& options_in) {
+  RunOptions options = options_in;
+  const int threads = thread_budget();
+  const CaseLoader parse = case_loader(options);
   // Under mpirun every rank reads the case; a refusal is every rank's (status 2, said once).
   std::optional<Config> probe;
   std::optional<Shard> shard;
@@ -1048,6 +1088,37 @@ std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const Run
     folders.push_back(prepare(std::move(probe), options.output_dir, options).summary.output_dir);
   }
   return folders;
+}
+
+CaseReport inspect_case(const CaseLoader& parse, const RunOptions& options) {
+  require_utf8_paths(options);
+  Config probe = load(parse, options);
+  std::vector<PreparedRun> runs;
+  CaseReport report;
+  if (probe.has("sweep")) {
+    SweepPlan plan = plan_sweep(parse, options, probe);
+    report.sweep_key = plan.sweep.sweep_key;
+    report.sweep_values = plan.sweep.sweep_values;
+    runs = std::move(plan.runs);
+  } else {
+    runs.push_back(prepare(std::move(probe), options.output_dir, options));
+  }
+  for (auto& run : runs) {
+    if (!run.cfg.fully_checked()) {  // a study that reads its keys in run(): up to its check
+      const MemoryTally tally;
+      check_keys_in_run(*run.study, run.cfg);
+      run.memory.insert(run.memory.end(), tally.requests().begin(), tally.requests().end());
+    }
+    report.output_dirs.push_back(run.summary.output_dir);
+    report.memory.push_back(run.memory);
+  }
+  const PreparedRun& first = runs.front();
+  report.study = first.summary.study;
+  report.case_name = first.summary.case_name;
+  report.case_file = options.case_file.string();
+  report.scales = first.summary.scales;
+  describe_defaults(report, *first.study, first.cfg);
+  return report;
 }
 
 }  // namespace wearscale::studies

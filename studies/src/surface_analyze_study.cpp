@@ -1,8 +1,10 @@
 // The topography-analysis study ([surface.analyze], §8.1.1): roughness (Sa,
 // h_RMS, h'_RMS), the radial PSD and the Hurst exponent fitted on it, of a
 // measured (X3P, Gwyddion, Digital Surf, SDF, Zygo) or generated (HDF5, text
-// grid) topography; optionally the radial PSD as a CSV table in the output
-// folder.
+// grid) topography; the radial PSD in run.h5 (/psd) and, optionally, as a CSV
+// table in the output folder. A Hurst fit that fails (a band that is not
+// self-affine) is reported as failed, with why (summary.json hurst_fit), and
+// the rest stands: the fit is optional to the user.
 //
 //   [surface.analyze]
 //   file = "scan.x3p"
@@ -13,12 +15,14 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "surface_sides.hpp"
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/bem/spectral_modes.hpp"
 #include "wearscale/bem/topography.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/topography_io.hpp"
@@ -115,27 +119,41 @@ class SurfaceAnalyze final : public Study {
     const RealField psd = window_ ? bem::psd_2d(bem::windowed(h_, bem::radial_hann_window(g))) : bem::psd_2d(h_);
     const double sa = bem::sa(h_), h_rms = bem::h_rms(h_);
     const bem::RadialPsd radial = bem::radial_psd(psd);
-    if (radial.q.size() < 3)
-      throw InputError(fmt::format("{}: a {} × {} topography gives {} radial PSD bin(s); at least 3 are needed for a "
-                                   "Hurst fit",
-                                   file_.string(), g.nx, g.ny, radial.q.size()));
-    // Default band: the self-affine band k_r … k_s of a surface that records it (written by `surface
-    // generate`), else everything above the first 2 bins.
-    const auto k_r = bem::read_surface_attribute(file_, dataset_, "k_r");
-    const auto k_s = bem::read_surface_attribute(file_, dataset_, "k_s");
-    const bool recorded = k_r && k_s;
-    const double unit = bem::wavenumber_unit(g);
-    const double q_min = q_min_ ? *q_min_ : recorded ? *k_r * unit : radial.q[2];
-    const double q_max = q_max_ ? *q_max_ : recorded ? *k_s * unit : radial.q.back();
-    const bem::HurstFit fit = bem::fit_hurst(radial, q_min, q_max);
-    // A self-affine surface has 0 < H ≤ 1: anything else says the band is not self-affine.
-    if (!(fit.hurst > 0.0 && fit.hurst <= 1.0 + 3.0 * fit.hurst_error) || !std::isfinite(fit.hurst_error))
-      throw NumericalError(
-          "surface analyze", 0, "Hurst exponent",
-          fmt::format("the PSD over q = {:.4g} … {:.4g} rad/m{} fits H = {:.3f} ± {:.3f}, outside (0, 1]: that band is "
-                      "not self-affine; give the self-affine band with --qmin and --qmax (q_min, q_max)",
-                      fit.q_min, fit.q_max, recorded ? "" : " (the default band: the file records no k_r, k_s)",
-                      fit.hurst, fit.hurst_error));
+    // The Hurst fit is optional to the user: when it fails (a band that is not self-affine, too few
+    // bins), the run says why, in summary.json and as a warning, and the rest of the analysis stands.
+    std::optional<bem::HurstFit> fit;
+    std::string failure;
+    bool recorded = false;
+    if (radial.q.size() < 3) {
+      failure = fmt::format("a {} × {} topography gives {} radial PSD bin(s); at least 3 are needed for a Hurst fit",
+                            g.nx, g.ny, radial.q.size());
+    } else {
+      // Default band: the self-affine band k_r … k_s of a surface that records it (written by `surface
+      // generate`), else everything above the first 2 bins.
+      const auto k_r = bem::read_surface_attribute(file_, dataset_, "k_r");
+      const auto k_s = bem::read_surface_attribute(file_, dataset_, "k_s");
+      recorded = k_r && k_s;
+      const double unit = bem::wavenumber_unit(g);
+      const double q_min = q_min_ ? *q_min_ : recorded ? *k_r * unit : radial.q[2];
+      const double q_max = q_max_ ? *q_max_ : recorded ? *k_s * unit : radial.q.back();
+      try {
+        fit = bem::fit_hurst(radial, q_min, q_max);
+      } catch (const InputError& e) {
+        if (q_min_ || q_max_) throw;  // a band the user gave: bad input
+        failure = e.what();
+      }
+      // A self-affine surface has 0 < H ≤ 1: anything else says the band is not self-affine.
+      if (fit && (!(fit->hurst > 0.0 && fit->hurst <= 1.0 + 3.0 * fit->hurst_error) || !std::isfinite(fit->hurst_error)))
+        failure = fmt::format("the PSD over q = {:.4g} … {:.4g} rad/m{} fits H = {:.3f} ± {:.3f}, outside (0, 1]: that "
+                              "band is not self-affine; give the self-affine band with --qmin and --qmax (q_min, q_max)",
+                              fit->q_min, fit->q_max, recorded ? "" : " (the default band: the file records no k_r, k_s)",
+                              fit->hurst, fit->hurst_error);
+    }
+    if (!failure.empty()) log::warn("surface analyze {}: no Hurst exponent: {}", file_.string(), failure);
+    {  // The radial PSD, always, in run.h5 (and as a CSV table when asked)
+      std::vector<double> count(radial.count.begin(), radial.count.end());
+      context.h5().write_table("/psd", {"q", "C", "count"}, {radial.q, radial.c, count}, {"rad/m", "m^4", "1"});
+    }
     if (!psd_.empty()) {
       std::vector<double> count(radial.count.begin(), radial.count.end());
       const auto csv = context.output_dir() / psd_;
@@ -151,8 +169,10 @@ class SurfaceAnalyze final : public Study {
     context.report("Sa", sa, "m", "arithmetic mean deviation Sa (1.4)");
     context.report("h_rms", h_rms, "m", "RMS height h_RMS (1.5)");
     context.report("h_prime_rms", h_prime_, "1", window_ ? "RMS slope h'_RMS, finite differences" : "RMS slope h'_RMS (1.6), spectral");
-    context.report("hurst", fit.hurst, "1", "Hurst exponent H fitted on the radial PSD");
-    context.report("hurst_error", fit.hurst_error, "1", "standard error of H");
+    if (failure.empty()) {
+      context.report("hurst", fit->hurst, "1", "Hurst exponent H fitted on the radial PSD");
+      context.report("hurst_error", fit->hurst_error, "1", "standard error of H");
+    }
     context.note("file", file_.string());
     context.note("format", measured_.format);
     context.note("missing_points", measured_.missing);
@@ -163,10 +183,13 @@ class SurfaceAnalyze final : public Study {
     context.note("h_rms", h_rms);
     context.note("h_prime_rms", h_prime_);
     context.note("h_prime_rms_method", window_ ? "finite-difference" : "spectral");
-    context.note("hurst", fit.hurst);
-    context.note("hurst_error", fit.hurst_error);
-    context.note("fit", {{"q_min", fit.q_min}, {"q_max", fit.q_max}, {"points", fit.points}, {"slope", fit.slope},
-                         {"slope_error", fit.slope_error}});
+    context.note("hurst", failure.empty() ? nlohmann::json(fit->hurst) : nlohmann::json(nullptr));
+    context.note("hurst_error", failure.empty() ? nlohmann::json(fit->hurst_error) : nlohmann::json(nullptr));
+    context.note("hurst_fit", failure.empty() ? nlohmann::json{{"status", "done"}}
+                                              : nlohmann::json{{"status", "failed"}, {"reason", failure}});
+    if (fit)
+      context.note("fit", {{"q_min", fit->q_min}, {"q_max", fit->q_max}, {"points", fit->points}, {"slope", fit->slope},
+                           {"slope_error", fit->slope_error}, {"hurst", fit->hurst}, {"hurst_error", fit->hurst_error}});
     if (window_) context.note("plane", {{"offset", plane_.offset}, {"slope_x", plane_.slope_x}, {"slope_y", plane_.slope_y}});
   }
 

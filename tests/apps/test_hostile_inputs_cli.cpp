@@ -210,7 +210,10 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A generated surface written without its k attributes (another tool's copy):
 // the default band runs past the shortest wavelength, whose windowed PSD fits
-// H ≈ 7. Not a Hurst exponent: exit 1, with what to do.
+// H ≈ 7. Not a Hurst exponent: no `hurst` result, the fit reported as failed
+// with what to do (a warning and summary.json's hurst_fit), and the rest of
+// the analysis (Sa, h_RMS, h'_RMS, the PSD) written: exit 0, the fit being
+// optional to the user.
 TEST(HostileInput, AHurstExponentOutsideZeroToOneIsNeverAResult) {
   const auto dir = work / "hurst";
   auto r = run_cli("surface generate --n 128 --size 1e-3 --hurst 0.8 --kl 2 --kr 4 --ks 32 --hprime-rms 0.1 --seed 1 "
@@ -227,10 +230,18 @@ TEST(HostileInput, AHurstExponentOutsideZeroToOneIsNeverAResult) {
     out.dataset("/surface/height", {128, 128}, h);
     out.number_attribute("/surface/height", "lx", {1e-3});
   }
-  r = run_cli("surface analyze copy.h5", dir);
-  EXPECT_EQ(r.status, 1) << r.err;
+  r = run_cli("surface analyze copy.h5 --psd-out psd.csv --out copy --json", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("outside (0, 1]: that band is not self-affine"));
   EXPECT_THAT(r.err, HasSubstr("--qmin and --qmax"));
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["hurst"].is_null());
+  EXPECT_EQ(j["hurst_fit"]["status"], "failed");
+  EXPECT_THAT(j["hurst_fit"]["reason"].get<std::string>(), HasSubstr("not self-affine"));
+  EXPECT_FALSE(j["results"].contains("hurst"));
+  for (const char* kept : {"Sa", "h_rms", "h_prime_rms"}) EXPECT_GT(j["results"][kept]["value"].get<double>(), 0.0) << kept;
+  EXPECT_TRUE(fs::exists(dir / "copy" / "psd.csv"));
+  EXPECT_GT(wearscale::H5Reader(dir / "copy" / "run.h5").read_series("/psd/C").size(), 10u);
   r = run_cli("surface analyze copy.h5 --qmin 5e4 --qmax 2e5", dir);  // the self-affine band, given
   EXPECT_EQ(r.status, 0) << r.err;
   fs::remove_all(dir);

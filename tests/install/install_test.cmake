@@ -1,7 +1,8 @@
 # ctest install.*: `cmake --install` of the build tree into a scratch prefix,
 # then (STEP=cxx) an external CMake project that find_package(wearscale)s it,
 # links wearscale::bem and checks a Hertz contact, a program compiled with
-# `c++ $(pkg-config --cflags --libs wearscale)` alone and run, or (STEP=python) the
+# `c++ $(pkg-config --cflags --libs wearscale)` alone and run, the examples of the
+# help and man page run from the installed tree (run_examples.sh), or (STEP=python) the
 # installed Python package imported from outside the source and build trees.
 #   cmake -DBUILD=<build tree> -DPREFIX=<scratch> -DSTEP=cxx|python [-DPYTHON=...] [-DPYDIR=...] -P install_test.cmake
 function(run)
@@ -25,7 +26,8 @@ foreach(f IN LISTS configs)
 endforeach()
 
 # The CLI's shell completions, and its man page when help2man made one (cmake/WearscaleCliDocs.cmake).
-set(cli_docs share/bash-completion/completions/wearscale share/zsh/site-functions/_wearscale)
+set(cli_docs share/bash-completion/completions/wearscale share/zsh/site-functions/_wearscale
+    share/wearscale/cases/hertz_pin.toml share/wearscale/examples/python/_common.py)
 if(EXISTS ${BUILD}/cli-docs/man1/wearscale.1)
   list(APPEND cli_docs share/man/man1/wearscale.1)
 endif()
@@ -55,7 +57,11 @@ if(STEP STREQUAL "cxx")
   endif()
   message("pkg-config --cflags --libs wearscale: ${pc_flags}")
   separate_arguments(pc_flags UNIX_COMMAND "${pc_flags}")  # as a shell splits $(pkg-config ...)
-  run(${CXX} -std=c++20 ${SOURCE}/tests/install/pkgconfig_consumer.cpp ${pc_flags} -o ${consumer}/pkgconfig_consumer)
+  # No -std= of its own: the flags carry the C++ standard the headers need (a compiler's default may be older).
+  if(NOT pc_flags MATCHES "-std=c\\+\\+20")
+    message(FATAL_ERROR "pkg-config --cflags wearscale does not give -std=c++20: ${pc_flags}")
+  endif()
+  run(${CXX} ${SOURCE}/tests/install/pkgconfig_consumer.cpp ${pc_flags} -o ${consumer}/pkgconfig_consumer)
   run(${CMAKE_COMMAND} -E env WEARSCALE_DATA=${PREFIX}/share/wearscale/data ${consumer}/pkgconfig_consumer)
   # The installed CLI runs and reads the shipped tables of its own prefix (run.h5 records the table's path).
   run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR ${PREFIX}/bin/wearscale version)
@@ -67,6 +73,8 @@ if(STEP STREQUAL "cxx")
   if(at EQUAL -1)
     message(FATAL_ERROR "the installed CLI did not read the data of ${PREFIX}: ${tables}")
   endif()
+  # The help's and the man page's examples that name an example case run from the installed tree alone.
+  run(bash ${SOURCE}/tests/install/run_examples.sh ${PREFIX} ${consumer}/examples)
 elseif(STEP STREQUAL "python")
   # -I: neither PYTHONPATH nor the user's site-packages; the script puts the prefix's first.
   run(${CMAKE_COMMAND} -E env --unset=WEARSCALE_DATA --unset=WEARSCALE_DATA_DIR

@@ -6,6 +6,7 @@
 #include "input_error_of.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <fstream>
 
@@ -208,4 +209,72 @@ TEST(Config, AValueTypedAtAComputedBoundIsAcceptedAsTheBound) {
   EXPECT_THROW(c.number("c", Range::at_least(bound), units::length), InputError);
   EXPECT_THROW(c.number("b", Range::greater_than(bound), units::length), InputError);
   EXPECT_EQ(c.number("d", Range::closed(0.0, 0.5)), 0.5);
+}
+
+// Collecting (a check, a run's preparation): the errors that do not depend on each other are
+// recorded, a valid value stands in for each, and they are raised together, numbered.
+TEST(Config, IndependentErrorsAreCollectedAndRaisedTogether) {
+  const auto c = Config::from_string("[a]\nx = -1\ny = \"fast\"\nn = 0\nz = \"3 kg\"\nq = 1\n", "demo.toml");
+  c.collect_errors(true);
+  EXPECT_EQ(c.number("a.x", Range::closed(0.0, 2.0)), 0.0);                // the nearest allowed value
+  EXPECT_EQ(c.choice_or("a.y", "slow", {"slow", "medium"}), "slow");         // the default
+  EXPECT_EQ(c.integer("a.n", Range::at_least(1)), 1);
+  EXPECT_EQ(c.number_or("a.z", 5.0, Range::any(), units::length), 5.0);      // a unit of the wrong dimension
+  EXPECT_GT(c.number("a.q", Range::positive()), 0.0);
+  EXPECT_TRUE(c.has_collected_errors());
+  const auto msg = input_error_of([&] { c.reject_unknown_keys(); });
+  EXPECT_THAT(msg, HasSubstr("demo.toml: 4 errors in the case:"));
+  EXPECT_THAT(msg, HasSubstr("1. demo.toml:2: key 'a.x' = -1: out of range; allowed: [0, 2]"));
+  EXPECT_THAT(msg, HasSubstr("2. demo.toml:3: key 'a.y' = \"fast\": not a known choice"));
+  EXPECT_THAT(msg, HasSubstr("3. demo.toml:4: key 'a.n' = 0: out of range"));
+  EXPECT_THAT(msg, HasSubstr("4. demo.toml:5: key 'a.z' = \"3 kg\": has unit of"));
+  EXPECT_FALSE(c.has_collected_errors());
+  EXPECT_THROW(c.number("a.x", Range::closed(0.0, 2.0)), InputError);  // collecting stopped: the first error throws
+}
+
+TEST(Config, UnknownKeysAreAllListed) {
+  const auto c = Config::from_string("[a]\nx = 1\nxx = 2\n[b]\ny = 3\n", "demo.toml");
+  c.number("a.x");
+  const auto msg = input_error_of([&] { c.reject_unknown_keys(); });
+  EXPECT_THAT(msg, HasSubstr("2 errors in the case"));
+  EXPECT_THAT(msg, HasSubstr("key 'a.xx' = 2: unknown key"));
+  EXPECT_THAT(msg, HasSubstr("key 'b.y' = 3: unknown key"));
+}
+
+TEST(Config, AnErrorAfterTheCollectedOnesIsListedLastAsPossiblyFollowingFromThem) {
+  const auto c = Config::from_string("[a]\nx = -1\n", "demo.toml");
+  c.collect_errors(true);
+  c.number("a.x", Range::non_negative());
+  const std::string msg = c.collected_with("demo.toml: key 'a.w': missing").what();
+  EXPECT_THAT(msg, HasSubstr("2 errors in the case"));
+  EXPECT_THAT(msg, HasSubstr("2. demo.toml: key 'a.w': missing (found with the values in error above replaced"));
+}
+
+TEST(Config, TheDefaultsAGetterAppliesAreRecordedBesideTheCase) {
+  const auto c = Config::from_string("[a]\nx = 1\n", "demo.toml");
+  c.number("a.x");
+  c.number_or("a.y", 2.5);
+  c.integer_or("b.n", 7);
+  c.boolean_or("b.on", true);
+  c.string_or("a.name", "z");
+  c.number_or("a.big", std::numeric_limits<double>::infinity());
+  c.number_or("a.x", 9.0);  // given: not a default
+  const auto j = c.to_json_with_defaults();
+  EXPECT_EQ(j["a"]["x"], 1);
+  EXPECT_EQ(j["a"]["y"], 2.5);
+  EXPECT_EQ(j["b"]["n"], 7);
+  EXPECT_EQ(j["b"]["on"], true);
+  EXPECT_EQ(j["a"]["big"], "inf");
+  EXPECT_EQ(c.applied_defaults().size(), 5u);
+  EXPECT_FALSE(c.applied_defaults().contains("a.x"));
+  EXPECT_FALSE(c.to_json()["a"].contains("y"));  // the case itself (its fingerprint) is unchanged
+}
+
+TEST(Config, AStopAfterTheWholeCaseIsCheckedIsNotAnError) {
+  const auto c = Config::from_string("[a]\nx = 1\n", "demo.toml");
+  c.number("a.x");
+  c.stop_when_checked(true);
+  EXPECT_NO_THROW(c.section("a").reject_unknown_keys());  // a part of the case: not the whole
+  EXPECT_THROW(c.reject_unknown_keys(), CaseChecked);
+  EXPECT_TRUE(c.fully_checked());
 }

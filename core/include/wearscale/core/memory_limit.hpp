@@ -10,6 +10,8 @@
 // ("4 GiB", "500 MB", or bytes) when set.
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wearscale {
 
@@ -26,6 +28,25 @@ const MemoryLimit& memory_limit();
 /// this process may use (physical memory); <advice>". NaN or infinite bytes
 /// are refused too.
 void require_memory(double bytes, const std::string& what, const std::string& advice = {});
+
+/// What require_memory() is asked for in this thread while a tally lives:
+/// the memory a case declares before it runs (`wearscale check`).
+class MemoryTally {
+ public:
+  MemoryTally();
+  ~MemoryTally();
+  MemoryTally(const MemoryTally&) = delete;
+  MemoryTally& operator=(const MemoryTally&) = delete;
+  /// Each request: what, bytes.
+  const std::vector<std::pair<std::string, double>>& requests() const { return requests_; }
+  /// Their sum.
+  double bytes() const;
+
+ private:
+  friend void require_memory(double, const std::string&, const std::string&);
+  std::vector<std::pair<std::string, double>> requests_;
+  MemoryTally* outer_ = nullptr;
+};
 
 /// "1.5 GiB", "298 GiB": binary units, three significant digits.
 std::string format_bytes(double bytes);

@@ -23,6 +23,11 @@
 
 namespace wearscale {
 
+/// Thrown by Config::reject_unknown_keys() on the whole case when a check
+/// asked to stop there (stop_when_checked): every key has been read and
+/// found valid, and nothing of the run has started. Not an error.
+struct CaseChecked {};
+
 class Config {
  public:
   /// Reads and parses a TOML file; InputError if it is missing, not a
@@ -76,9 +81,38 @@ class Config {
 
   /// Marks a key (and everything under it) as read without reading it.
   void mark_used(std::string_view key) const;
-  /// InputError for the first key nobody read, with the keys that were read
-  /// in the same table and the closest one ("did you mean …?").
+  /// InputError for the keys nobody read (every one of them, with the keys
+  /// read in the same table and the closest: "did you mean …?"). On the
+  /// whole case (a view without prefix) it is the point where every key has
+  /// been read: the errors collected until then (collect_errors) are raised
+  /// with the unknown keys as one InputError, and collecting stops.
   void reject_unknown_keys() const;
+
+  // --- Every error of a case at once ---------------------------------------
+  /// While on, the getters record the errors that do not depend on each other
+  /// instead of throwing at the first: a value out of range, of the wrong
+  /// type or unit, or not a known choice, of a key that has a default (the
+  /// default stands in for it) or of a required number or integer (its
+  /// nearest allowed value stands in). A missing required key, or a check
+  /// between keys, still throws, after the errors recorded before it.
+  /// Shared by the copies and views of this case.
+  void collect_errors(bool on) const;
+  /// Throws the recorded errors as one InputError (one error: its own
+  /// message; several: a numbered list), then stops collecting.
+  void raise_collected_errors() const;
+  /// The recorded errors and `last` (an error thrown while collecting,
+  /// which may follow from the values that stood in for the others) as one.
+  [[nodiscard]] InputError collected_with(const std::string& last) const;
+  bool has_collected_errors() const;
+  /// Whether reject_unknown_keys() has passed on the whole case.
+  bool fully_checked() const;
+  /// When on, reject_unknown_keys() on the whole case throws CaseChecked once
+  /// it passes (a check that must not go on into the work).
+  void stop_when_checked(bool on) const;
+  /// Every default a getter applied to an absent key, {dotted key: value}.
+  const nlohmann::json& applied_defaults() const;
+  /// The resolved case with the applied defaults added where absent.
+  nlohmann::json to_json_with_defaults() const;
 
   /// The InputError for a value found invalid after it was read, e.g. by a
   /// consistency check between two keys; names file, line, key and value.
@@ -103,6 +137,9 @@ class Config {
  private:
   struct State;
   Config(std::shared_ptr<State> state, std::string prefix);
+  /// Records `e` and returns true while collecting; false otherwise (the caller throws it).
+  bool record(const InputError& e) const;
+  void record_default(std::string_view key, nlohmann::json value) const;
   std::shared_ptr<State> state_;
   std::string prefix_;
 };

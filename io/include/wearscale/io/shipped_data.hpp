@@ -13,6 +13,11 @@ namespace wearscale::materials {
 /// installed program or Python module (cmake --install), the source tree's
 /// materials/data (a program run from its build tree).
 std::filesystem::path data_directory();
+/// A file that `cmake --install` put under share/wearscale of the installation
+/// holding the program or module (the example cases: "cases/hertz_pin.toml"),
+/// so that the examples of the help and man page run from an installed tree;
+/// empty when there is no such installed file.
+std::filesystem::path installed_file(const std::filesystem::path& relative);
 /// Makes data_directory() return `dir` (unless an environment variable is set);
 /// empty: back to the search above.
 void set_data_directory(const std::filesystem::path& dir);

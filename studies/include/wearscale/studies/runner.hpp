@@ -90,11 +90,37 @@ RunSummary merge_shards(const std::filesystem::path& dir, const std::string& com
 
 /// Parses the case afresh (a sweep applies each value to its own copy).
 using CaseLoader = std::function<Config()>;
+/// The case of `options` as run_case reads it: its text, its file, or none (a command's keys).
+CaseLoader case_loader(const RunOptions& options);
 
 /// Everything run_case checks before it writes anything, without running or
 /// writing: the case from `parse` with `options.overrides`, its sweep (key,
 /// values, table) and the scales of every run. Returns each run's output
 /// folder; throws what run_case would for the same input (InputError).
 std::vector<std::filesystem::path> check_case(const CaseLoader& parse, const RunOptions& options);
+
+/// What `wearscale check` says of a case, which it reads as run_case does,
+/// every key and every independent error at once, and neither runs nor writes
+/// (a study that reads its keys at the start of its run is taken up to its
+/// check of the whole case, with a scratch folder for what it opens then).
+struct CaseReport {
+  std::string study, case_name, case_file;
+  std::vector<std::string> scales;
+  std::vector<std::filesystem::path> output_dirs;  ///< one per run (each run of a sweep)
+  std::string sweep_key;                           ///< a sweep: its key and each run's value
+  std::vector<std::string> sweep_values;
+  nlohmann::json parameters;  ///< the resolved case with every default the run applies (a sweep: its first run's)
+  nlohmann::json defaults;    ///< those defaults alone: {dotted key: value}
+  /// Keys of the study's schema still absent: {key: its default in words, e.g. "0.6 d_c"}, worked out at run time.
+  nlohmann::json described_defaults;
+  /// Per run: the needs it declared before it starts (require_memory: each a whole data set's, checked
+  /// against the memory limit), each "what" with its bytes.
+  std::vector<std::vector<std::pair<std::string, double>>> memory;
+  nlohmann::json to_json() const;
+  /// The report as `wearscale check` prints it: the resolved case as TOML, defaults marked, then the memory.
+  std::string text() const;
+};
+
+CaseReport inspect_case(const CaseLoader& parse, const RunOptions& options);
 
 }  // namespace wearscale::studies
