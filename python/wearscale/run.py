@@ -67,6 +67,16 @@ def _override(key, value):
     return f"{key}={text}"
 
 
+def _path(value, what):
+    """A file or folder name as text: a str, bytes (decoded as the file system names it) or os.PathLike;
+    InputError for anything else."""
+    try:
+        return os.fsdecode(os.fspath(value))
+    except TypeError:
+        raise _wearscale.InputError(f"run: {what} = {value!r} is not a file name; allowed: a str, bytes or "
+                                    "os.PathLike") from None
+
+
 class RunResult(dict):
     """The run's ``--json`` summary (a dict: results, parameters, files, output_dir, ...), plus accessors."""
 
@@ -116,10 +126,12 @@ def run(case, out=None, resume=None, quiet=True, set=None, task=None, **override
     elif isinstance(case, str) and ("\n" in case or "=" in case) and not os.path.exists(case):
         path, text = "<case string>", case
     else:
-        path, text = str(case), None
-    summary = _wearscale.runner.run_case(path, sets, None if out is None else str(out),
-                                         None if resume is None else str(resume), quiet, text,
-                                         "" if task is None else str(task))
+        path, text = _path(case, "case"), None
+    # Folders go to the runner as paths (str, bytes or os.PathLike, as the file system names them), never
+    # through str(): str(b"/tmp/x") is "b'/tmp/x'".
+    summary = _wearscale.runner.run_case(path, sets, None if out is None else _path(out, "out"),
+                                         None if resume is None else _path(resume, "resume"), quiet, text,
+                                         None if task is None else str(task))
     return RunResult(json.loads(summary))
 
 
@@ -127,12 +139,12 @@ def merge(folder, quiet=True):
     """Writes the outputs of an ensemble whose shards (``run(..., task="K/N", out=folder)``) all ran into
     ``folder``, as ``wearscale merge DIR`` does, and returns its :class:`RunResult`. ValueError (InputError),
     naming each missing task and the shard that owes it, while some are not done; nothing is written then."""
-    return RunResult(json.loads(_wearscale.runner.merge_shards(str(folder), quiet)))
+    return RunResult(json.loads(_wearscale.runner.merge_shards(_path(folder, "folder"), quiet)))
 
 
 def check(case_file, **overrides):
     """Every check :func:`run` makes before it writes anything; returns the output folders."""
-    return _wearscale.runner.check_case(str(case_file), [_override(k.replace("__", "."), v) for k, v in overrides.items()])
+    return _wearscale.runner.check_case(_path(case_file, "case_file"), [_override(k.replace("__", "."), v) for k, v in overrides.items()])
 
 
 __all__ = ["RunResult", "check", "merge", "run", "to_toml"]

@@ -67,14 +67,14 @@ def analyze(heights, lx=None, ly=None, q_min=0.0, q_max=float("inf"), detrend=Fa
 
 
 def read(file, dataset="/surface/height", lx=None, ly=None, missing="refuse"):
-    h, meta = _s.read(str(file), dataset, lx, ly, missing)
+    h, meta = _s.read(file, dataset, lx, ly, missing)  # a str, bytes or os.PathLike
     return Surface(h, meta["lx_m"], meta["ly_m"], meta)
 
 
 def write(file, heights, lx=None, ly=None):
     """Writes heights [m] as wearscale's HDF5 surface with an XDMF sidecar (returned)."""
     h, lx, ly = _heights_and_size(heights, lx, ly)
-    return _s.write(str(file), h, lx, ly)
+    return _s.write(file, h, lx, ly)
 
 
 def sphere(n, size, radius, cx=None, cy=None):

@@ -136,9 +136,24 @@ std::unique_ptr<Study> study_for(const Config& cfg, const RunOptions& options) {
   return study_registry().create(options.study.empty() ? study_of(cfg) : options.study);
 }
 
+// A folder given on the command line: a name (not empty, which would be taken as no --out at all) of a
+// folder, not "-" (wearscale writes files into a folder, never to stdout).
+void require_folder_name(const std::filesystem::path& dir, const char* option) {
+  if (dir.empty())
+    throw InputError(fmt::format("{} '': an empty folder name; allowed: the name of a folder to write into (without "
+                                 "{}: the case's [output] dir)",
+                                 option, option));
+  if (dir == "-")
+    throw InputError(fmt::format("{} -: wearscale writes a folder of files, not to standard output; allowed: the name "
+                                 "of a folder (--json prints the results on standard output)",
+                                 option));
+}
+
 // Paths from the command line end up in summary.json, which holds UTF-8 only.
 void require_utf8_paths(const RunOptions& options) {
   require_utf8_path(options.case_file, "case file");
+  if (options.output_dir) require_folder_name(*options.output_dir, "--out");
+  if (options.resume_dir) require_folder_name(*options.resume_dir, "--resume");
   if (options.output_dir) require_utf8_path(*options.output_dir, "--out");
   if (options.resume_dir) require_utf8_path(*options.resume_dir, "--resume");
 }
@@ -350,9 +365,11 @@ void check_sweep(const Config& probe, const std::string& key, const std::vector<
     }
   const bool plain = !table_name.empty() && table_name.front() != '.' && table_name.find('/') == std::string::npos &&
                      table_name.find('\0') == std::string::npos;
-  if (!plain || table_name == "summary.json" || std::find(labels.begin(), labels.end(), table_name) != labels.end())
+  if (!plain || is_reserved_output_name(table_name) ||
+      std::find(labels.begin(), labels.end(), table_name) != labels.end())
     throw probe.error("sweep.table", "not a file name for the sweep table",
-                      "a plain file name in the sweep's folder (no '/', not hidden, not summary.json or a run's folder)");
+                      "a plain file name in the sweep's folder (no '/', not hidden, not a run's folder nor one of the "
+                      "runner's own files: run.h5, summary.json, checkpoint.h5, log.txt, task-K-of-N.json)");
 }
 
 // A sweep checked and ready: every run prepared, nothing written yet.
@@ -424,8 +441,9 @@ struct Shard {
   bool owns(std::size_t k) const { return k % of == index - 1; }
 };
 
-std::optional<Shard> parse_shard(const std::string& text) {
-  if (text.empty()) return std::nullopt;
+std::optional<Shard> parse_shard(const std::optional<std::string>& given) {
+  if (!given) return std::nullopt;
+  const std::string& text = *given;
   const auto bad = [&] {
     return InputError(fmt::format("--task '{}': not a shard; allowed: K/N with 1 <= K <= N <= 1000000 (the K-th of N "
                                   "shards of the case's ensemble), e.g. --task 2/8",

@@ -102,10 +102,9 @@ class SurfaceGenerate final : public Study {
       measure_ = bem::RoughnessMeasure::Sa;
       target_ = c.number("sa", Range::open_closed(0.0, side), units::length);
     }
-    file_ = c.string_or("file", "surface.h5");
-    const std::filesystem::path name(file_);
-    if (name.filename() != name || file_.front() == '.' || name.extension() != ".h5")
-      throw c.error("file", "not a file name in the output folder", "a plain file name ending in .h5");
+    if (const auto p = bem::roughness_target_problem(spec_, measure_, target_); !p.problem.empty())
+      throw c.error(key, p.problem, p.allowed);
+    file_ = output_file_name(c, "file", "surface.h5", {".h5"});
     // The surface, its spectrum and the copy written out, before any is allocated.
     require_memory(48.0 * static_cast<double>(nx) * static_cast<double>(ny),
                    fmt::format("surface generate: a {} × {} surface", nx, ny), "give a smaller --n (or --nx, --ny)");

@@ -49,7 +49,9 @@ struct RunOptions {
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set (messages name "--set KEY=VALUE")
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
   std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
-  std::string task;  ///< --task K/N: only the K-th of N shards of the case's ensemble (its [sweep]); "": all
+  /// --task K/N: only the K-th of N shards of the case's ensemble (its [sweep]); none: all (an empty text
+  /// is refused, as an empty --out or --resume is).
+  std::optional<std::string> task;
 };
 
 struct RunSummary {

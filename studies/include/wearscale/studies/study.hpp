@@ -128,6 +128,18 @@ class StudyRegistry {
 /// Every study of the build (each registered by its WEARSCALE_STUDY line).
 const StudyRegistry& study_registry();
 
+/// The names the runner keeps for itself in a run's output folder (run.h5,
+/// summary.json, checkpoint.h5, log.txt, tasks, logs, task-K-of-N.json, the
+/// lock): no output a user names may take one of them.
+bool is_reserved_output_name(const std::string& name);
+
+/// The file name a key gives for an output of the study in its folder, checked
+/// before any work: a plain name (no folder, not hidden, not empty), ending in
+/// one of `extensions` (none given: any), not one the runner keeps for itself
+/// (is_reserved_output_name). InputError naming the key and what is allowed.
+std::string output_file_name(const Config& c, const std::string& key, const std::string& fallback,
+                             const std::vector<std::string>& extensions);
+
 /// The study a case runs: [case] study = NAME, else "pipeline" for a case
 /// with [scale.*] tables, else the study named by the case's one top-level
 /// table (or table.subtable: [dem.junction] → dem/junction) that is a study's name ([contact] → contact).
