@@ -8,6 +8,7 @@
 #include <atomic>
 #include <exception>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -21,6 +22,7 @@
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/output_set.hpp"
@@ -350,19 +352,28 @@ void check_sweep(const Config& probe, const std::string& key, const std::vector<
                         "a key of what the case computes, e.g. materials.layer.thickness");
   if (!probe.has(key))
     throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
-  for (std::size_t a = 0; a < values.size(); ++a)
-    for (std::size_t b = 0; b < a; ++b) {
-      bool same = values[a] == values[b] || labels[a] == labels[b];
-      try {  // "1 um" and 1e-6 are one run too
-        same = same || units::parse_quantity(values[a]).value == units::parse_quantity(values[b]).value;
-      } catch (const std::exception&) {
-      }
-      if (same)
-        throw probe.error("sweep.values",
-                          fmt::format("values {} ('{}') and {} ('{}') are the same run (folder {})", b + 1, values[b],
-                                      a + 1, values[a], labels[a]),
-                          "distinct values");
+  // Two values are one run when they are the same text, give the same folder, or the same quantity ("1 um" and
+  // 1e-6): each value looked up among those before it (a sort, not all pairs: a sweep may hold 10 000 values).
+  std::map<std::string, std::size_t> seen_text, seen_label;
+  std::map<double, std::size_t> seen_number;
+  for (std::size_t a = 0; a < values.size(); ++a) {
+    std::optional<std::size_t> first;
+    const auto look = [&](auto& seen, const auto& key) {
+      const auto [it, inserted] = seen.emplace(key, a);
+      if (!inserted && (!first || it->second < *first)) first = it->second;
+    };
+    look(seen_text, values[a]);
+    look(seen_label, labels[a]);
+    try {
+      look(seen_number, units::parse_quantity(values[a]).value);
+    } catch (const std::exception&) {
     }
+    if (first)
+      throw probe.error("sweep.values",
+                        fmt::format("values {} ('{}') and {} ('{}') are the same run (folder {})", *first + 1,
+                                    values[*first], a + 1, values[a], labels[a]),
+                        "distinct values");
+  }
   const bool plain = !table_name.empty() && table_name.front() != '.' && table_name.find('/') == std::string::npos &&
                      table_name.find('\0') == std::string::npos;
   if (!plain || is_reserved_output_name(table_name) ||
@@ -371,6 +382,12 @@ void check_sweep(const Config& probe, const std::string& key, const std::vector<
                       "a plain file name in the sweep's folder (no '/', not hidden, not a run's folder nor one of the "
                       "runner's own files: run.h5, summary.json, checkpoint.h5, log.txt, task-K-of-N.json)");
 }
+
+// What the runner holds for a prepared run of a sweep besides what its study
+// keeps (Study::prepared_bytes): its case, summary and checkpoint policy.
+// Measured about 40 KiB for the pin-on-disc case (check_case of a 2000-run
+// sweep); the estimate leaves room for larger cases.
+constexpr double prepared_run_bytes = 256.0 * 1024.0;
 
 // A sweep checked and ready: every run prepared, nothing written yet.
 struct SweepPlan {
@@ -395,6 +412,14 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   plan.series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
   plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
   const std::vector<std::string>& series = plan.series;
+  // Every run is prepared (and held) before any starts: their number is bounded before the first.
+  const double run_count = static_cast<double>(values.size()) * static_cast<double>(series.size());
+  if (run_count > static_cast<double>(max_sweep_runs))
+    throw probe.error(plan.series_key.empty() ? "sweep.values" : "sweep.series.values",
+                      fmt::format("{:.0f} runs ({} values{})", run_count, values.size(),
+                                  plan.series_key.empty() ? std::string()
+                                                          : fmt::format(" × {} series values", series.size())),
+                      fmt::format("at most {} runs in one sweep; split it into several sweeps", max_sweep_runs));
   plan.values = values;
   for (const auto& v : values) plan.labels.push_back(label_of(key, v));
   check_sweep(probe, key, values, plan.labels, plan.table_name);
@@ -414,17 +439,25 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   }
   sweep.sweep_key = key;
   sweep.series_key = plan.series_key;
-  // Every run is checked before any starts.
+  // Every run is checked before any starts. A run's case is the sweep's without its [sweep] (the case that
+  // reproduces that run alone; each run holding all the values made the preparation grow as their square).
   const std::string where = probe.where("sweep.values");
+  Config base = load(parse, options);
+  base.erase("sweep");
   std::vector<std::string> run_value;
   for (const auto& sv : series) {
     const auto folder =
         plan.series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(plan.series_key, sv);
     for (std::size_t k = 0; k < values.size(); ++k) {
-      std::vector<std::pair<std::string, std::string>> extra{
-          {key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)}};
-      if (!plan.series_key.empty()) extra.push_back({plan.series_key + "=" + sv, probe.where("sweep.series.values")});
-      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k], options));
+      throw_if_interrupted("preparing the sweep's runs (nothing was written)");
+      Config cfg = base.clone();
+      cfg.override_value(key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k));
+      if (!plan.series_key.empty()) cfg.override_value(plan.series_key + "=" + sv, probe.where("sweep.series.values"));
+      plan.runs.push_back(prepare(std::move(cfg), folder / plan.labels[k], options));
+      if (plan.runs.size() == 1)  // what every run holds until it runs, from the first: within the memory limit
+        require_memory(run_count * (prepared_run_bytes + plan.runs.front().study->prepared_bytes()),
+                       fmt::format("a sweep of {:.0f} runs (each checked and held before any starts)", run_count),
+                       "split it into several sweeps");
       run_value.push_back(values[k]);
       plan.run_series.push_back(sv);
     }

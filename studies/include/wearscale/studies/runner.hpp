@@ -36,6 +36,10 @@
 
 namespace wearscale::studies {
 
+/// The most runs one [sweep] may hold (its values times its series values):
+/// every run is checked and held before the first starts.
+inline constexpr std::size_t max_sweep_runs = 10000;
+
 struct RunOptions {
   std::filesystem::path case_file;                ///< empty: no case file (a command's flags give the keys)
   /// The case as TOML text instead of a file (Python's dict or string case): case_file then only

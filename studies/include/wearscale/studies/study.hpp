@@ -72,6 +72,10 @@ class Study {
   /// at the start of run() need not override it. Returns the parts it runs,
   /// in order (the scales of a pipeline), for the summary.
   virtual std::vector<std::string> prepare(Config& /*inputs*/) { return {}; }
+  /// The memory prepare() keeps until run() (a topography it read, a grid it
+  /// planned), in bytes: a sweep holds every run prepared before the first
+  /// starts, and checks their sum against the memory limit first.
+  virtual double prepared_bytes() const { return 0.0; }
   /// Computes, writing its outputs into context.output_dir() and reporting its
   /// headline figures and files to `context`. Checks every key before any
   /// work (config.reject_unknown_keys()), when prepare() did not.
