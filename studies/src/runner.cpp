@@ -41,6 +41,7 @@
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/studies/study.hpp"
 #include "contact_slab.hpp"
+#include "result_bounds.hpp"
 
 namespace wearscale::studies {
 
@@ -235,6 +236,11 @@ void find_resume_point(PreparedRun& run) {
     log::warn("{}: the outputs of the completed run are not intact ({}): the run starts again", dir.string(), broken);
     return;
   }
+  // Its figures as a computed run's are held to: a summary changed by hand (or by another program) is no result.
+  if (const std::string why = results_problem(j.value("results", nlohmann::json::object())); !why.empty())
+    throw InputError(fmt::format("{}: {}; no run writes that (the summary was changed or damaged): delete {} and run "
+                                 "it again",
+                                 summary_file.string(), why, dir.string()));
   run.summary.results = j.value("results", nlohmann::json::object());
   for (const auto& [key, value] : j.items())  // the study's own fields
     if (!RunSummary{}.to_json().contains(key) && key != "results") run.summary.notes[key] = value;
@@ -297,8 +303,10 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   if (run.tasks == mpi::TaskStore::Mode::Shard) throw mpi::ShardDone("every task of the run is done");
   for (const auto& [name, r] : context.results().items()) {
     const double value = r["value"].get<double>();
-    if (!std::isfinite(value))  // never a NaN (null in JSON) or infinite headline figure
-      throw NumericalError("case " + summary.case_name, 0, name, fmt::format("the result is {}", value));
+    // Never a NaN (null in JSON), infinite or unphysical headline figure: the bounds a resumed or merged
+    // result is held to as well (result_bounds.hpp).
+    if (const std::string why = result_outside_bounds(name, value, r["unit"].get<std::string>()); !why.empty())
+      throw NumericalError("case " + summary.case_name, 0, name, "a result outside physical bounds: " + why);
     h5.write_scalar("/results/" + name, value, r["unit"].get<std::string>());
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
