@@ -90,11 +90,13 @@ class SurfaceGenerate final : public Study {
       throw c.error("hprime_rms", fmt::format("give exactly one of hprime_rms, h_rms, sa (got {})", targets),
                     "one roughness target (--hprime-rms, --h-rms, --sa)");
     // Bounds that keep every derived figure finite and the surface a surface: an RMS slope up to 100 (the
-    // BEM assumes small slopes: ≲ 1), heights up to the side of the surface.
+    // BEM assumes small slopes: ≲ 1), heights up to the side of the surface; and the slope an h_RMS or Sa
+    // target gives on this spectrum within the same bound (bem::check_roughness_target, as contact.rough's).
     const double side = std::min(lx, ly);
+    const char* key = c.has("hprime_rms") ? "hprime_rms" : c.has("h_rms") ? "h_rms" : "sa";
     if (c.has("hprime_rms")) {
       measure_ = bem::RoughnessMeasure::HPrimeRms;
-      target_ = c.number("hprime_rms", Range::open_closed(0.0, 100.0));
+      target_ = c.number("hprime_rms", Range::open_closed(0.0, bem::max_hprime_rms));
     } else if (c.has("h_rms")) {
       measure_ = bem::RoughnessMeasure::HRms;
       target_ = c.number("h_rms", Range::open_closed(0.0, side), units::length);
