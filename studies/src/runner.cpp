@@ -203,6 +203,74 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   return run;
 }
 
+// A completed run's summary.json is a sweep's (it has "sweep") or a single run's: --resume continues one
+// of the same kind only (a sweep resumed over a single run's folder would replace its outputs).
+void require_summary_of_kind(const std::filesystem::path& summary_file, const nlohmann::json& j, bool sweep) {
+  const bool is_sweep = j.is_object() && j.contains("sweep");
+  if (is_sweep == sweep) return;
+  throw InputError(fmt::format("--resume: {} is the summary of a completed {}, and the case is {}; resume it with the "
+                               "case it was run with, or write to another folder (nothing was changed)",
+                               summary_file.string(), is_sweep ? "sweep" : "single run (no [sweep])",
+                               sweep ? "a sweep" : "a single run"));
+}
+
+// Subfolders of `dir` (one or two levels down) that hold a run: its summary.json, checkpoint.h5 or log.txt
+// (with `sweep_runs_only`, log.txt alone: the runs of an ensemble).
+std::vector<std::filesystem::path> run_folders_in(const std::filesystem::path& dir, bool sweep_runs_only) {
+  std::vector<std::filesystem::path> found;
+  const auto holds_run = [&](const std::filesystem::path& d) {
+    std::error_code ec;
+    if (std::filesystem::exists(d / "log.txt", ec)) return true;
+    return !sweep_runs_only &&
+           (std::filesystem::exists(d / "summary.json", ec) || std::filesystem::exists(d / "checkpoint.h5", ec));
+  };
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!it->is_directory(ec) || it->path().filename().string().starts_with(".")) continue;
+    const auto name = it->path().filename();
+    if (name == "tasks" || name == "logs") continue;  // a run's own kept tasks and task logs
+    if (holds_run(it->path())) {
+      found.push_back(name);
+      continue;
+    }
+    std::error_code inner;
+    for (std::filesystem::directory_iterator jt(it->path(), inner), jend; !inner && jt != jend; jt.increment(inner))
+      if (jt->is_directory(inner) && holds_run(jt->path())) found.push_back(name / jt->path().filename());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// The one rule of what a run may remove: only what the previous run of its folder wrote (its summary.json lists
+// its files and, for a sweep, its runs' folders; OutputSet::commit removes those it does not write again). Runs
+// in the folder that no summary accounts for (left by a sweep that never completed, or put there by hand) would
+// stay mixed with this run's: refused before any work, nothing changed.
+void refuse_foreign_runs(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& own,
+                         bool sweep_runs_only) {
+  nlohmann::json previous = nlohmann::json::object();
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(dir / "summary.json", ec)) try {
+      previous = nlohmann::json::parse(read_text_file(dir / "summary.json", "summary", std::uintmax_t{1} << 26));
+    } catch (const std::exception&) {
+    }
+  const auto owned = OutputSet::owned_folders(previous);
+  std::vector<std::string> foreign;
+  for (const auto& f : run_folders_in(dir, sweep_runs_only)) {
+    const auto in = [&](const std::vector<std::filesystem::path>& set) {
+      return std::any_of(set.begin(), set.end(), [&](const auto& o) { return o == f || *f.begin() == o; });
+    };
+    if (!in(own) && !in(owned)) foreign.push_back((dir / f).string());
+  }
+  if (foreign.empty()) return;
+  const std::size_t shown = std::min<std::size_t>(foreign.size(), 3);
+  throw OutputError(fmt::format(
+      "{} holds {} run folder(s) that are not this run's and that no completed run of the folder lists ({}{}): a "
+      "run would leave them mixed with its own; --resume them with the case that made them, move or delete them, or "
+      "write to another folder (nothing was changed)",
+      dir.string(), foreign.size(), fmt::join(foreign.begin(), foreign.begin() + static_cast<long>(shown), ", "),
+      foreign.size() > shown ? ", ..." : ""));
+}
+
 // What --resume finds in a run's folder: a checkpoint to continue from, the
 // summary of a run that had completed, or nothing yet (it starts afresh).
 void find_resume_point(PreparedRun& run) {
@@ -225,6 +293,8 @@ void find_resume_point(PreparedRun& run) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a wearscale summary ({})", summary_file.string(), e.what()));
   }
+  if (!j.is_object()) throw InputError(fmt::format("{}: not a wearscale summary", summary_file.string()));
+  require_summary_of_kind(summary_file, j, false);
   const std::string was = case_fingerprint(j.value("parameters", nlohmann::json::object()));
   if (was != run.fingerprint) {
     const std::string diff = describe_case_difference(was, run.fingerprint);
@@ -475,6 +545,28 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   return plan;
 }
 
+// The run folders of a sweep, relative to its folder (a series' runs one level further down).
+std::vector<std::filesystem::path> run_folders_of(const SweepPlan& plan) {
+  std::vector<std::filesystem::path> out;
+  for (const auto& r : plan.runs) out.push_back(r.summary.output_dir.lexically_relative(plan.sweep.output_dir));
+  return out;
+}
+
+// --resume of a sweep: the folder holds no summary yet, or a sweep's (never a completed single run's, whose
+// outputs the sweep's summary would replace).
+void require_sweep_summary_or_none(const std::filesystem::path& dir) {
+  const auto file = dir / "summary.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_text_file(file, "summary", std::uintmax_t{1} << 26));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a wearscale summary ({})", file.string(), e.what()));
+  }
+  require_summary_of_kind(file, j, true);
+}
+
 // A shard of an ensemble (--task K/N): the runs k with k mod N = K − 1.
 struct Shard {
   std::size_t index = 1, of = 1;  // K, N
@@ -609,6 +701,7 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
   const std::string& table_name = plan.table_name;
   const bool any_failed = std::any_of(failures.begin(), failures.end(), [](const std::string& f) { return !f.empty(); });
   OutputSet outputs(sweep.output_dir, "summary.json");
+  for (const auto& folder : run_folders_of(plan)) outputs.own_folder(folder);  // the sweep's runs: its set
   std::vector<std::string> names, result_units;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
@@ -729,6 +822,10 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     if (!mpi::is_root()) return;
     lock.emplace(shard ? OutputLock::folder(sweep.output_dir, command, OutputLock::Mode::Shared, ensemble)
                        : OutputLock::folder(sweep.output_dir, command));
+    if (options.resume_dir) require_sweep_summary_or_none(sweep.output_dir);
+    refuse_foreign_runs(sweep.output_dir, run_folders_of(plan), false);
+    // The unfinished files of a sweep killed while it wrote its table or plots (its runs clean their own).
+    remove_stale_partials(sweep.output_dir);
     if (options.resume_dir) {
       for (const auto k : mine) find_resume_point(runs[k]);
       const auto finished = std::count_if(mine.begin(), mine.end(), [&](std::size_t k) { return runs[k].complete; });
@@ -1005,6 +1102,7 @@ RunSummary run_case(const RunOptions& options_in) {
   if (shard) return run_shard(run, options, *shard);
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
+  refuse_foreign_runs(run.summary.output_dir, {}, true);
   if (options.resume_dir)
     find_resume_point(run);
   else
