@@ -172,7 +172,7 @@ int run(int argc, char** argv) {
     if (const auto* failed = dynamic_cast<const mpi::TasksFailed*>(&e)) {  // every rank ends together
       every_rank_refused = true;
       if (failed->speaks()) log::error("{}", e.what());
-      return exit_numerical_failure;
+      return failed->output() ? exit_bad_input : exit_numerical_failure;  // a full disk is 2, as a serial run's
     }
     if (const auto* joint = dynamic_cast<const mpi::JointRefusal*>(&e)) {  // every rank refused together
       every_rank_refused = true;

@@ -846,6 +846,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     tasks.push_back({{"run", k + 1}, {"rank", rank}, {"threads", run_threads}, {"seconds", seconds}});
   };
   const std::string what = shard ? fmt::format("shard {} of the sweep", shard->text()) : std::string("sweep");
+  bool any_output_failure = false;  // a farmed run failed to write its outputs: status 2
 
   if (farmed) {
     log::info("{} over {}: {} runs on {} MPI ranks × {} thread(s) → {}", what, key, mine.size(), mpi::size(),
@@ -867,10 +868,17 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
                                       mine.size()));
       rethrow_interrupted(e, command, sweep.output_dir);
     }
+    // A run that could not write its outputs (a full disk) ends the job with status 2 on every rank, as a
+    // serial run's would; rank 0 alone knows the failures, and tells.
+    bool output_failed = false;
+    if (mpi::is_root())
+      for (const auto& r : outcome.results) output_failed = output_failed || r.output;
+    output_failed = mpi::sum(output_failed ? 1LL : 0LL) > 0;
     if (!mpi::is_root()) {
-      if (outcome.failed > 0) throw mpi::TasksFailed("", false);
+      if (outcome.failed > 0) throw mpi::TasksFailed("", false, output_failed);
       return sweep;
     }
+    any_output_failure = output_failed;
     for (std::size_t t = 0; t < mine.size(); ++t) {
       const auto& r = outcome.results[t];
       add_task(mine[t], r.rank, r.threads, r.seconds);
@@ -936,7 +944,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
       throw mpi::TasksFailed(fmt::format("{}: {} of its {} runs failed: {}; rerun them with: {} --resume {}", what,
                                          failed.size(), mine.size(), fmt::join(failed, "; "), command,
                                          sweep.output_dir.string()),
-                             true);
+                             true, any_output_failure);
     log::info("shard {} done; once every shard is: wearscale merge {}", shard->text(), sweep.output_dir.string());
     return part;
   }
@@ -949,7 +957,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
                                        "with: {} --resume {}",
                                        what, failed.size(), runs.size(), fmt::join(failed, "; "), command,
                                        sweep.output_dir.string()),
-                           true);
+                           true, any_output_failure);
   return sweep;
 }
 
