@@ -101,3 +101,27 @@ TEST(ShearSpec, FingerprintChangesWithEveryRunInput) {
   b.pressures = {1e9};  // pressures live in each run's deck, not in the fingerprint
   EXPECT_EQ(a.fingerprint(), b.fingerprint());
 }
+
+// No file name is LAMMPS code: a potential file whose name holds a newline and a
+// `shell` command, `$`, `#` or quotes is copied into the run folder under a deck
+// word, and a deck refuses any other word it is handed.
+TEST(ShearDeck, AFileNameIsNeverLammpsCode) {
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 10e9};
+  for (const std::string hostile : {"x\nshell touch PWNED\n.sw", "a b.sw", "${x}.sw", "#.sw", "'q'.sw", "-in.sw",
+                                    ".hidden", "x&\nshell rm -rf .sw"}) {
+    s.potential = "/somewhere/" + hostile;
+    const std::string name = run_potential_name(s);
+    EXPECT_TRUE(is_deck_word(name)) << name;
+    EXPECT_EQ(name.rfind("potential_", 0), 0u) << name;
+    DeckFiles f;
+    f.potential = name;
+    const std::string d = shear_deck(s, 10e9, f);
+    EXPECT_TRUE(has_line(d, "pair_coeff * * " + name + " Si"));
+    EXPECT_EQ(d.find("shell"), std::string::npos);
+    f.potential = hostile;  // handed a word that is not one: refused, never written
+    EXPECT_THROW((void)shear_deck(s, 10e9, f), std::logic_error) << hostile;
+  }
+  s.potential = "/usr/share/lammps/potentials/Si.sw";
+  EXPECT_EQ(run_potential_name(s), "Si.sw") << "a plain name is kept (the cache keys of shipped potentials stand)";
+}
