@@ -2,9 +2,12 @@
 // micro-contacts and the numerical rough wear map (§5.3).
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/candidate_particles.hpp"
 #include "wearscale/wear/energy_release.hpp"
@@ -75,6 +78,8 @@ Disc disc_of(const std::tuple<long, long, long>& d, const Grid2D& g) {
 }
 
 py::array disc_mask(std::size_t nx, std::size_t ny, const std::tuple<long, long, long>& d) {
+  require_memory(static_cast<double>(nx) * static_cast<double>(ny), fmt::format("a {} × {} mask", nx, ny),
+                 "use a smaller grid");
   const Grid2D g(nx, ny, 1.0, static_cast<double>(ny) / static_cast<double>(nx));
   const Disc disc = disc_of(d, g);
   py::array_t<bool> out({nx, ny});

@@ -199,6 +199,8 @@ RealField sphere_rows(const Grid2D& grid, std::size_t first, std::size_t rows, d
   if (!std::isfinite(cx) || !std::isfinite(cy))
     throw InputError::at_key("sphere", "centre", fmt::format("({:g}, {:g})", cx, cy), "not finite", "finite lengths");
   if (first + rows > grid.nx) throw std::invalid_argument("sphere_rows: rows beyond the grid");
+  require_memory(8.0 * static_cast<double>(rows) * static_cast<double>(grid.ny),
+                 fmt::format("a sphere of {} × {} points", rows, grid.ny), "use a smaller grid");
   RealField h(grid.slab(rows));
   // Nearest periodic image: the offset folded into [−L/2, L/2).
   auto fold = [](double d, double l) { return d - l * std::floor(d / l + 0.5); };
