@@ -126,6 +126,7 @@ int run(int argc, char** argv) {
     FFTPlanCache::global().set_threads(threads);
   }
   install_interrupt_handlers();
+  ignore_output_signals();  // a closed stdout or `ulimit -f`: write errors reported (exit 2), not a death
   app::set_invocation(argc, argv);
   const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name();
   if (mpi::size() > 1 && (command == "backends" || command == "version" || command == "completion" ||
@@ -147,7 +148,18 @@ int run(int argc, char** argv) {
   if (mpi::size() > 1 && !mpi::is_root()) log::set_level(log::Level::Silent);
   try {
     for (auto* sub : app.get_subcommands())
-      if (commands.count(sub) != 0) return commands.at(sub)();
+      if (commands.count(sub) != 0) {
+        const int status = commands.at(sub)();
+        // What a command printed reached standard output, or it says so (a closed pipe, a full disk under
+        // `> file`): the files of a run are complete in its folder either way.
+        std::cout.flush();
+        if (status == 0 && !std::cout) {
+          log::error("cannot write to standard output (closed, or its disk full): the results printed there are "
+                     "lost; a run's files are complete in its output folder");
+          return exit_bad_input;
+        }
+        return status;
+      }
     return exit_bad_input;
   } catch (const Interrupted& e) {
     if (dynamic_cast<const mpi::JointInterruption*>(&e) != nullptr) every_rank_refused = true;  // all stopped alike
@@ -161,7 +173,7 @@ int run(int argc, char** argv) {
     if (const auto* failed = dynamic_cast<const mpi::TasksFailed*>(&e)) {  // every rank ends together
       every_rank_refused = true;
       if (failed->speaks()) log::error("{}", e.what());
-      return exit_numerical_failure;
+      return failed->output() ? exit_bad_input : exit_numerical_failure;  // a full disk is 2, as a serial run's
     }
     if (const auto* joint = dynamic_cast<const mpi::JointRefusal*>(&e)) {  // every rank refused together
       every_rank_refused = true;

@@ -103,18 +103,21 @@ void add_runner_flags(CLI::App* cmd, StudyFlags& f, const std::string& example) 
       ->take_all()
       ->expected(1)
       ->allow_extra_args(false);
-  cmd->add_option("--out", f.out, "Output folder (default: [output].dir of the case, else out/<case name>)");
+  cmd->add_option("--out", f.out, "Output folder (default: [output].dir of the case, else out/<case name>)")
+      ->each([&f](const std::string&) { f.out_given = true; });
   cmd->add_option("--resume", f.resume,
                   "Continue the killed or interrupted run whose output folder is DIR from its checkpoint (same case "
                   "and --set options; a sweep reruns only its unfinished runs, a run's ensembles only their "
                   "unfinished tasks, under any number of MPI ranks)")
-      ->type_name("DIR");
-  cmd->add_option("--task", f.options.task,
+      ->type_name("DIR")
+      ->each([&f](const std::string&) { f.resume_given = true; });
+  cmd->add_option("--task", f.task,
                   "Run only the K-th of N shards of the case's ensemble (the runs of its [sweep], else the tasks "
                   "of the run's ensembles: a wear map's surfaces, junction runs, LAMMPS points; those k with "
                   "k mod N = K-1) into the output folder, which the other shards share (a job array); `wearscale "
                   "merge DIR` writes the outputs once all are done")
-      ->type_name("K/N");
+      ->type_name("K/N")
+      ->each([&f](const std::string&) { f.task_given = true; });
   cmd->add_flag("--json", f.json, "Print one JSON object with the headline results and resolved parameters");
   cmd->add_flag("--dry-run", f.dry_run,
                 "Check the case (every key, every error at once) and print it resolved, with every default and the "
@@ -166,14 +169,16 @@ void resolve_flags(StudyFlags& f) {
                        : !given.list_unit.empty() ? list_to_toml(given.flag, given.value, given.list_unit, key)
                                                   : given.value),
           given.is_switch ? given.flag : given.flag + " " + given.value);
-  if (!f.out.empty()) f.options.output_dir = f.out;
-  if (!f.resume.empty()) f.options.resume_dir = f.resume;
+  // Given, even empty: the runner refuses an empty --out rather than take the default folder.
+  if (f.out_given) f.options.output_dir = f.out;
+  if (f.resume_given) f.options.resume_dir = f.resume;
+  if (f.task_given) f.options.task = f.task;
 }
 }  // namespace
 
 int check_study(StudyFlags& f) {
   resolve_flags(f);
-  if (f.options.resume_dir || !f.options.task.empty())
+  if (f.options.resume_dir || f.options.task)
     throw InputError("--dry-run checks a case as a fresh run does; drop --resume and --task");
   const auto report = studies::inspect_case(studies::case_loader(f.options), f.options);
   if (!mpi::is_root()) return 0;

@@ -22,7 +22,8 @@ struct StudyFlags {
     std::string list_unit;  ///< "A,B": plain numbers in this unit, written as ["A unit", "B unit"]
   };
   studies::RunOptions options;
-  std::string out, resume;
+  std::string out, resume, task;
+  bool out_given = false, resume_given = false, task_given = false;  ///< given, even as an empty text
   bool json = false;
   bool dry_run = false;  ///< --dry-run: check and print the resolved case, as `wearscale check`
   std::map<std::string, Given> keys;  ///< schema key → its alias flag and value

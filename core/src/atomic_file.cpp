@@ -17,7 +17,9 @@ namespace wearscale {
 namespace {
 
 [[noreturn]] void io_error(const std::string& what, const std::filesystem::path& p, int error) {
-  throw OutputError(fmt::format("{} {}: {}", what, p.string(), std::strerror(error)));
+  // EFBIG: the file size limit of the process (ulimit -f); SIGXFSZ is ignored so that it arrives here.
+  throw OutputError(fmt::format("{} {}: {}{}", what, p.string(), std::strerror(error),
+                                error == EFBIG ? " (beyond this process' file size limit, ulimit -f)" : ""));
 }
 
 // fsync of a file or folder. EINVAL/EROFS: a file system without fsync (some

@@ -1,5 +1,6 @@
 #include "wearscale/core/checkpoint_state.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
@@ -29,6 +30,20 @@ double CheckpointState::scalar(const std::string& name) const {
   const auto& a = array(name);
   if (a.size() != 1) throw InputError(fmt::format("{}: entry '{}' holds {} values, expected one", origin, name, a.size()));
   return a[0];
+}
+
+long CheckpointState::count(const std::string& name, double low, double high) const {
+  const double v = scalar(name);
+  if (const std::string problem = count_problem(name, v, low, high); !problem.empty())
+    throw InputError(fmt::format("{}: no state a run reaches ({}); the checkpoint was changed or written by another "
+                                 "program: delete it to start afresh",
+                                 origin, problem));
+  return static_cast<long>(v);
+}
+
+std::string count_problem(const std::string& name, double value, double low, double high) {
+  if (std::isfinite(value) && value >= low && value <= high && value == std::floor(value)) return {};
+  return fmt::format("{} = {:g}; allowed: a whole number within [{:g}, {:g}]", name, value, low, high);
 }
 
 const std::string& CheckpointState::text(const std::string& name) const {

@@ -34,6 +34,14 @@ void install_interrupt_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+void ignore_output_signals() {
+  struct sigaction action {};
+  action.sa_handler = SIG_IGN;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGPIPE, &action, nullptr);
+  sigaction(SIGXFSZ, &action, nullptr);
+}
+
 bool interrupt_requested() { return pending.load(std::memory_order_relaxed) != 0; }
 int interrupt_signal() { return pending.load(); }
 void request_interrupt(int signal_number) { pending.store(signal_number); }

@@ -45,15 +45,20 @@ void sync_folder(const fs::path& dir) {
   ::close(fd);
 }
 
-// The "outputs" of a manifest file in `dir`, if it is one.
-nlohmann::json previous_outputs(const fs::path& file) {
+// A manifest file in `dir`, if it is one (else an empty object: nothing to clean up after).
+nlohmann::json previous_manifest(const fs::path& file) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return nlohmann::json::object();
   try {
-    const auto j = nlohmann::json::parse(read_text_file(file, "summary", std::uintmax_t{1} << 26));
-    if (j.is_object() && j.contains("outputs") && j["outputs"].is_object()) return j["outputs"];
-  } catch (const std::exception&) {  // not ours, or damaged: nothing to clean up after
+    auto j = nlohmann::json::parse(read_text_file(file, "summary", std::uintmax_t{1} << 26));
+    if (j.is_object()) return j;
+  } catch (const std::exception&) {  // not ours, or damaged
   }
+  return nlohmann::json::object();
+}
+
+nlohmann::json outputs_of(const nlohmann::json& manifest) {
+  if (manifest.contains("outputs") && manifest["outputs"].is_object()) return manifest["outputs"];
   return nlohmann::json::object();
 }
 
@@ -62,7 +67,33 @@ bool plain_name(const std::string& name) {
   return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
 }
 
+// A subfolder a set may own: one or two plain names, none hidden (never "..", never absolute).
+bool owned_folder_name(const fs::path& relative) {
+  if (relative.empty() || relative.is_absolute()) return false;
+  std::size_t parts = 0;
+  for (const auto& part : relative) {
+    const std::string name = part.string();
+    if (!plain_name(name) || name.front() == '.') return false;
+    ++parts;
+  }
+  return parts <= 2;
+}
+
 }  // namespace
+
+void OutputSet::own_folder(const fs::path& relative) {
+  if (!owned_folder_name(relative))
+    throw std::invalid_argument(fmt::format("OutputSet: '{}' is not a subfolder a set may own", relative.string()));
+  if (std::find(folders_.begin(), folders_.end(), relative) == folders_.end()) folders_.push_back(relative);
+}
+
+std::vector<fs::path> OutputSet::owned_folders(const nlohmann::json& manifest) {
+  std::vector<fs::path> out;
+  if (!manifest.is_object() || !manifest.contains("folders") || !manifest["folders"].is_array()) return out;
+  for (const auto& f : manifest["folders"])
+    if (f.is_string() && owned_folder_name(f.get<std::string>())) out.emplace_back(f.get<std::string>());
+  return out;
+}
 
 OutputSet::OutputSet(fs::path dir, std::string manifest) : dir_(std::move(dir)), manifest_(std::move(manifest)) {
   create_output_folder(dir_);
@@ -131,7 +162,9 @@ void OutputSet::commit(nlohmann::json manifest) {
     if (ec) throw OutputError(fmt::format("cannot read {}: {}", partial.string(), ec.message()));
     outputs[final_path.filename().string()] = {{"bytes", bytes}};
   }
-  const nlohmann::json previous = previous_outputs(manifest_file);
+  const nlohmann::json previous_summary = previous_manifest(manifest_file);
+  const nlohmann::json previous = outputs_of(previous_summary);
+  const std::vector<fs::path> previous_folders = owned_folders(previous_summary);
 
   // 1. No manifest while the folder changes: it never vouches for a mix.
   std::error_code ec;
@@ -153,9 +186,23 @@ void OutputSet::commit(nlohmann::json manifest) {
     if (!plain_name(name) || outputs.contains(name) || name == manifest_) continue;
     fs::remove(dir_ / name, ec);
   }
+  // ... and the subfolders it owned (a sweep's runs) that this one does not own again, then the series
+  // folders they leave empty.
+  for (const auto& folder : previous_folders) {
+    if (std::find(folders_.begin(), folders_.end(), folder) != folders_.end()) continue;
+    bool holds_one = false;  // a folder of this set inside it (a series folder kept)
+    for (const auto& mine : folders_) holds_one = holds_one || *mine.begin() == folder;
+    if (holds_one) continue;
+    fs::remove_all(dir_ / folder, ec);
+    if (const fs::path parent = folder.parent_path(); !parent.empty()) fs::remove(dir_ / parent, ec);  // if empty
+  }
   sync_folder(dir_);
   // 4. The manifest, last.
   manifest["outputs"] = outputs;
+  if (!folders_.empty()) {
+    manifest["folders"] = nlohmann::json::array();
+    for (const auto& f : folders_) manifest["folders"].push_back(f.generic_string());
+  }
   write_file_atomically(manifest_file, manifest.dump(2) + "\n", Commit::Now);
 }
 

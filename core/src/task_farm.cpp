@@ -58,6 +58,10 @@ TaskResult run_one(std::size_t k, const std::function<std::string(std::size_t)>&
     r.status = TaskResult::Status::Failed;
     r.numerical = true;
     r.text = e.what();
+  } catch (const OutputError& e) {
+    r.status = TaskResult::Status::Failed;
+    r.output = true;
+    r.text = e.what();
   } catch (const InputError& e) {
     r.status = TaskResult::Status::Failed;
     r.text = e.what();
@@ -149,13 +153,16 @@ FarmOutcome finish(Share& s, std::vector<TaskResult> slots, const FarmOptions& o
   out.not_run -= static_cast<long long>(s.elsewhere.size());
   if (out.not_run > 0) throw Interrupted(fmt::format("{}: stopped by a signal", options.label));
   std::vector<std::string> failed;
+  bool output = false;
   for (const auto k : s.todo)
-    if (out.results[k].status == TaskResult::Status::Failed)
+    if (out.results[k].status == TaskResult::Status::Failed) {
       failed.push_back(fmt::format("{}: {}", task_name(options, k), out.results[k].text));
+      output = output || out.results[k].output;
+    }
   if (!failed.empty())
     throw TasksFailed(fmt::format("{}: {} of this shard's {} tasks failed: {}", options.label, failed.size(),
                                   s.todo.size(), fmt::join(failed, "; ")),
-                      true);
+                      true, output);
   throw ShardDone(fmt::format("{}: this shard's {} task(s) done, {} left to the other shards", options.label,
                               s.todo.size(), s.elsewhere.size()));
 }
@@ -218,7 +225,7 @@ std::string read_sized(const std::vector<char>& buf, std::size_t& at) {
 
 // A result on the wire: index (−1: none yet), status, numerical, threads, seconds, text.
 std::string encode(long long id, const TaskResult& r) {
-  const int ints[3] = {static_cast<int>(r.status), r.numerical ? 1 : 0, r.threads};
+  const int ints[3] = {static_cast<int>(r.status), r.numerical ? 1 : r.output ? 2 : 0, r.threads};
   std::string buf;
   buf.append(reinterpret_cast<const char*>(&id), sizeof id);
   buf.append(reinterpret_cast<const char*>(ints), sizeof ints);
@@ -235,7 +242,8 @@ long long decode(const std::vector<char>& buf, int source, TaskResult& r) {
   std::memcpy(ints, p, sizeof ints), p += sizeof ints;
   std::memcpy(&r.seconds, p, sizeof r.seconds), p += sizeof r.seconds;
   r.status = static_cast<TaskResult::Status>(ints[0]);
-  r.numerical = ints[1] != 0;
+  r.numerical = ints[1] == 1;
+  r.output = ints[1] == 2;
   r.threads = ints[2];
   r.rank = source;
   r.text.assign(p, buf.data() + buf.size());

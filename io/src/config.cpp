@@ -132,6 +132,34 @@ nlohmann::json to_json_node(const toml::node& n) {
   return repr(n);
 }
 
+// The case's shape within Config::max_depth and Config::max_key_bytes, walked
+// without recursion (a case deeper than the bound must not exhaust the stack).
+void check_shape(const toml::table& root, const std::string& source, std::size_t depth = 0, std::size_t key_bytes = 0) {
+  struct Visit {
+    const toml::node* node;
+    std::size_t depth, key_bytes;
+  };
+  std::vector<Visit> todo{{&root, depth, key_bytes}};
+  while (!todo.empty()) {
+    const Visit v = todo.back();
+    todo.pop_back();
+    const auto refuse = [&](const std::string& what, const std::string& allowed) {
+      throw InputError(fmt::format("{}:{}: {}; allowed: {}", source, v.node->source().begin.line, what, allowed));
+    };
+    if (v.depth > Config::max_depth)
+      refuse(fmt::format("tables and arrays nested more than {} deep", Config::max_depth),
+             fmt::format("at most {} levels (the deepest key wearscale reads has 5)", Config::max_depth));
+    if (v.key_bytes > Config::max_key_bytes)
+      refuse(fmt::format("a key of more than {} bytes (table path and name)", Config::max_key_bytes),
+             fmt::format("keys of at most {} bytes", Config::max_key_bytes));
+    if (const auto* t = v.node->as_table()) {
+      for (const auto& [k, child] : *t) todo.push_back({&child, v.depth + 1, v.key_bytes + k.str().size() + 1});
+    } else if (const auto* a = v.node->as_array()) {
+      for (const auto& child : *a) todo.push_back({&child, v.depth + 1, v.key_bytes});
+    }
+  }
+}
+
 }  // namespace
 
 Config::Config(std::shared_ptr<State> state, std::string prefix) : state_(std::move(state)), prefix_(std::move(prefix)) {}
@@ -156,6 +184,7 @@ Config Config::from_string(std::string_view text, std::string source) {
     throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", state->source, e.source().begin.line,
                                  e.source().begin.column, e.description()));
   }
+  check_shape(state->root, state->source);
   return Config(std::move(state), "");
 }
 
@@ -174,6 +203,10 @@ void Config::override_value(std::string_view assignment, std::string_view origin
     throw InputError(fmt::format("--set {}: expected KEY=VALUE, e.g. --set scale.macro.grid=64", assignment));
   const std::string key = full_key(trim(assignment.substr(0, eq)));
   const std::string_view text = trim(assignment.substr(eq + 1));
+  if (key.size() > max_key_bytes || std::count(key.begin(), key.end(), '.') >= static_cast<long>(max_depth))
+    throw InputError(fmt::format("{}: a key of {} bytes and {} levels; allowed: keys of at most {} bytes and {} levels",
+                                 origin, key.size(), std::count(key.begin(), key.end(), '.') + 1, max_key_bytes,
+                                 max_depth));
   if (text.find_first_of("\n\r") != std::string_view::npos)
     throw InputError(fmt::format("{}: key '{}': the value spans several lines; allowed: one value per --set", origin,
                                  key));
@@ -187,6 +220,10 @@ void Config::override_value(std::string_view assignment, std::string_view origin
   } catch (const toml::parse_error&) {
     as_toml = false;
   }
+  // The value itself (an array of arrays, an inline table) within the bounds too, where it goes.
+  if (as_toml)
+    check_shape(parsed, std::string(origin), static_cast<std::size_t>(std::count(key.begin(), key.end(), '.')),
+                key.size() - 1);
 
   toml::table* table = &state_->root;
   std::string walked;
@@ -216,6 +253,18 @@ void Config::override_value(std::string_view assignment, std::string_view origin
     rest = rest.substr(dot + 1);
   }
   state_->overridden[key] = std::string(origin);
+}
+
+Config Config::clone() const {
+  auto copy = std::make_shared<State>(*state_);
+  return Config(std::move(copy), prefix_);
+}
+
+void Config::erase(std::string_view key) {
+  const std::string full = full_key(key);
+  const std::string parent = parent_of(full);
+  toml::table* t = parent.empty() ? &state_->root : state_->root.at_path(parent).as_table();
+  if (t != nullptr) t->erase(leaf_of(full));
 }
 
 std::string Config::full_key(std::string_view key) const { return join(prefix_, key); }
@@ -307,6 +356,10 @@ double Config::number(std::string_view key, const Range& range, units::Dimension
     // The nearest double: an integer beyond 2^53 is not exact as a number
     // (toml++'s lossless value<double>() gives none), and the range decides.
     v = static_cast<double>(i->get());
+  } else if (auto s = n->as_string(); s != nullptr && (s->get() == "inf" || s->get() == "+inf" || s->get() == "-inf")) {
+    // "inf" as TOML's inf: infinity of any dimension (a bulk layer's thickness), which the range then judges;
+    // a sweep value "inf" arrives as TOML's inf, so the case's key and the sweep read alike.
+    v = s->get() == "-inf" ? -HUGE_VAL : HUGE_VAL;
   } else if (auto s = n->as_string()) {
     units::Quantity q{};
     try {

@@ -9,6 +9,21 @@
 
 namespace wearscale::python {
 
+void require_real_array(py::handle source) {
+  const py::array a = py::isinstance<py::array>(source)
+                          ? py::reinterpret_borrow<py::array>(source)
+                          : py::array(py::module_::import("numpy").attr("asarray")(source));
+  const char kind = a.dtype().kind();
+  if (kind == 'f' || kind == 'i' || kind == 'u') return;
+  const std::string dtype = py::str(a.dtype()).cast<std::string>();
+  if (kind == 'c')
+    throw InputError(fmt::format("an array of {} where real numbers are expected: its imaginary part would be lost; "
+                                 "allowed: a real (float or integer) array (pass .real or abs() of it explicitly)",
+                                 dtype));
+  throw InputError(fmt::format("an array of {} where numbers are expected; allowed: a real (float or integer) array",
+                               dtype));
+}
+
 py::array codes(const RealField& field) {
   py::array_t<std::uint8_t> out({field.rows(), field.cols()});
   auto* o = out.mutable_data();

@@ -17,7 +17,22 @@
 namespace wearscale::python {
 
 namespace py = pybind11;
-using InArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// A real array argument, read as C-contiguous float64. Its caster converts
+/// integer and float arrays (and nested lists of them) and refuses every
+/// other kind with InputError (a ValueError) instead of casting: a complex
+/// array would lose its imaginary part silently, strings and objects would be
+/// parsed or fail obscurely. Every array a binding takes is one.
+class InArray : public py::array_t<double, py::array::c_style | py::array::forcecast> {
+ public:
+  using Base = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  InArray() = default;
+  explicit InArray(Base a) : Base(std::move(a)) {}
+};
+
+/// InputError unless `source` (an array, or what NumPy makes an array of) holds real numbers (dtype kind
+/// 'f', 'i' or 'u'); the message names the dtype.
+void require_real_array(py::handle source);
 
 /// A read-only (nx, ny) view on `field`, kept alive through `owner`.
 inline py::array view(const RealField& field, py::handle owner) {
@@ -55,3 +70,24 @@ RealField field_from(const InArray& heights, const Grid2D& grid);
 void require_shape(const InArray& a, const Grid2D& grid, const std::string& what);
 
 }  // namespace wearscale::python
+
+namespace pybind11::detail {
+template <>
+struct type_caster<wearscale::python::InArray> {
+  PYBIND11_TYPE_CASTER(wearscale::python::InArray, const_name("numpy.ndarray[numpy.float64]"));
+  bool load(handle src, bool convert) {
+    if (!convert && !wearscale::python::InArray::Base::check_(src)) return false;
+    wearscale::python::require_real_array(src);
+    auto a = wearscale::python::InArray::Base::ensure(src);
+    if (!a) {
+      PyErr_Clear();
+      return false;
+    }
+    value = wearscale::python::InArray(std::move(a));
+    return true;
+  }
+  static handle cast(const wearscale::python::InArray& src, return_value_policy, handle) {
+    return src.inc_ref();
+  }
+};
+}  // namespace pybind11::detail

@@ -4,14 +4,15 @@
 // solver's storage (valid until its next solve: copy() to keep one).
 #include <pybind11/stl.h>
 
-#include <fmt/format.h>
-
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <cmath>
 #include <memory>
 #include <optional>
+
+#include <fmt/format.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -125,15 +126,38 @@ FrictionLaw law_from(const std::string& law, std::optional<double> mu, std::opti
   throw InputError("contact.FrictionalContact: law = '" + law + "'; allowed: coulomb | tresca");
 }
 
+// A solver object serves one thread at a time: its warm start, fields and FFT
+// workspace are one state, which two solves at once would both write (and then
+// fail with a NumericalError that blames the numerics). A second thread that
+// reaches an object in use is refused at once, naming the cause, as a
+// RuntimeError; separate objects solve in parallel (the GIL is released).
+class OneThreadAtATime {
+ public:
+  OneThreadAtATime(std::atomic<bool>& busy, const char* what) : busy_(busy) {
+    if (busy_.exchange(true))
+      throw std::runtime_error(fmt::format("{} is not thread-safe: another thread is using this object (a solve, "
+                                           "set_surface, reset or warm_start); give each thread its own {}",
+                                           what, what));
+  }
+  ~OneThreadAtATime() { busy_ = false; }
+  OneThreadAtATime(const OneThreadAtATime&) = delete;
+  OneThreadAtATime& operator=(const OneThreadAtATime&) = delete;
+
+ private:
+  std::atomic<bool>& busy_;
+};
+
 // The solvers keep a reference to nothing of Python's: the heights are copied in.
 struct PyNormalContact {
   NormalContact solver;
+  std::atomic<bool> busy{false};
   PyNormalContact(const InArray& h, double lx, double ly, double e_star, const std::string& boundary)
       : solver(field_from(h, grid_of(h, lx, ly, "contact.NormalContact")), e_star, boundary_from(boundary)) {}
 };
 
 struct PyFrictionalContact {
   FrictionalContact solver;
+  std::atomic<bool> busy{false};
   PyFrictionalContact(const InArray& h, double lx, double ly, double young, double poisson, const std::string& law,
                       std::optional<double> mu, std::optional<double> shear_strength)
       : solver(field_from(h, grid_of(h, lx, ly, "contact.FrictionalContact")), young, poisson,
@@ -292,6 +316,7 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
              ContactResult r;
              const auto start = std::chrono::steady_clock::now();
              {
+               const OneThreadAtATime mine(self.busy, "contact.NormalContact");
                py::gil_scoped_release release;
                r = mean_pressure ? self.solver.solve_mean_pressure(*mean_pressure, options)
                                  : self.solver.solve_interference(*interference, options);
@@ -308,7 +333,7 @@ pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [P
            R"(Solves for the imposed mean pressure p0 [Pa] >= 0, normal load F = p0 lx ly [N] >= 0 (force
 control, as the CLI's --load) or interference delta = max h - d [m]: exactly one of them.
 
-tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1); method:
+tolerance: on the relative orthogonality error sum p|g| / (sum p * h_rms), in (0, 1e-3]; method:
 "two-level" (default: the preconditioner S on a 2x coarser grid, the same iterations at a quarter of
 its transforms, 15-20 % less time a solve from 1024^2; a free window or an odd grid uses the full one),
 "preconditioned" (S by a full FFT pair) or "polonsky-keer". predict_load: for a load ramp on one surface, start
@@ -319,9 +344,11 @@ error, mean_pressure_Pa, contact_fraction (A/A0), interference_m, elastic_energy
 normal_load_N (p0 lx ly), solve_seconds (wall time of the C++ solve, GIL released).
 ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
       .def("set_surface", [](PyNormalContact& self, const InArray& h) {
+             const OneThreadAtATime mine(self.busy, "contact.NormalContact");
              self.solver.set_surface(field_from(h, self.solver.grid()));
            }, py::arg("heights"), "Replaces the rigid surface (same grid), keeping the last pressure as a warm start.")
       .def("write", [](PyNormalContact& self, const std::string& file) {
+             const OneThreadAtATime mine(self.busy, "contact.NormalContact");
              const auto& c = self.solver;
              const RealField contact = in_contact(c.pressure());
              return write_fields(file, c.grid(),
@@ -335,7 +362,10 @@ ValueError for p0 < 0; ArithmeticError for no convergence or NaN.)")
 `file` (*.h5: /surface/height [m], /fields/pressure [Pa], /fields/gap [m], /fields/displacement [m],
 /fields/contact [1]) and its XDMF sidecar beside it (same name, .xdmf; open that one in ParaView).
 Returns the sidecar's path.)")
-      .def("reset", [](PyNormalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
+      .def("reset", [](PyNormalContact& self) {
+             const OneThreadAtATime mine(self.busy, "contact.NormalContact");
+             self.solver.reset();
+           }, "Forgets the warm start.")
       .def_property_readonly("kept_solutions", [](PyNormalContact& self) { return self.solver.kept_solutions(); },
                              "Solutions kept for predict_load on this surface (0, 1 or 2).")
       .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyNormalContact&>().solver.pressure(), self); },
@@ -366,6 +396,7 @@ Returns the sidecar's path.)")
              return py::make_tuple(view(s.pressure(), self), s.warm_gap_shift());
            },
            [](PyNormalContact& self, const py::tuple& state) {
+             const OneThreadAtATime mine(self.busy, "contact.NormalContact");
              const auto p = state[0].cast<InArray>();
              require_shape(p, self.solver.grid(), "warm_start pressure");
              self.solver.set_warm_start({p.data(), static_cast<std::size_t>(p.size())}, state[1].cast<double>());
@@ -396,6 +427,7 @@ Each solve starts from the last solution (warm start); reset() forgets it.)")
              FrictionalResult r;
              const auto start = std::chrono::steady_clock::now();
              {
+               const OneThreadAtATime mine(self.busy, "contact.FrictionalContact");
                py::gil_scoped_release release;
                r = self.solver.solve(MeanTraction{*mean_pressure, traction_x, traction_y}, options);
              }
@@ -415,6 +447,7 @@ tolerance on the relative cost (A.14). Releases the GIL; Ctrl-C ends the solve w
 carries (gross sliding) is a ValueError, never clamped. Returns a dict of scalars (units in the
 names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement_x_m, ...)")
       .def("write", [](PyFrictionalContact& self, const std::string& file) {
+             const OneThreadAtATime mine(self.busy, "contact.FrictionalContact");
              const auto& c = self.solver;
              const RealField contact = in_contact(c.traction().z);
              return write_fields(file, c.grid(),
@@ -436,7 +469,10 @@ names): contact_fraction, stick_fraction, slip_fraction, tangential_displacement
 (0 open, 1 stick, 2 slip), gap, slip_x, slip_y, displacement, displacement_x, displacement_y [m], contact [1];
 the subsurface stresses are contact.stresses()'s) into `file` (*.h5) and its XDMF sidecar beside it (.xdmf).
 Returns the sidecar's path.)")
-      .def("reset", [](PyFrictionalContact& self) { self.solver.reset(); }, "Forgets the warm start.")
+      .def("reset", [](PyFrictionalContact& self) {
+             const OneThreadAtATime mine(self.busy, "contact.FrictionalContact");
+             self.solver.reset();
+           }, "Forgets the warm start.")
       .def_property_readonly("pressure", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().z, self); },
                              "p_N [Pa], read-only view.")
       .def_property_readonly("traction_x", [](py::object self) { return view(self.cast<PyFrictionalContact&>().solver.traction().x, self); },

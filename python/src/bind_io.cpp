@@ -1,6 +1,7 @@
 // wearscale.io: datasets of wearscale's HDF5 outputs (run.h5, contact.h5, …)
 // as NumPy arrays, so no h5py is needed to read a run's fields.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -12,7 +13,7 @@
 namespace wearscale::python {
 
 void bind_io(py::module_& m) {
-  m.def("read", [](const std::string& file, const std::string& dataset) {
+  m.def("read", [](const std::filesystem::path& file, const std::string& dataset) {
           std::vector<double> values;
           std::vector<std::size_t> shape;
           {
@@ -27,9 +28,9 @@ void bind_io(py::module_& m) {
         }, py::arg("file"), py::arg("dataset"),
         "A numeric dataset of an HDF5 file, any rank, as a float64 array of its shape (scalars: shape ()). "
         "ValueError naming the file and dataset if either is missing.");
-  m.def("exists", [](const std::string& file, const std::string& path) { return H5Reader(file).exists(path); },
+  m.def("exists", [](const std::filesystem::path& file, const std::string& path) { return H5Reader(file).exists(path); },
         py::arg("file"), py::arg("path"), "Whether the HDF5 file holds a group or dataset at `path`.");
-  m.def("attribute", [](const std::string& file, const std::string& object, const std::string& name) -> py::object {
+  m.def("attribute", [](const std::filesystem::path& file, const std::string& object, const std::string& name) -> py::object {
           H5Reader h5(file);
           try {
             return py::float_(h5.number_attribute(object, name));

@@ -1,6 +1,7 @@
 // wearscale.materials: the built-in records (Table 2.1), the shipped strength
 // tables (Fig. 9.18) and the scale-linking junction model (§7.1.2, §9.3.2).
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -44,7 +45,7 @@ py::dict to_dict(const StrengthTable& t) {
   return d;
 }
 
-StrengthLaw law_of(const std::string& material, const std::string& set, const std::string& file, bool clamp) {
+StrengthLaw law_of(const std::string& material, const std::string& set, const std::filesystem::path& file, bool clamp) {
   const auto outside = clamp ? OutsideTable::Clamp : OutsideTable::Error;
   return file.empty() ? StrengthLaw(shipped_table(set, material), outside) : StrengthLaw(read_strength_table(file), outside);
 }
@@ -61,13 +62,13 @@ void bind_materials(py::module_& m) {
         }, py::arg("a"), py::arg("b"), "E* of two built-in materials (1.12) [Pa].");
   m.def("data_directory", [] { return data_directory().string(); },
         "The folder of shipped data: $WEARSCALE_DATA, else share/wearscale/data of the installation, else the source tree's.");
-  m.def("set_data_directory", [](const std::string& dir) { set_data_directory(dir); }, py::arg("dir"),
+  m.def("set_data_directory", [](const std::filesystem::path& dir) { set_data_directory(dir); }, py::arg("dir"),
         "Uses `dir` for shipped data (unless $WEARSCALE_DATA is set); '' restores the search.");
   m.def("shipped_sets", &shipped_sets, "Names of the shipped strength-table sets (\"thesis\": Fig. 9.18, \"lammps\").");
   m.def("strength_table", [](const std::string& material, const std::string& set) { return to_dict(shipped_table(set, material)); },
         py::arg("material"), py::arg("set") = "thesis",
         "A shipped strength table sigma_max(p), sigma_dyn(p) [Pa] of material (\"Si\", \"SiO2\") as arrays.");
-  m.def("read_strength_table", [](const std::string& file) { return to_dict(read_strength_table(file)); }, py::arg("file"),
+  m.def("read_strength_table", [](const std::filesystem::path& file) { return to_dict(read_strength_table(file)); }, py::arg("file"),
         "A strength table from a .csv or .h5 file (ValueError naming the file and line for a bad one).");
 
   py::class_<StrengthLaw>(m, "StrengthLaw", R"(Pressure-dependent shear strengths sigma_max(p), sigma_dyn(p) [Pa] interpolated from a table.

@@ -1,6 +1,7 @@
 // wearscale.run: the Python front end of the one study runner
 // (studies/runner.hpp), the same path as `wearscale run CASE --json`.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <csignal>
 #include <optional>
@@ -50,14 +51,14 @@ class RunSignals {
 }  // namespace
 
 void bind_run(py::module_& m) {
-  m.def("run_case", [](const std::string& case_file, const std::vector<std::string>& overrides,
-                       std::optional<std::string> out, std::optional<std::string> resume, bool quiet,
-                       std::optional<std::string> case_text, const std::string& task) {
+  m.def("run_case", [](const std::filesystem::path& case_file, const std::vector<std::string>& overrides,
+                       std::optional<std::filesystem::path> out, std::optional<std::filesystem::path> resume, bool quiet,
+                       std::optional<std::string> case_text, std::optional<std::string> task) {
           studies::RunOptions options;
           options.case_file = case_file;
           options.case_text = std::move(case_text);
           options.overrides = overrides;
-          options.task = task;
+          options.task = std::move(task);
           if (out) options.output_dir = *out;
           if (resume) options.resume_dir = *resume;
           std::string json;
@@ -73,25 +74,25 @@ void bind_run(py::module_& m) {
           return json;
         }, py::arg("case_file"), py::arg("overrides") = std::vector<std::string>{}, py::arg("out") = py::none(),
         py::arg("resume") = py::none(), py::arg("quiet") = true, py::arg("case_text") = py::none(),
-        py::arg("task") = "",
+        py::arg("task") = py::none(),
         "Runs a case file (any study: the scale pipeline, [contact], [dem.*]) as `wearscale run CASE --set K=V... "
         "[--out DIR] [--resume DIR] [--task K/N] --json`; returns the JSON text. case_text: the case as TOML text "
         "instead (case_file then names it in messages; relative file names in it are relative to the working "
         "directory).");
-  m.def("merge_shards", [](const std::string& dir, bool quiet) {
+  m.def("merge_shards", [](const std::filesystem::path& dir, bool quiet) {
           std::string json;
           const RunSignals signals;
           {
             py::gil_scoped_release release;
             log::set_level(quiet ? log::Level::Quiet : log::Level::Normal);
-            json = studies::merge_shards(dir, "wearscale.merge('" + dir + "')").to_json().dump();
+            json = studies::merge_shards(dir, "wearscale.merge('" + dir.string() + "')").to_json().dump();
           }
           return json;
         }, py::arg("dir"), py::arg("quiet") = true,
         "`wearscale merge DIR --json`: the outputs of an ensemble whose shards (task='K/N') ran into DIR; returns "
         "the JSON text.");
-  m.def("inspect_case", [](const std::string& case_file, const std::vector<std::string>& overrides,
-                           std::optional<std::string> out, std::optional<std::string> case_text) {
+  m.def("inspect_case", [](const std::filesystem::path& case_file, const std::vector<std::string>& overrides,
+                           std::optional<std::filesystem::path> out, std::optional<std::string> case_text) {
           studies::RunOptions options;
           options.case_file = case_file;
           options.case_text = std::move(case_text);

@@ -1,6 +1,7 @@
 // wearscale.surface: rough surfaces (§1.1.2), their roughness measures and
 // spectra, and the topography files wearscale reads.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <fmt/format.h>
 
@@ -116,7 +117,7 @@ py::dict analyze(const InArray& heights, double lx, double ly, double q_min, dou
   return out;
 }
 
-py::tuple read(const std::string& file, const std::string& dataset, std::optional<double> lx,
+py::tuple read(const std::filesystem::path& file, const std::string& dataset, std::optional<double> lx,
                std::optional<double> ly, const std::string& missing) {
   TopographyOptions options;
   options.dataset = dataset;
@@ -170,7 +171,7 @@ Formats: see supported_formats(). dataset: the HDF5 dataset of wearscale's own f
 override the file's sizes; missing = "refuse" (default: ValueError naming how many points)
 or "fill" (harmonic interpolation). Returns (heights [m], metadata dict with lx_m, ly_m, format).)");
   m.def("supported_formats", &supported_topography_formats, "The topography formats read() understands.");
-  m.def("write", [](const std::string& file, const InArray& heights, double lx, double ly) {
+  m.def("write", [](const std::filesystem::path& file, const InArray& heights, double lx, double ly) {
           const Grid2D g = grid_of(heights, lx, ly, "surface.write");
           return write_surface(file, field_from(heights, g)).string();
         }, py::arg("file"), py::arg("heights"), py::arg("lx"), py::arg("ly") = -1.0,

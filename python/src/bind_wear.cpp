@@ -2,9 +2,12 @@
 // micro-contacts and the numerical rough wear map (§5.3).
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/candidate_particles.hpp"
 #include "wearscale/wear/energy_release.hpp"
@@ -75,6 +78,8 @@ Disc disc_of(const std::tuple<long, long, long>& d, const Grid2D& g) {
 }
 
 py::array disc_mask(std::size_t nx, std::size_t ny, const std::tuple<long, long, long>& d) {
+  require_memory(static_cast<double>(nx) * static_cast<double>(ny), fmt::format("a {} × {} mask", nx, ny),
+                 "use a smaller grid");
   const Grid2D g(nx, ny, 1.0, static_cast<double>(ny) / static_cast<double>(nx));
   const Disc disc = disc_of(d, g);
   py::array_t<bool> out({nx, ny});
@@ -147,11 +152,11 @@ regions are the most severe detachment with R >= 1 of (4.48): 0 plastic, 1 one s
 particle, 2 two separated, 3 combined. Returns the same dict as analytic_map_2d.)");
   m.def("interaction_constant", &interaction_constant, py::arg("poisson"), py::arg("angle") = 0.0,
         "C_inter = (1 - nu sin^2 theta)/(2 - nu) (4.49); -1 < nu <= 0.5, theta [rad] the angle of the contacts' line to the traction.");
-  m.def("boundary_dstar_over_l", [](int particle_case, py::array_t<double> d_over_l, double c_inter) {
+  m.def("boundary_dstar_over_l", [](int particle_case, const InArray& d_over_l, double c_inter) {
           const ParticleCase pc = particle_case_from(particle_case, "wear.boundary_dstar_over_l");
           return py::vectorize([pc, c_inter](double x) {
             return boundary_dstar_over_l(pc, x, c_inter);
-          })(d_over_l);
+          })(static_cast<const InArray::Base&>(d_over_l));
         }, py::arg("case"), py::arg("d_over_l"), py::arg("c_inter"),
         "d*/l on the line R = 1 (4.48) of case 0 (one separated), 1 (two separated) or 2 (combined) at d/l.");
   m.def("energy_ratio_3d", [](int particle_case, double d_over_l, double dstar_over_l, double c_inter) {

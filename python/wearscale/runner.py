@@ -85,7 +85,17 @@ def _case_source(case):
         return "<case dict>", to_toml(case)
     if isinstance(case, str) and ("\n" in case or "=" in case) and not os.path.exists(case):
         return "<case string>", case
-    return str(case), None
+    return _path(case, "case"), None
+
+
+def _path(value, what):
+    """A file or folder name as text: a str, bytes (decoded as the file system names it) or os.PathLike;
+    InputError for anything else."""
+    try:
+        return os.fsdecode(os.fspath(value))
+    except TypeError:
+        raise _wearscale.InputError(f"run: {what} = {value!r} is not a file name; allowed: a str, bytes or "
+                                    "os.PathLike") from None
 
 
 def _column(name, unit):
@@ -254,9 +264,11 @@ def run(case, out=None, resume=None, quiet=True, set=None, task=None, **override
     is written. The results: ``.results`` {<name>_<SI unit>: value}, ``.table()``, ``.runs`` (a sweep).
     """
     path, text = _case_source(case)
-    summary = _wearscale.runner.run_case(path, _overrides(set, overrides), None if out is None else str(out),
-                                         None if resume is None else str(resume), quiet, text,
-                                         "" if task is None else str(task))
+    # Folders go to the runner as paths (str, bytes or os.PathLike, as the file system names them), never
+    # through str(): str(b"/tmp/x") is "b'/tmp/x'".
+    summary = _wearscale.runner.run_case(path, _overrides(set, overrides), None if out is None else _path(out, "out"),
+                                         None if resume is None else _path(resume, "resume"), quiet, text,
+                                         None if task is None else str(task))
     return RunResult(json.loads(summary))
 
 
@@ -280,7 +292,7 @@ def check(case, out=None, set=None, **overrides):
     ValueError (InputError) listing every error of an invalid case."""
     path, text = _case_source(case)
     report, printed = _wearscale.runner.inspect_case(path, _overrides(set, overrides),
-                                                     None if out is None else str(out), text)
+                                                     None if out is None else _path(out, "out"), text)
     return CaseCheck(json.loads(report), printed)
 
 
@@ -288,7 +300,7 @@ def merge(folder, quiet=True):
     """Writes the outputs of an ensemble whose shards (``run(..., task="K/N", out=folder)``) all ran into
     ``folder``, as ``wearscale merge DIR`` does, and returns its :class:`RunResult`. ValueError (InputError),
     naming each missing task and the shard that owes it, while some are not done; nothing is written then."""
-    return RunResult(json.loads(_wearscale.runner.merge_shards(str(folder), quiet)))
+    return RunResult(json.loads(_wearscale.runner.merge_shards(_path(folder, "folder"), quiet)))
 
 
 __all__ = ["CaseCheck", "RunResult", "check", "merge", "run", "to_toml"]

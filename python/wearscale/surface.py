@@ -69,7 +69,7 @@ def analyze(heights, lx=None, ly=None, q_min=_analyze["q_min"], q_max=_analyze["
 
 
 def read(file, dataset=_read["dataset"], lx=None, ly=None, missing=_read["missing"]):
-    h, meta = _s.read(str(file), dataset, lx, ly, missing)
+    h, meta = _s.read(file, dataset, lx, ly, missing)  # a str, bytes or os.PathLike
     return Surface(h, meta["lx_m"], meta["ly_m"], meta)
 
 
@@ -110,7 +110,7 @@ h_prime_rms.__doc__ = own_doc(_s.h_prime_rms) + "\nheights: a Surface (its lx, l
 def write(file, heights, lx=None, ly=None):
     """Writes heights [m] as wearscale's HDF5 surface with an XDMF sidecar (returned)."""
     h, lx, ly = _heights_and_size(heights, lx, ly)
-    return _s.write(str(file), h, lx, ly)
+    return _s.write(file, h, lx, ly)
 
 
 def sphere(n, size, radius, cx=None, cy=None):

@@ -43,6 +43,7 @@ RoughCase read_rough_case(const Config& r, const Grid2D& g) {
   spec.seed = static_cast<std::uint64_t>(r.integer_or("seed", 0, Range::non_negative()));
   const int targets = int(r.has("hprime_rms")) + int(r.has("h_rms")) + int(r.has("sa"));
   if (targets != 1) throw r.error("hprime_rms", "give exactly one of hprime_rms, h_rms, sa", "one roughness target");
+  const char* key = r.has("hprime_rms") ? "hprime_rms" : r.has("h_rms") ? "h_rms" : "sa";
   if (r.has("hprime_rms")) {
     rough.measure = RoughnessMeasure::HPrimeRms;
     rough.target = r.number("hprime_rms", Range::positive());
@@ -53,6 +54,9 @@ RoughCase read_rough_case(const Config& r, const Grid2D& g) {
     rough.measure = RoughnessMeasure::Sa;
     rough.target = r.number("sa", Range::positive(), units::length);
   }
+  // The bounds every generated surface is held to (as `surface generate`'s and files'), named by the key.
+  if (const auto p = roughness_target_problem(spec, rough.measure, rough.target); !p.problem.empty())
+    throw r.error(key, p.problem, p.allowed);
   return rough;
 }
 
@@ -73,7 +77,7 @@ NormalCase read_normal_case(const Config& c, const Grid2D& g) {
   const int loads = int(c.has("mean_pressure")) + int(c.has("normal_load")) + int(c.has("interference"));
   if (loads != 1)
     throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load, interference", "one load");
-  n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open(0.0, 1.0));
+  n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open_closed(0.0, ContactOptions::max_tolerance));
   n.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
   n.options.stop = [] { return interrupt_requested(); };  // SIGINT/SIGTERM end a long solve within an iteration
   n.options.method = c.choice_or("preconditioner", "two-level", {"two-level", "full"}) == "full"
@@ -235,7 +239,7 @@ FrictionalCase read_frictional_case(const Config& c, const Grid2D& g, const std:
   f.tangential_key = c.has("tangential_load") ? "tangential_load" : "tangential_pressure";
   f.load.x = c.has("tangential_load") ? c.number("tangential_load", Range::any(), units::force) / g.area()
                                       : c.number_or("tangential_pressure", 0.0, Range::any(), units::pressure);
-  f.options.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1.0));
+  f.options.tolerance = c.number_or("tolerance", 1e-10, Range::open_closed(0.0, FrictionalOptions::max_tolerance));
   f.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 20000, Range::at_least(1)));
   f.options.stop = [] { return interrupt_requested(); };
   f.connectivity =

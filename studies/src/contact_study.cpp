@@ -180,7 +180,7 @@ Schema ContactStudy::schema() const {
       {"contact.tensile_strength", "number", "> 0", "Pa", "",
        "tensile strength σ_m: crack initiation (4.25) per micro-contact", "--tensile-strength"},
       {"contact.stress_depths", "list", "≥ 0", "m", "", "depths of the subsurface stress fields", ""},
-      {"contact.tolerance", "number", "(0, 1)", "1", "1e-12 (frictional 1e-10)", "relative convergence tolerance", ""},
+      {"contact.tolerance", "number", "(0, 1e-3]", "1", "1e-12 (frictional 1e-10)", "relative convergence tolerance", ""},
       {"contact.max_iterations", "integer", "≥ 1", "1", "10000 (frictional 20000)", "iteration limit", ""},
       {"contact.connectivity", "choice", "four | eight", "", "four", "neighbours joining a micro-contact", ""},
       {"contact.preconditioner", "choice", "two-level | full", "", "two-level",

@@ -223,15 +223,16 @@ nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
   const double d_c = critical_diameter(spec.material);
   spec.d0 = c.has("d0") ? c.number("d0", Range::positive(), unitless ? units::dimensionless : units::length) : 0.6 * d_c;
   spec.load_along_c_axis = c.boolean_or("load_along_c_axis", false);
-  spec.length = c.number_or("length", 25.0, Range::closed(6.0, 400.0));
+  spec.length = c.number_or("length", 25.0, Range::closed(PatchTestSpec::min_length, PatchTestSpec::max_length));
   // At least the largest particle (1.25 d0, amorphous); an HCP sample takes
   // whole cells of √(8/3) d0: 1.6 is one cell, the 2.4 nm depth of §7.1.1.
-  spec.width = c.number_or("width", 3.0, Range::closed(1.25, 100.0));
+  spec.width = c.number_or("width", 3.0, Range::closed(PatchTestSpec::min_width, PatchTestSpec::max_width));
   spec.load = c.number_or("load", 0.01, Range::open(0.0, spec.material.tensile_strength / spec.material.young));
   spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
-  spec.strain_rate = c.number_or("strain_rate", 1e-5, Range::open(0.0, 1e-2));
+  spec.strain_rate = c.number_or("strain_rate", 1e-5, Range::open(0.0, PatchTestSpec::max_strain_rate));
   spec.strengths = c.boolean_or("strengths", true);
-  spec.max_elastic_steps = c.integer_or("max_elastic_steps", 40000, Range::at_least(1000));
+  spec.max_elastic_steps = c.integer_or("max_elastic_steps", 40000,
+                                        Range::at_least(static_cast<double>(PatchTestSpec::min_elastic_steps)));
   spec.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
   root.reject_unknown_keys();
 
@@ -305,7 +306,10 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
     spec.box = {b[0], b[1], b[2]};
   }
   spec.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
-  spec.pressure = c.number_or("pressure", 100e6, Range::non_negative(), units::pressure);
+  // As the sliding cell's: beyond the material's normal strength σ_m,N the cohesive model no longer holds a
+  // solid (a pressure of 1e15 Pa crushed the sample and reported no resistance to sliding).
+  spec.pressure =
+      c.number_or("pressure", 100e6, Range::closed(0.0, spec.material.tensile_strength), units::pressure);
   spec.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
   spec.sliding_distance = c.number_or("sliding_distance", 1.5 * spec.diameter, Range::positive(), units::length);
   spec.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));

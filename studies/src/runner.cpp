@@ -8,6 +8,7 @@
 #include <atomic>
 #include <exception>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -20,8 +21,8 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
-#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/output_lock.hpp"
 #include "wearscale/core/output_set.hpp"
@@ -41,6 +42,7 @@
 #include "wearscale/studies/study.hpp"
 #include "case_report.hpp"
 #include "contact_slab.hpp"
+#include "result_bounds.hpp"
 
 namespace wearscale::studies {
 
@@ -139,9 +141,24 @@ std::unique_ptr<Study> study_for(const Config& cfg, const RunOptions& options) {
   return study_registry().create(options.study.empty() ? study_of(cfg) : options.study);
 }
 
+// A folder given on the command line: a name (not empty, which would be taken as no --out at all) of a
+// folder, not "-" (wearscale writes files into a folder, never to stdout).
+void require_folder_name(const std::filesystem::path& dir, const char* option) {
+  if (dir.empty())
+    throw InputError(fmt::format("{} '': an empty folder name; allowed: the name of a folder to write into (without "
+                                 "{}: the case's [output] dir)",
+                                 option, option));
+  if (dir == "-")
+    throw InputError(fmt::format("{} -: wearscale writes a folder of files, not to standard output; allowed: the name "
+                                 "of a folder (--json prints the results on standard output)",
+                                 option));
+}
+
 // Paths from the command line end up in summary.json, which holds UTF-8 only.
 void require_utf8_paths(const RunOptions& options) {
   require_utf8_path(options.case_file, "case file");
+  if (options.output_dir) require_folder_name(*options.output_dir, "--out");
+  if (options.resume_dir) require_folder_name(*options.resume_dir, "--resume");
   if (options.output_dir) require_utf8_path(*options.output_dir, "--out");
   if (options.resume_dir) require_utf8_path(*options.resume_dir, "--resume");
 }
@@ -214,6 +231,74 @@ PreparedRun prepare(Config cfg_in, const std::optional<std::filesystem::path>& o
   return run;
 }
 
+// A completed run's summary.json is a sweep's (it has "sweep") or a single run's: --resume continues one
+// of the same kind only (a sweep resumed over a single run's folder would replace its outputs).
+void require_summary_of_kind(const std::filesystem::path& summary_file, const nlohmann::json& j, bool sweep) {
+  const bool is_sweep = j.is_object() && j.contains("sweep");
+  if (is_sweep == sweep) return;
+  throw InputError(fmt::format("--resume: {} is the summary of a completed {}, and the case is {}; resume it with the "
+                               "case it was run with, or write to another folder (nothing was changed)",
+                               summary_file.string(), is_sweep ? "sweep" : "single run (no [sweep])",
+                               sweep ? "a sweep" : "a single run"));
+}
+
+// Subfolders of `dir` (one or two levels down) that hold a run: its summary.json, checkpoint.h5 or log.txt
+// (with `sweep_runs_only`, log.txt alone: the runs of an ensemble).
+std::vector<std::filesystem::path> run_folders_in(const std::filesystem::path& dir, bool sweep_runs_only) {
+  std::vector<std::filesystem::path> found;
+  const auto holds_run = [&](const std::filesystem::path& d) {
+    std::error_code ec;
+    if (std::filesystem::exists(d / "log.txt", ec)) return true;
+    return !sweep_runs_only &&
+           (std::filesystem::exists(d / "summary.json", ec) || std::filesystem::exists(d / "checkpoint.h5", ec));
+  };
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!it->is_directory(ec) || it->path().filename().string().starts_with(".")) continue;
+    const auto name = it->path().filename();
+    if (name == "tasks" || name == "logs") continue;  // a run's own kept tasks and task logs
+    if (holds_run(it->path())) {
+      found.push_back(name);
+      continue;
+    }
+    std::error_code inner;
+    for (std::filesystem::directory_iterator jt(it->path(), inner), jend; !inner && jt != jend; jt.increment(inner))
+      if (jt->is_directory(inner) && holds_run(jt->path())) found.push_back(name / jt->path().filename());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// The one rule of what a run may remove: only what the previous run of its folder wrote (its summary.json lists
+// its files and, for a sweep, its runs' folders; OutputSet::commit removes those it does not write again). Runs
+// in the folder that no summary accounts for (left by a sweep that never completed, or put there by hand) would
+// stay mixed with this run's: refused before any work, nothing changed.
+void refuse_foreign_runs(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& own,
+                         bool sweep_runs_only) {
+  nlohmann::json previous = nlohmann::json::object();
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(dir / "summary.json", ec)) try {
+      previous = nlohmann::json::parse(read_text_file(dir / "summary.json", "summary", std::uintmax_t{1} << 26));
+    } catch (const std::exception&) {
+    }
+  const auto owned = OutputSet::owned_folders(previous);
+  std::vector<std::string> foreign;
+  for (const auto& f : run_folders_in(dir, sweep_runs_only)) {
+    const auto in = [&](const std::vector<std::filesystem::path>& set) {
+      return std::any_of(set.begin(), set.end(), [&](const auto& o) { return o == f || *f.begin() == o; });
+    };
+    if (!in(own) && !in(owned)) foreign.push_back((dir / f).string());
+  }
+  if (foreign.empty()) return;
+  const std::size_t shown = std::min<std::size_t>(foreign.size(), 3);
+  throw OutputError(fmt::format(
+      "{} holds {} run folder(s) that are not this run's and that no completed run of the folder lists ({}{}): a "
+      "run would leave them mixed with its own; --resume them with the case that made them, move or delete them, or "
+      "write to another folder (nothing was changed)",
+      dir.string(), foreign.size(), fmt::join(foreign.begin(), foreign.begin() + static_cast<long>(shown), ", "),
+      foreign.size() > shown ? ", ..." : ""));
+}
+
 // What --resume finds in a run's folder: a checkpoint to continue from, the
 // summary of a run that had completed, or nothing yet (it starts afresh).
 void find_resume_point(PreparedRun& run) {
@@ -236,6 +321,8 @@ void find_resume_point(PreparedRun& run) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a wearscale summary ({})", summary_file.string(), e.what()));
   }
+  if (!j.is_object()) throw InputError(fmt::format("{}: not a wearscale summary", summary_file.string()));
+  require_summary_of_kind(summary_file, j, false);
   const std::string was = case_fingerprint(j.value("parameters", nlohmann::json::object()));
   if (was != run.fingerprint) {
     const std::string diff = describe_case_difference(was, run.fingerprint);
@@ -247,6 +334,11 @@ void find_resume_point(PreparedRun& run) {
     log::warn("{}: the outputs of the completed run are not intact ({}): the run starts again", dir.string(), broken);
     return;
   }
+  // Its figures as a computed run's are held to: a summary changed by hand (or by another program) is no result.
+  if (const std::string why = results_problem(j.value("results", nlohmann::json::object())); !why.empty())
+    throw InputError(fmt::format("{}: {}; no run writes that (the summary was changed or damaged): delete {} and run "
+                                 "it again",
+                                 summary_file.string(), why, dir.string()));
   run.summary.results = j.value("results", nlohmann::json::object());
   for (const auto& [key, value] : j.items())  // the study's own fields
     if (!RunSummary{}.to_json().contains(key) && key != "results") run.summary.notes[key] = value;
@@ -316,8 +408,10 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
   if (run.tasks == mpi::TaskStore::Mode::Shard) throw mpi::ShardDone("every task of the run is done");
   for (const auto& [name, r] : context.results().items()) {
     const double value = r["value"].get<double>();
-    if (!std::isfinite(value))  // never a NaN (null in JSON) or infinite headline figure
-      throw NumericalError("case " + summary.case_name, 0, name, fmt::format("the result is {}", value));
+    // Never a NaN (null in JSON), infinite or unphysical headline figure: the bounds a resumed or merged
+    // result is held to as well (result_bounds.hpp).
+    if (const std::string why = result_outside_bounds(name, value, r["unit"].get<std::string>()); !why.empty())
+      throw NumericalError("case " + summary.case_name, 0, name, "a result outside physical bounds: " + why);
     h5.write_scalar("/results/" + name, value, r["unit"].get<std::string>());
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
@@ -371,25 +465,43 @@ void check_sweep(const Config& probe, const std::string& key, const std::vector<
                         "a key of what the case computes, e.g. materials.layer.thickness");
   if (!probe.has(key))
     throw probe.error("sweep.key", "the swept key is not in the case (give it a value there first)", "a key of the case");
-  for (std::size_t a = 0; a < values.size(); ++a)
-    for (std::size_t b = 0; b < a; ++b) {
-      bool same = values[a] == values[b] || labels[a] == labels[b];
-      try {  // "1 um" and 1e-6 are one run too
-        same = same || units::parse_quantity(values[a]).value == units::parse_quantity(values[b]).value;
-      } catch (const std::exception&) {
-      }
-      if (same)
-        throw probe.error("sweep.values",
-                          fmt::format("values {} ('{}') and {} ('{}') are the same run (folder {})", b + 1, values[b],
-                                      a + 1, values[a], labels[a]),
-                          "distinct values");
+  // Two values are one run when they are the same text, give the same folder, or the same quantity ("1 um" and
+  // 1e-6): each value looked up among those before it (a sort, not all pairs: a sweep may hold 10 000 values).
+  std::map<std::string, std::size_t> seen_text, seen_label;
+  std::map<double, std::size_t> seen_number;
+  for (std::size_t a = 0; a < values.size(); ++a) {
+    std::optional<std::size_t> first;
+    const auto look = [&](auto& seen, const auto& key) {
+      const auto [it, inserted] = seen.emplace(key, a);
+      if (!inserted && (!first || it->second < *first)) first = it->second;
+    };
+    look(seen_text, values[a]);
+    look(seen_label, labels[a]);
+    try {
+      look(seen_number, units::parse_quantity(values[a]).value);
+    } catch (const std::exception&) {
     }
+    if (first)
+      throw probe.error("sweep.values",
+                        fmt::format("values {} ('{}') and {} ('{}') are the same run (folder {})", *first + 1,
+                                    values[*first], a + 1, values[a], labels[a]),
+                        "distinct values");
+  }
   const bool plain = !table_name.empty() && table_name.front() != '.' && table_name.find('/') == std::string::npos &&
                      table_name.find('\0') == std::string::npos;
-  if (!plain || table_name == "summary.json" || std::find(labels.begin(), labels.end(), table_name) != labels.end())
+  if (!plain || is_reserved_output_name(table_name) ||
+      std::find(labels.begin(), labels.end(), table_name) != labels.end())
     throw probe.error("sweep.table", "not a file name for the sweep table",
-                      "a plain file name in the sweep's folder (no '/', not hidden, not summary.json or a run's folder)");
+                      "a plain file name in the sweep's folder (no '/', not hidden, not a run's folder nor one of the "
+                      "runner's own files: run.h5, summary.json, checkpoint.h5, log.txt, task-K-of-N.json)");
 }
+
+// What the runner holds for a prepared run of a sweep besides what its study
+// keeps (Study::prepared_bytes): its case, summary and checkpoint policy.
+// Measured about 29 KB for the pin-on-disc case (289 MB maximum resident for
+// a 10 000-run sweep prepared, bench/results/reliability.md); the estimate
+// leaves room for larger cases.
+constexpr double prepared_run_bytes = 256.0 * 1024.0;
 
 // A sweep checked and ready: every run prepared, nothing written yet.
 struct SweepPlan {
@@ -414,6 +526,14 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   plan.series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
   plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
   const std::vector<std::string>& series = plan.series;
+  // Every run is prepared (and held) before any starts: their number is bounded before the first.
+  const double run_count = static_cast<double>(values.size()) * static_cast<double>(series.size());
+  if (run_count > static_cast<double>(max_sweep_runs))
+    throw probe.error(plan.series_key.empty() ? "sweep.values" : "sweep.series.values",
+                      fmt::format("{:.0f} runs ({} values{})", run_count, values.size(),
+                                  plan.series_key.empty() ? std::string()
+                                                          : fmt::format(" × {} series values", series.size())),
+                      fmt::format("at most {} runs in one sweep; split it into several sweeps", max_sweep_runs));
   plan.values = values;
   for (const auto& v : values) plan.labels.push_back(label_of(key, v));
   check_sweep(probe, key, values, plan.labels, plan.table_name);
@@ -433,17 +553,25 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   }
   sweep.sweep_key = key;
   sweep.series_key = plan.series_key;
-  // Every run is checked before any starts.
+  // Every run is checked before any starts. A run's case is the sweep's without its [sweep] (the case that
+  // reproduces that run alone; each run holding all the values made the preparation grow as their square).
   const std::string where = probe.where("sweep.values");
+  Config base = load(parse, options);
+  base.erase("sweep");
   std::vector<std::string> run_value;
   for (const auto& sv : series) {
     const auto folder =
         plan.series_key.empty() ? sweep.output_dir : sweep.output_dir / label_of(plan.series_key, sv);
     for (std::size_t k = 0; k < values.size(); ++k) {
-      std::vector<std::pair<std::string, std::string>> extra{
-          {key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k)}};
-      if (!plan.series_key.empty()) extra.push_back({plan.series_key + "=" + sv, probe.where("sweep.series.values")});
-      plan.runs.push_back(prepare(load(parse, options, extra), folder / plan.labels[k], options));
+      throw_if_interrupted("preparing the sweep's runs (nothing was written)");
+      Config cfg = base.clone();
+      cfg.override_value(key + "=" + values[k], fmt::format("{} (sweep.values[{}])", where, k));
+      if (!plan.series_key.empty()) cfg.override_value(plan.series_key + "=" + sv, probe.where("sweep.series.values"));
+      plan.runs.push_back(prepare(std::move(cfg), folder / plan.labels[k], options));
+      if (plan.runs.size() == 1)  // what every run holds until it runs, from the first: within the memory limit
+        require_memory(run_count * (prepared_run_bytes + plan.runs.front().study->prepared_bytes()),
+                       fmt::format("a sweep of {:.0f} runs (each checked and held before any starts)", run_count),
+                       "split it into several sweeps");
       run_value.push_back(values[k]);
       plan.run_series.push_back(sv);
     }
@@ -453,6 +581,28 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   return plan;
 }
 
+// The run folders of a sweep, relative to its folder (a series' runs one level further down).
+std::vector<std::filesystem::path> run_folders_of(const SweepPlan& plan) {
+  std::vector<std::filesystem::path> out;
+  for (const auto& r : plan.runs) out.push_back(r.summary.output_dir.lexically_relative(plan.sweep.output_dir));
+  return out;
+}
+
+// --resume of a sweep: the folder holds no summary yet, or a sweep's (never a completed single run's, whose
+// outputs the sweep's summary would replace).
+void require_sweep_summary_or_none(const std::filesystem::path& dir) {
+  const auto file = dir / "summary.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_text_file(file, "summary", std::uintmax_t{1} << 26));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a wearscale summary ({})", file.string(), e.what()));
+  }
+  require_summary_of_kind(file, j, true);
+}
+
 // A shard of an ensemble (--task K/N): the runs k with k mod N = K − 1.
 struct Shard {
   std::size_t index = 1, of = 1;  // K, N
@@ -460,8 +610,9 @@ struct Shard {
   bool owns(std::size_t k) const { return k % of == index - 1; }
 };
 
-std::optional<Shard> parse_shard(const std::string& text) {
-  if (text.empty()) return std::nullopt;
+std::optional<Shard> parse_shard(const std::optional<std::string>& given) {
+  if (!given) return std::nullopt;
+  const std::string& text = *given;
   const auto bad = [&] {
     return InputError(fmt::format("--task '{}': not a shard; allowed: K/N with 1 <= K <= N <= 1000000 (the K-th of N "
                                   "shards of the case's ensemble), e.g. --task 2/8",
@@ -586,6 +737,7 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
   const std::string& table_name = plan.table_name;
   const bool any_failed = std::any_of(failures.begin(), failures.end(), [](const std::string& f) { return !f.empty(); });
   OutputSet outputs(sweep.output_dir, "summary.json");
+  for (const auto& folder : run_folders_of(plan)) outputs.own_folder(folder);  // the sweep's runs: its set
   std::vector<std::string> names, result_units;
   for (const auto& r : runs)
     for (const auto& [name, v] : r.summary.results.items())
@@ -706,6 +858,10 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     if (!mpi::is_root()) return;
     lock.emplace(shard ? OutputLock::folder(sweep.output_dir, command, OutputLock::Mode::Shared, ensemble)
                        : OutputLock::folder(sweep.output_dir, command));
+    if (options.resume_dir) require_sweep_summary_or_none(sweep.output_dir);
+    refuse_foreign_runs(sweep.output_dir, run_folders_of(plan), false);
+    // The unfinished files of a sweep killed while it wrote its table or plots (its runs clean their own).
+    remove_stale_partials(sweep.output_dir);
     if (options.resume_dir) {
       for (const auto k : mine) find_resume_point(runs[k]);
       const auto finished = std::count_if(mine.begin(), mine.end(), [&](std::size_t k) { return runs[k].complete; });
@@ -726,6 +882,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     tasks.push_back({{"run", k + 1}, {"rank", rank}, {"threads", run_threads}, {"seconds", seconds}});
   };
   const std::string what = shard ? fmt::format("shard {} of the sweep", shard->text()) : std::string("sweep");
+  bool any_output_failure = false;  // a farmed run failed to write its outputs: status 2
 
   if (farmed) {
     log::info("{} over {}: {} runs on {} MPI ranks × {} thread(s) → {}", what, key, mine.size(), mpi::size(),
@@ -747,10 +904,17 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
                                       mine.size()));
       rethrow_interrupted(e, command, sweep.output_dir);
     }
+    // A run that could not write its outputs (a full disk) ends the job with status 2 on every rank, as a
+    // serial run's would; rank 0 alone knows the failures, and tells.
+    bool output_failed = false;
+    if (mpi::is_root())
+      for (const auto& r : outcome.results) output_failed = output_failed || r.output;
+    output_failed = mpi::sum(output_failed ? 1LL : 0LL) > 0;
     if (!mpi::is_root()) {
-      if (outcome.failed > 0) throw mpi::TasksFailed("", false);
+      if (outcome.failed > 0) throw mpi::TasksFailed("", false, output_failed);
       return sweep;
     }
+    any_output_failure = output_failed;
     for (std::size_t t = 0; t < mine.size(); ++t) {
       const auto& r = outcome.results[t];
       add_task(mine[t], r.rank, r.threads, r.seconds);
@@ -816,7 +980,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
       throw mpi::TasksFailed(fmt::format("{}: {} of its {} runs failed: {}; rerun them with: {} --resume {}", what,
                                          failed.size(), mine.size(), fmt::join(failed, "; "), command,
                                          sweep.output_dir.string()),
-                             true);
+                             true, any_output_failure);
     log::info("shard {} done; once every shard is: wearscale merge {}", shard->text(), sweep.output_dir.string());
     return part;
   }
@@ -829,7 +993,7 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
                                        "with: {} --resume {}",
                                        what, failed.size(), runs.size(), fmt::join(failed, "; "), command,
                                        sweep.output_dir.string()),
-                           true);
+                           true, any_output_failure);
   return sweep;
 }
 
@@ -986,6 +1150,7 @@ RunSummary run_case(const RunOptions& options_in) {
   if (shard) return run_shard(run, options, *shard);
   const std::string command = command_line(options, threads);
   const OutputLock lock = OutputLock::folder(run.summary.output_dir, command);
+  refuse_foreign_runs(run.summary.output_dir, {}, true);
   if (options.resume_dir)
     find_resume_point(run);
   else

@@ -44,13 +44,9 @@ class StrengthTableStudy final : public Study {
     spec_ = coupling::read_shear_test_spec(cfg);
     if (spec_.pressures.size() < 2)
       throw cfg.error("md.pressures", "a strength table needs at least two pressures", "two or more pressures");
-    file_ = cfg.string_or("output.file",
-                          fmt::format("lammps_{}_{}.csv", spec_.preset, md::to_string(spec_.material)));
-    const std::filesystem::path name(file_);
-    const auto ext = name.extension().string();
-    if (name.filename() != name || name.filename().string().front() == '.' || (ext != ".csv" && ext != ".h5"))
-      throw cfg.error("output.file", "not a table file name in the output folder",
-                      "a plain file name ending in .csv or .h5 (the folder is --out / output.dir)");
+    file_ = output_file_name(cfg, "output.file",
+                             fmt::format("lammps_{}_{}.csv", spec_.preset, md::to_string(spec_.material)),
+                             {".csv", ".h5"});
     cfg.reject_unknown_keys();
     return {};
   }

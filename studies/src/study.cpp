@@ -1,6 +1,7 @@
 #include "wearscale/studies/study.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -46,6 +47,31 @@ std::string markdown_table(const Schema& schema) {
                        k.fallback.empty() ? "" : "`" + cell(k.fallback) + "`", k.flag.empty() ? "" : "`" + k.flag + "`",
                        cell(k.doc));
   return out;
+}
+
+bool is_reserved_output_name(const std::string& name) {
+  for (const char* kept : {"run.h5", "summary.json", "checkpoint.h5", "log.txt", "tasks", "logs", ".wearscale.lock"})
+    if (name == kept) return true;
+  // A shard's manifest: task-K-of-N.json.
+  return name.starts_with("task-") && name.ends_with(".json") && name.find("-of-") != std::string::npos;
+}
+
+std::string output_file_name(const Config& c, const std::string& key, const std::string& fallback,
+                             const std::vector<std::string>& extensions) {
+  const std::string name = c.string_or(key, fallback);
+  const std::filesystem::path path(name);
+  const bool plain = !name.empty() && name.front() != '.' && path.filename() == path &&
+                     name.find('\0') == std::string::npos;
+  const bool extension_ok = extensions.empty() || std::find(extensions.begin(), extensions.end(),
+                                                            path.extension().string()) != extensions.end();
+  const std::string allowed = fmt::format(
+      "a plain file name in the output folder{}{} (run.h5, summary.json, checkpoint.h5, log.txt and task-K-of-N.json "
+      "are the runner's own)",
+      extensions.empty() ? "" : " ending in ", fmt::join(extensions, " or "));
+  if (!plain || !extension_ok) throw c.error(key, "not a file name for an output of the study", allowed);
+  if (is_reserved_output_name(name))
+    throw c.error(key, fmt::format("'{}' is a name the runner writes itself in every output folder", name), allowed);
+  return name;
 }
 
 void StudyRegistry::add(Factory factory) {

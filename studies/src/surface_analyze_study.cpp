@@ -83,14 +83,18 @@ class SurfaceAnalyze final : public Study {
     c.mark_used("q_max");
     if (c.has("q_min")) q_min_ = c.number("q_min", Range::non_negative());
     if (c.has("q_max")) q_max_ = c.number("q_max", Range::non_negative());
-    psd_ = c.string_or("psd", "");
+    c.mark_used("psd");  // checked once the topography is read
     cfg.reject_unknown_keys();
 
     measured_ = bem::read_measured_topography(file_, read);
     missing_ = read.missing;
     const Grid2D& g = measured_.heights.grid();
     // Analysed on the memory of a few copies of the grid (window, PSD, spectrum).
-    require_memory(64.0 * static_cast<double>(g.size()), fmt::format("surface analyze: a {} × {} topography", g.nx, g.ny));
+    // ... and the radial PSD's |q| bins, which grow with the aspect ratio (24 bytes a bin).
+    require_memory(64.0 * static_cast<double>(g.size()) + 24.0 * bem::radial_psd_bins(g),
+                   fmt::format("surface analyze: a {} × {} topography of {:g} × {:g} m ({:.3g} radial PSD bins)", g.nx,
+                               g.ny, g.lx, g.ly, bem::radial_psd_bins(g)),
+                   "check the sizes (the PSD's bins grow with the aspect ratio lx/ly)");
     double largest = 0.0;
     for (const double v : measured_.heights) largest = std::max(largest, std::abs(v));
     h_ = measured_.heights;
@@ -106,13 +110,12 @@ class SurfaceAnalyze final : public Study {
       throw InputError(fmt::format("{}: the topography is flat: h_RMS = {:g} m {}, rounding noise of heights up to {:g} "
                                    "m; allowed: a rough surface",
                                    file_.string(), bem::h_rms(h_), window_ ? "once levelled" : "about its mean", largest));
-    if (!psd_.empty()) {
-      const std::filesystem::path name(psd_);
-      if (name.filename() != name || psd_.front() == '.' || name.extension() != ".csv")
-        throw c.error("psd", "not a file name in the output folder", "a plain file name ending in .csv");
-    }
+    if (c.has("psd")) psd_ = output_file_name(c, "psd", "", {".csv"});
     return {};
   }
+
+  // The topography as read and its levelled copy.
+  double prepared_bytes() const override { return 16.0 * static_cast<double>(h_.grid().size()); }
 
   void run(const Config& /*cfg*/, RunContext& context) override {
     const Grid2D& g = h_.grid();

@@ -90,11 +90,13 @@ class SurfaceGenerate final : public Study {
       throw c.error("hprime_rms", fmt::format("give exactly one of hprime_rms, h_rms, sa (got {})", targets),
                     "one roughness target (--hprime-rms, --h-rms, --sa)");
     // Bounds that keep every derived figure finite and the surface a surface: an RMS slope up to 100 (the
-    // BEM assumes small slopes: ≲ 1), heights up to the side of the surface.
+    // BEM assumes small slopes: ≲ 1), heights up to the side of the surface; and the slope an h_RMS or Sa
+    // target gives on this spectrum within the same bound (bem::check_roughness_target, as contact.rough's).
     const double side = std::min(lx, ly);
+    const char* key = c.has("hprime_rms") ? "hprime_rms" : c.has("h_rms") ? "h_rms" : "sa";
     if (c.has("hprime_rms")) {
       measure_ = bem::RoughnessMeasure::HPrimeRms;
-      target_ = c.number("hprime_rms", Range::open_closed(0.0, 100.0));
+      target_ = c.number("hprime_rms", Range::open_closed(0.0, bem::max_hprime_rms));
     } else if (c.has("h_rms")) {
       measure_ = bem::RoughnessMeasure::HRms;
       target_ = c.number("h_rms", Range::open_closed(0.0, side), units::length);
@@ -102,10 +104,9 @@ class SurfaceGenerate final : public Study {
       measure_ = bem::RoughnessMeasure::Sa;
       target_ = c.number("sa", Range::open_closed(0.0, side), units::length);
     }
-    file_ = c.string_or("file", "surface.h5");
-    const std::filesystem::path name(file_);
-    if (name.filename() != name || file_.front() == '.' || name.extension() != ".h5")
-      throw c.error("file", "not a file name in the output folder", "a plain file name ending in .h5");
+    if (const auto p = bem::roughness_target_problem(spec_, measure_, target_); !p.problem.empty())
+      throw c.error(key, p.problem, p.allowed);
+    file_ = output_file_name(c, "file", "surface.h5", {".h5"});
     // The surface, its spectrum and the copy written out, before any is allocated.
     require_memory(48.0 * static_cast<double>(nx) * static_cast<double>(ny),
                    fmt::format("surface generate: a {} × {} surface", nx, ny), "give a smaller --n (or --nx, --ny)");

@@ -131,3 +131,35 @@ TEST(AtomicFile, AWriteThatFailsLeavesNoFileAndNamesThePath) {
   }
   EXPECT_THROW(write_csv("/proc/self/x.csv", {"a"}, {std::vector<double>{1.0}}, {"1"}), OutputError);
 }
+
+// A sweep's runs are its set too: the next run of the folder removes the run
+// folders the previous summary listed and it does not own again (and the
+// series folders they leave empty), and never a folder no summary listed.
+TEST(OutputSet, TheRunFoldersAPreviousSetOwnedGoWhenTheNextDoesNotOwnThem) {
+  const auto dir = scratch("folders");
+  for (const char* run : {"v=1", "v=2", "s=a/v=1", "s=b/v=1", "mine"}) {
+    fs::create_directories(dir / run);
+    write_file_atomically(dir / run / "summary.json", "{}\n", Commit::Now);
+  }
+  {
+    OutputSet set(dir, "summary.json");
+    for (const char* run : {"v=1", "v=2", "s=a/v=1", "s=b/v=1"}) set.own_folder(run);
+    set.commit(nlohmann::json::object());
+  }
+  const auto listed = nlohmann::json::parse(text_of(dir / "summary.json"))["folders"];
+  EXPECT_EQ(listed.size(), 4u);
+  {
+    OutputSet set(dir, "summary.json");
+    set.own_folder("v=2");
+    set.own_folder("s=a/v=1");
+    set.commit(nlohmann::json::object());
+  }
+  EXPECT_FALSE(fs::exists(dir / "v=1"));
+  EXPECT_TRUE(fs::exists(dir / "v=2" / "summary.json"));
+  EXPECT_TRUE(fs::exists(dir / "s=a" / "v=1" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "s=b")) << "the series folder its only run left";
+  EXPECT_TRUE(fs::exists(dir / "mine" / "summary.json")) << "no summary listed it: not the set's to remove";
+  OutputSet set(dir, "summary.json");
+  for (const char* bad : {"..", "../x", "/tmp", ".hidden", "a/b/c", ""})
+    EXPECT_THROW(set.own_folder(bad), std::invalid_argument) << bad;
+}

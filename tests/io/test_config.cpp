@@ -278,3 +278,36 @@ TEST(Config, AStopAfterTheWholeCaseIsCheckedIsNotAnError) {
   EXPECT_THROW(c.reject_unknown_keys(), CaseChecked);
   EXPECT_TRUE(c.fully_checked());
 }
+
+// A case's shape is bounded when it is read: 32 levels of tables, arrays and
+// inline tables, keys of 1024 bytes (a 20 000-level table path used to take
+// minutes, cubic in its depth); --set keys and values alike.
+TEST(Config, ACaseNestedDeeperThanItsBoundIsRefusedWhenRead) {
+  std::string path = "a";
+  for (int k = 1; k < 20000; ++k) path += ".a";
+  EXPECT_THAT(input_error_of([&] { (void)Config::from_string("[" + path + "]\nx = 1\n", "deep.toml"); }),
+              AllOf(HasSubstr("deep.toml:1: tables and arrays nested more than 32 deep"), HasSubstr("allowed:")));
+  EXPECT_THAT(input_error_of([&] {
+                (void)Config::from_string("v = " + std::string(40, '[') + "1" + std::string(40, ']') + "\n", "arr.toml");
+              }),
+              HasSubstr("nested more than 32 deep"));
+  EXPECT_THAT(input_error_of([&] { (void)Config::from_string(std::string(2000, 'k') + " = 1\n", "long.toml"); }),
+              HasSubstr("a key of more than 1024 bytes"));
+  std::string ok = "a";
+  for (int k = 1; k < 30; ++k) ok += ".a";
+  Config cfg = Config::from_string("[" + ok + "]\nx = 1\n", "ok.toml");  // 31 levels: within
+  EXPECT_TRUE(cfg.has(ok + ".x"));
+  EXPECT_THAT(input_error_of([&] { cfg.override_value(path + "=1"); }), HasSubstr("allowed: keys of at most"));
+  EXPECT_THAT(input_error_of([&] { cfg.override_value("b=" + std::string(40, '[') + "1" + std::string(40, ']')); }),
+              HasSubstr("nested more than 32 deep"));
+}
+
+// "inf" as text is TOML's inf: infinite whatever the key's dimension, judged by its range (a bulk layer).
+TEST(Config, InfAsTextIsInfinityThatTheRangeJudges) {
+  const Config cfg = Config::from_string("[l]\nt = \"inf\"\nn = \"-inf\"\n", "inf.toml");
+  EXPECT_EQ(cfg.number("l.t", Range::non_negative().or_infinite(), units::length), HUGE_VAL);
+  EXPECT_THAT(input_error_of([&] { (void)cfg.number("l.t", Range::non_negative(), units::length); }),
+              HasSubstr("out of range"));
+  EXPECT_THAT(input_error_of([&] { (void)cfg.number("l.n", Range::non_negative().or_infinite(), units::length); }),
+              HasSubstr("out of range"));
+}

@@ -2,6 +2,7 @@
 // presets (the [md] case keys: tests/coupling/test_shear_test_keys.cpp).
 #include <gtest/gtest.h>
 
+#include "hostile_seed.hpp"
 #include "md_test_support.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/md/shear_test.hpp"
@@ -100,4 +101,55 @@ TEST(ShearSpec, FingerprintChangesWithEveryRunInput) {
   b = a;
   b.pressures = {1e9};  // pressures live in each run's deck, not in the fingerprint
   EXPECT_EQ(a.fingerprint(), b.fingerprint());
+}
+
+// No file name is LAMMPS code: a potential file whose name holds a newline and a
+// `shell` command, `$`, `#` or quotes is copied into the run folder under a deck
+// word, and a deck refuses any other word it is handed.
+TEST(ShearDeck, AFileNameIsNeverLammpsCode) {
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 10e9};
+  for (const std::string hostile : {"x\nshell touch PWNED\n.sw", "a b.sw", "${x}.sw", "#.sw", "'q'.sw", "-in.sw",
+                                    ".hidden", "x&\nshell rm -rf .sw"}) {
+    s.potential = "/somewhere/" + hostile;
+    const std::string name = run_potential_name(s);
+    EXPECT_TRUE(is_deck_word(name)) << name;
+    EXPECT_EQ(name.rfind("potential_", 0), 0u) << name;
+    DeckFiles f;
+    f.potential = name;
+    const std::string d = shear_deck(s, 10e9, f);
+    EXPECT_TRUE(has_line(d, "pair_coeff * * " + name + " Si"));
+    EXPECT_EQ(d.find("\nshell"), std::string::npos) << "the name's `shell` is a word of it, never a command";
+    f.potential = hostile;  // handed a word that is not one: refused, never written
+    EXPECT_THROW((void)shear_deck(s, 10e9, f), std::logic_error) << hostile;
+  }
+  s.potential = "/usr/share/lammps/potentials/Si.sw";
+  EXPECT_EQ(run_potential_name(s), "Si.sw") << "a plain name is kept (the cache keys of shipped potentials stand)";
+}
+
+// The class's generator: potential file names made of the characters of LAMMPS'
+// and shells' syntax, a new set each run (WEARSCALE_HOSTILE_SEED replays one).
+TEST(ShearDeck, GeneratedHostileFileNamesAreNeverLammpsCode) {
+  auto rng = hostile_generator("lammps-deck-words");
+  const std::vector<std::string> parts{"\n", "shell touch PWNED", "$", "${x}", "#", "'", "\"", "&", " ", "-",
+                                       ".",  "\\",  ";",    "`", "v_", "Si", "sw", "/"};
+  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  s.pressures = {0.0, 10e9};
+  for (int k = 0; k < 200; ++k) {
+    std::string hostile;
+    const int n = std::uniform_int_distribution<int>(1, 8)(rng);
+    for (int p = 0; p < n; ++p) hostile += pick(rng, parts);
+    if (hostile.ends_with("/")) hostile += "x";
+    SCOPED_TRACE(hostile);
+    s.potential = "/somewhere/" + hostile;
+    const std::string name = run_potential_name(s);
+    ASSERT_TRUE(is_deck_word(name)) << name;
+    DeckFiles f;
+    f.potential = name;
+    const std::string d = shear_deck(s, 10e9, f);
+    EXPECT_TRUE(has_line(d, "pair_coeff * * " + name + " Si"));
+    EXPECT_EQ(d.find("\nshell"), std::string::npos) << "no command of the name starts a line";
+    f.potential = std::filesystem::path(hostile).filename().string();
+    if (!is_deck_word(f.potential)) EXPECT_THROW((void)shear_deck(s, 10e9, f), std::logic_error);
+  }
 }

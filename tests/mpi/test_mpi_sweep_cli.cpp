@@ -152,3 +152,18 @@ TEST(MpiSweepCli, AKilledRankEndsTheJobAndAResumeUnderAnotherCountFinishesIt) {
   ASSERT_EQ(r.status, 0) << r.err;
   same_outputs::expect_same_outputs(work / "uninterrupted", work / "killed", same_outputs::Timings::Ignored);
 }
+
+// A full disk under mpirun ends the job with status 2, as without mpirun (it was 1, a "numerical" failure of
+// the runs, with a summary): the disk fails at the first write of each process into the sweep's folder.
+TEST(MpiSweepCli, AFullDiskEndsTheJobWithStatus2AsWithoutMpirun) {
+  for (int ranks : {0, 2}) {
+    const std::string dir = "full" + std::to_string(ranks);
+    const std::string env = "LD_PRELOAD='" WEARSCALE_FAULT_SHIM "' FAULT_DIR='" + (work / dir).string() +
+                            "' FAULT_OP=write FAULT_AT=1";
+    write_oxide_sweep_case(work, "0, 1e-6, 3e-6, \"inf\"");
+    const auto r = run_cli(sweep_args + " --out " + dir, work, "OMP_NUM_THREADS=1 " + env, mpi_launcher(ranks));
+    EXPECT_EQ(r.status, 2) << ranks << " ranks\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr("No space left on device")) << ranks << " ranks";
+    EXPECT_FALSE(fs::exists(work / dir / "summary.json")) << ranks << " ranks";
+  }
+}

@@ -17,6 +17,7 @@
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "wearscale/tribometer/state_bounds.hpp"
 
 namespace wearscale::coupling {
 
@@ -134,9 +135,21 @@ class MacroPinOnDisc final : public Scale {
       if (saved->text("integrator") != integrator_)
         throw InputError(fmt::format("{}: saved by the {} integrator, the case asks for {}", saved->origin,
                                      saved->text("integrator"), integrator_));
-      model.restore(*saved);
-      samples = load_samples(*saved);
+      model.restore(*saved);  // refused unless a state a run reaches (tribometer/state_bounds.hpp)
+      samples = load_samples(*saved, s_, model.distance());
       snapshots = load_snapshots(*saved);
+      // The counters as the samples are: whole, within what the run can reach, checked before they are integers.
+      for (const std::string& problem :
+           {tribometer::count_problem("snapshot_counter", saved->scalar("snapshot_counter"), 0.0,
+                                      static_cast<double>(samples.size())),
+            tribometer::count_problem("adaptive_steps", saved->scalar("adaptive_steps"), 0.0, 1e12)})
+        if (!problem.empty())
+          throw InputError(fmt::format("{}: no state a run reaches ({}); delete it to start afresh", saved->origin,
+                                       problem));
+      if (const double h = saved->scalar("next_step"); !(std::isfinite(h) && h >= 0.0 && h <= s_.distance))
+        throw InputError(fmt::format("{}: no state a run reaches (next_step = {:g} m; allowed: within [0, {:g}] m); "
+                                     "delete it to start afresh",
+                                     saved->origin, h, s_.distance));
       for (const auto& snap : snapshots) write_fields(ctx, model.grid(), snap, &series);
       n = static_cast<std::size_t>(saved->scalar("snapshot_counter"));
       adaptive_steps = static_cast<long>(saved->scalar("adaptive_steps"));
@@ -159,6 +172,9 @@ class MacroPinOnDisc final : public Scale {
     Progress progress = ctx.show_progress() ? Progress("pin-on-disc", s_.distance * 1e3, "mm")
                                             : Progress::silent(s_.distance * 1e3);
     auto observe = [&](const tribometer::PinOnDiscSample& x) {
+      // Held to the bounds a restored sample is held to (load_samples).
+      if (const std::string problem = tribometer::sample_problem(x, s_); !problem.empty())
+        throw NumericalError("pin-on-disc", static_cast<long>(samples.size()), "sample", problem);
       samples.push_back(x);
       progress.update(x.distance * 1e3);
       if (fields_every_ > 0 && n++ % fields_every_ == 0) {
@@ -277,16 +293,34 @@ class MacroPinOnDisc final : public Scale {
     for (int k = 0; k < kColumns; ++k) st.put(std::string("samples/") + kSampleColumns[k], c[k]);
   }
 
-  static std::vector<tribometer::PinOnDiscSample> load_samples(const CheckpointState& st) {
+  // The samples of a checkpoint, each within the bounds of a computed one (sample_problem), in order of
+  // distance up to the restored state's.
+  static std::vector<tribometer::PinOnDiscSample> load_samples(const CheckpointState& st,
+                                                                const tribometer::PinOnDiscSetup& setup,
+                                                                double restored_distance) {
     const std::vector<double>* c[kColumns];
     for (int k = 0; k < kColumns; ++k) c[k] = &st.array(std::string("samples/") + kSampleColumns[k]);
     std::vector<tribometer::PinOnDiscSample> x(c[0]->size());
     for (int k = 1; k < kColumns; ++k)
       if (c[k]->size() != x.size()) throw InputError(fmt::format("{}: sample columns of different lengths", st.origin));
-    for (std::size_t r = 0; r < x.size(); ++r)
+    const auto refuse = [&](std::size_t r, const std::string& problem) {
+      return InputError(fmt::format("{}: no state a run reaches (sample {}: {}); delete the checkpoint to start "
+                                    "afresh",
+                                    st.origin, r, problem));
+    };
+    for (std::size_t r = 0; r < x.size(); ++r) {
+      for (const std::string& problem : {tribometer::count_problem("BEM iterations", (*c[9])[r], 0.0, 1e9),
+                                         tribometer::count_problem("grooves", (*c[10])[r], 0.0, 1e9)})
+        if (!problem.empty()) throw refuse(r, problem);
       x[r] = {(*c[0])[r], (*c[1])[r], (*c[2])[r], (*c[3])[r],  (*c[4])[r],
               (*c[5])[r], (*c[6])[r], (*c[7])[r], (*c[8])[r], static_cast<int>((*c[9])[r]),
               static_cast<int>((*c[10])[r])};
+      if (const std::string problem = tribometer::sample_problem(x[r], setup); !problem.empty()) throw refuse(r, problem);
+      if (r > 0 && x[r].distance < x[r - 1].distance)
+        throw refuse(r, fmt::format("distance {:g} m after {:g} m", x[r].distance, x[r - 1].distance));
+      if (x[r].distance > restored_distance * (1.0 + 1e-12))
+        throw refuse(r, fmt::format("distance {:g} m beyond the state's {:g} m", x[r].distance, restored_distance));
+    }
     return x;
   }
 

@@ -10,6 +10,7 @@
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
 
 namespace wearscale::bem {
 
@@ -49,8 +50,15 @@ std::unique_ptr<TractionOperator> serial_body(const Grid2D& g, double young, dou
 }
 }  // namespace
 
+// As NormalContact's: 640 B per point (the contact study's estimate with friction), checked before allocating.
+static const Grid2D& within_memory(const Grid2D& g) {
+  require_memory(640.0 * static_cast<double>(g.size()),
+                 fmt::format("a frictional contact of {} × {} points", g.nx, g.ny), "use a smaller grid");
+  return g;
+}
+
 FrictionalContact::FrictionalContact(const RealField& surface, double young, double poisson, FrictionLaw law)
-    : FrictionalContact(serial_body(surface.grid(), young, poisson), surface, law) {}
+    : FrictionalContact(serial_body(within_memory(surface.grid()), young, poisson), surface, law) {}
 
 FrictionalContact::FrictionalContact(std::unique_ptr<TractionOperator> body, const RealField& surface,
                                      FrictionLaw law)
@@ -654,7 +662,10 @@ void FrictionalContact::descend(double tau_n, double tau_t, const MeanTraction& 
 
 FrictionalResult FrictionalContact::solve(const MeanTraction& load, const FrictionalOptions& opt) {
   check_load(load);
-  if (!(opt.tolerance > 0.0)) throw InputError("frictional contact: the tolerance must be > 0");
+  if (!(opt.tolerance > 0.0 && opt.tolerance <= FrictionalOptions::max_tolerance))
+    throw InputError(fmt::format("frictional contact: tolerance = {:g}; allowed: (0, {:g}] (a larger one lets a "
+                                 "solve stop before it has an answer)",
+                                 opt.tolerance, FrictionalOptions::max_tolerance));
   tolerance_ = opt.tolerance;
   history_.clear();
   bound_updates_ = 0;

@@ -12,6 +12,7 @@
 #include "wearscale/bem/spectral_modes.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
+#include "wearscale/core/memory_limit.hpp"
 
 namespace wearscale::bem {
 
@@ -121,6 +122,10 @@ void rough_spectrum(const RoughSurfaceSpec& s, std::size_t first, std::size_t ro
 RealField generate_surface(const RoughSurfaceSpec& s) {
   const Grid2D& g = s.grid;
   validate(s);
+  // The spectrum and the heights, checked before either is allocated (every caller: `surface generate`, contact,
+  // wear maps, Python); `surface generate` checks 48 B per point first, with its copies.
+  require_memory(24.0 * static_cast<double>(g.size()), fmt::format("a rough surface of {} × {} points", g.nx, g.ny),
+                 "use a smaller grid");
   ComplexField spectrum = ComplexField::spectrum_of(g);
   rough_spectrum(s, 0, g.nx, spectrum.data());
   RealField h(g);
@@ -128,9 +133,59 @@ RealField generate_surface(const RoughSurfaceSpec& s) {
   return h;
 }
 
+double predicted_hprime_rms(const RoughSurfaceSpec& s, RoughnessMeasure measure, double target) {
+  validate(s);
+  if (measure == RoughnessMeasure::HPrimeRms) return target;
+  const Grid2D& g = s.grid;
+  const std::size_t cols = g.spectral_ny();
+  // ⟨|∇h|²⟩/⟨h²⟩ = Σ w q² C / Σ w C over the modes (Parseval; |ĥ|² ∝ C), in a fixed order.
+  double power = 0.0, slope = 0.0;
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < cols; ++j) {
+      const double c = mode_multiplicity(g, j) * target_psd(s, radial_wavenumber(g, i, j));
+      const double qx = g.wavenumber_x(i), qy = g.wavenumber_y(j);
+      power += c;
+      slope += c * (qx * qx + qy * qy);
+    }
+  if (!(power > 0.0)) return 0.0;
+  const double h_rms = measure == RoughnessMeasure::HRms ? target : target * std::sqrt(std::numbers::pi / 2.0);
+  return h_rms * std::sqrt(slope / power);
+}
+
+RoughnessTargetProblem roughness_target_problem(const RoughSurfaceSpec& s, RoughnessMeasure measure, double target) {
+  validate(s);
+  const double side = std::min(s.grid.lx, s.grid.ly);
+  const double most = measure == RoughnessMeasure::HPrimeRms ? max_hprime_rms : side;
+  if (!(std::isfinite(target) && target > 0.0 && target <= most))
+    return {"out of range", measure == RoughnessMeasure::HPrimeRms
+                                ? fmt::format("(0, {:g}]", max_hprime_rms)
+                                : fmt::format("(0, {:g}] m (the shorter side of the surface)", side)};
+  const double slope = predicted_hprime_rms(s, measure, target);
+  if (!(slope <= max_hprime_rms))
+    return {fmt::format("gives an RMS slope h'_RMS = {:.3g} on this spectrum (heights rising more than {:g} cell "
+                        "widths per cell)",
+                        slope, max_hprime_rms),
+            fmt::format("h'_RMS ≤ {:g}, here {} ≤ {:.3g}", max_hprime_rms, name(measure),
+                        target * max_hprime_rms / slope)};
+  return {};
+}
+
+void check_roughness_target(const RoughSurfaceSpec& s, RoughnessMeasure measure, double target) {
+  if (const auto p = roughness_target_problem(s, measure, target); !p.problem.empty())
+    throw InputError::at_key(source, name(measure), num(target), p.problem, p.allowed);
+}
+
 RealField generate_surface(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target) {
+  check_roughness_target(spec, measure, target);
   RealField h = generate_surface(spec);
   rescale(h, measure, target);
+  if (measure == RoughnessMeasure::Sa) {  // predicted about only: the surface itself is held to the bound
+    const double slope = h_prime_rms(h);
+    if (!(slope <= max_hprime_rms))
+      throw InputError::at_key(source, name(measure), num(target),
+                               fmt::format("gives an RMS slope h'_RMS = {:.3g}", slope),
+                               fmt::format("h'_RMS ≤ {:g}", max_hprime_rms));
+  }
   return h;
 }
 
@@ -144,6 +199,8 @@ RealField sphere_rows(const Grid2D& grid, std::size_t first, std::size_t rows, d
   if (!std::isfinite(cx) || !std::isfinite(cy))
     throw InputError::at_key("sphere", "centre", fmt::format("({:g}, {:g})", cx, cy), "not finite", "finite lengths");
   if (first + rows > grid.nx) throw std::invalid_argument("sphere_rows: rows beyond the grid");
+  require_memory(8.0 * static_cast<double>(rows) * static_cast<double>(grid.ny),
+                 fmt::format("a sphere of {} × {} points", rows, grid.ny), "use a smaller grid");
   RealField h(grid.slab(rows));
   // Nearest periodic image: the offset folded into [−L/2, L/2).
   auto fold = [](double d, double l) { return d - l * std::floor(d / l + 0.5); };

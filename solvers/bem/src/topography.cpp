@@ -1,5 +1,7 @@
 #include "wearscale/bem/topography.hpp"
 
+#include "wearscale/core/memory_limit.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -86,14 +88,22 @@ RealField psd_2d(const RealField& h) {
   return c;
 }
 
+double radial_psd_bins(const Grid2D& g) {
+  double k_max = 0.0;
+  for (std::size_t i = 0; i < g.nx; ++i) k_max = std::max(k_max, radial_wavenumber(g, i, g.spectral_ny() - 1));
+  for (std::size_t j = 0; j < g.spectral_ny(); ++j) k_max = std::max(k_max, radial_wavenumber(g, g.nx / 2, j));
+  return std::floor(k_max * (1.0 + wavenumber_slack)) + 1.0;
+}
+
 RadialPsd radial_psd(const RealField& psd) {
   if (psd.layout() != Layout::Spectral) throw std::invalid_argument("radial_psd: expects a spectral PSD (psd_2d)");
   const Grid2D& g = psd.grid();
   const double unit = wavenumber_unit(g);
-  double k_max = 0.0;
-  for (std::size_t i = 0; i < g.nx; ++i) k_max = std::max(k_max, radial_wavenumber(g, i, g.spectral_ny() - 1));
-  for (std::size_t j = 0; j < g.spectral_ny(); ++j) k_max = std::max(k_max, radial_wavenumber(g, g.nx / 2, j));
-  const std::size_t bins = static_cast<std::size_t>(std::floor(k_max * (1.0 + wavenumber_slack))) + 1;
+  const double bin_count = radial_psd_bins(g);
+  require_memory(24.0 * bin_count, fmt::format("the radial PSD of a {} × {} topography of {:g} × {:g} m ({:.3g} |q| bins)",
+                                               g.nx, g.ny, g.lx, g.ly, bin_count),
+                 "the bins grow with the aspect ratio lx/ly: check the sizes");
+  const auto bins = static_cast<std::size_t>(bin_count);
   std::vector<double> sum_q(bins, 0.0), sum_c(bins, 0.0), weight(bins, 0.0);
   for (std::size_t i = 0; i < g.nx; ++i)
     for (std::size_t j = 0; j < g.spectral_ny(); ++j) {

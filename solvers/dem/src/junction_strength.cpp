@@ -253,8 +253,8 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
     sum_n += 0.5 * (sim.wall(top_wall).force.z - sim.wall(bottom_wall).force.z);
     ++summed;
   };
-  const long settle_steps = static_cast<long>(std::ceil(spec.settle_distance * length / (spec.velocity * dt)));
-  const long slide_steps = static_cast<long>(std::ceil(spec.sliding_distance * length / (spec.velocity * dt)));
+  const long settle_steps = planned_steps(spec.settle_distance * length / (spec.velocity * dt), "the junction's settling");
+  const long slide_steps = planned_steps(spec.sliding_distance * length / (spec.velocity * dt), "the junction's slide");
   const long planned = settle_steps + slide_steps;
   const long window_start = settle_steps + static_cast<long>(spec.steady_from * static_cast<double>(slide_steps));
   std::vector<Vec3> window_positions;
@@ -278,7 +278,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
     const auto& t = tallies(st, "junction.tallies", 8);
     if (sim.particles().size() != out.particles)
       throw InputError(fmt::format("{}: not the state of this junction run", st.origin));
-    step = static_cast<long>(t[0]);
+    step = step_tally(st, "junction.tallies", t[0]);
     out.loaded_contact_ratio = t[1];
     out.peak_tangential = t[2];
     window_sliding = t[3];

@@ -219,8 +219,8 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   const double area = size_x * size_y;
   const int bottom_wall = sim.add_wall(std::move(bottom), WallMotion::fixed());
   const int top_wall = sim.add_wall(std::move(plate), WallMotion::pressed(2, spec.pressure, area, +1, {}));
-  const long settle = static_cast<long>(std::ceil(spec.settle_distance / (spec.velocity * dt)));
-  const long slide = static_cast<long>(std::ceil(spec.sliding_distance / (spec.velocity * dt)));
+  const long settle = planned_steps(spec.settle_distance / (spec.velocity * dt), "the oxide asperity's settling");
+  const long slide = planned_steps(spec.sliding_distance / (spec.velocity * dt), "the oxide asperity's slide");
   const long planned = settle + slide;
   if (settle == 0) refuse("settle distance", spec.settle_distance, "> 0 (the layer bonds to the Si while at rest)");
   out.steps = planned;
@@ -351,7 +351,7 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
     const CheckpointState& st = *checkpoints.from;
     sim.restore_state(st);
     const auto& t = tallies(st, "oxide.tallies", 6);
-    step = static_cast<long>(t[0]);
+    step = step_tally(st, "oxide.tallies", t[0]);
     rotation = t[1];
     travel = t[2];
     surface0 = t[3];

@@ -178,15 +178,15 @@ Phase restore_measured(const CheckpointState& st, PatchTestResult& r) {
   if (phase != 0.0 && phase != 1.0 && phase != 2.0)
     throw InputError(fmt::format("{}: patch-test phase {}: not the state of a patch test", st.origin, phase));
   const auto& m = tallies(st, "patch_test.measured", 9);
-  r.particles = static_cast<std::size_t>(m[0]);
-  r.elastic_steps = static_cast<long>(m[1]);
+  r.particles = static_cast<std::size_t>(step_tally(st, "patch_test.measured", m[0]));
+  r.elastic_steps = step_tally(st, "patch_test.measured", m[1]);
   r.elastic_converged = m[2] != 0.0;
   r.c11 = m[3];
   r.c12 = m[4];
   r.young = m[5];
   r.poisson = m[6];
   if (!std::isnan(m[7])) r.tensile_strength = m[7];
-  r.strength_steps = static_cast<long>(m[8]);
+  r.strength_steps = step_tally(st, "patch_test.measured", m[8]);
   return static_cast<Phase>(static_cast<int>(phase));
 }
 
@@ -238,7 +238,7 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
   if (from != nullptr) {
     l.sim.restore_state(*from);
     const auto& t = tallies(*from, "patch_test.loop", 2);
-    steps = static_cast<long>(t[0]);
+    steps = step_tally(*from, "patch_test.loop", t[0]);
     previous = t[1];
   }
   while (steps < spec.max_elastic_steps) {
@@ -279,13 +279,13 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, Pa
   v[direction] = rate * s.height;
   auto l = prepare(spec, std::move(s), WallMotion::moving(v), spec.strength_damping);
   const double max_strain = spec.max_strain > 0.0 ? spec.max_strain : 3.0 * spec.material.tensile_strength / spec.material.young;
-  const long planned = static_cast<long>(max_strain / spec.strain_rate);
+  const long planned = planned_steps(max_strain / spec.strain_rate, "the patch test's strength test");
   double peak = 0.0;
   long done = 0;
   if (from != nullptr) {
     l.sim.restore_state(*from);
     const auto& t = tallies(*from, "patch_test.loop", 2);
-    done = static_cast<long>(t[0]);
+    done = step_tally(*from, "patch_test.loop", t[0]);
     peak = t[1];
   }
   const long chunk = 100;
@@ -321,7 +321,19 @@ PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgres
                                const RunCheckpoints& checkpoints) {
   require_modelled(spec.material);
   if (!(spec.d0 > 0.0)) throw InputError(fmt::format("patch test: d0 = {}; allowed: > 0", spec.d0));
-  if (!(spec.length >= 6.0)) throw InputError(fmt::format("patch test: L = {} d0; allowed: ≥ 6", spec.length));
+  using S = PatchTestSpec;
+  const auto within = [](double v, double low, double high, const char* what, const char* allowed) {
+    if (!(v >= low && v <= high)) throw InputError(fmt::format("patch test: {} = {:g}; allowed: {}", what, v, allowed));
+  };
+  within(spec.length, S::min_length, S::max_length, "L (in d0)", "6 … 400");
+  within(spec.width, S::min_width, S::max_width, "W (in d0)", "1.25 … 100");
+  if (!(spec.time_step > 0.0 && spec.time_step < 1.0))
+    throw InputError(fmt::format("patch test: time step = {:g} Δt_c; allowed: (0, 1)", spec.time_step));
+  if (!(spec.strain_rate > 0.0 && spec.strain_rate < S::max_strain_rate))
+    throw InputError(fmt::format("patch test: strain rate = {:g}; allowed: (0, 0.01)", spec.strain_rate));
+  if (spec.max_elastic_steps < S::min_elastic_steps || static_cast<double>(spec.max_elastic_steps) > max_planned_steps)
+    throw InputError(fmt::format("patch test: max elastic steps = {}; allowed: {} … {:g}", spec.max_elastic_steps,
+                                 S::min_elastic_steps, max_planned_steps));
   if (!(spec.load > 0.0 && spec.load < spec.material.tensile_strength / spec.material.young))
     throw InputError(fmt::format("patch test: load = {} E; allowed: 0 < load < σ_m,N/E = {}", spec.load,
                                  spec.material.tensile_strength / spec.material.young));

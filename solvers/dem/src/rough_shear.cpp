@@ -138,7 +138,7 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
     const CheckpointState& st = *checkpoints.from;
     cell.simulation().restore_state(st);
     const auto& t = tallies(st, "rough_shear.tallies", 3);
-    done = static_cast<long>(t[0]);
+    done = step_tally(st, "rough_shear.tallies", t[0]);
     out.peak_tangential_force = t[1];
     window_open = t[2] != 0.0;
     out.history = samples<SlidingSample>(st, "rough_shear.history");

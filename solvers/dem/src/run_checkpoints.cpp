@@ -21,9 +21,29 @@ void put_points(CheckpointState& st, const std::string& name, const std::vector<
   st.put(name, flat);
 }
 
+long planned_steps(double steps, const std::string& what) {
+  if (!(std::isfinite(steps) && steps >= 0.0 && steps <= max_planned_steps))
+    throw InputError(fmt::format("{} asks for {:.3g} steps; allowed: at most {:g} (check the distance, velocity and "
+                                 "time step)",
+                                 what, steps, max_planned_steps));
+  return static_cast<long>(std::ceil(steps));
+}
+
+long step_tally(const CheckpointState& st, const std::string& name, double value) {
+  if (const std::string problem = count_problem(name + " (steps)", value, 0.0, 9e15); !problem.empty())
+    throw InputError(fmt::format("{}: no state a run reaches ({}); the checkpoint was changed or written by another "
+                                 "program: delete it to start afresh",
+                                 st.origin, problem));
+  return static_cast<long>(value);
+}
+
 std::vector<Vec3> points(const CheckpointState& st, const std::string& name) {
   const auto& flat = st.array(name);
   require_whole(st, name, flat.size(), 3);
+  for (const double v : flat)
+    if (!std::isfinite(v))
+      throw InputError(fmt::format("{}: entry '{}' holds {}, not a position: not the state of this run", st.origin,
+                                   name, v));
   std::vector<Vec3> out;
   out.reserve(flat.size() / 3);
   for (std::size_t k = 0; k < flat.size(); k += 3) out.push_back({flat[k], flat[k + 1], flat[k + 2]});

@@ -29,7 +29,19 @@ void check(const ShearedJunctionSpec& s) {
   positive(s.diameter, "junction diameter D", "> 0");
   positive(s.velocity, "velocity", "> 0");
   positive(s.time_step, "time step", "> 0 (in Δt_c)");
-  if (s.pressure < 0.0) throw InputError(fmt::format("sheared junction: pressure = {}; allowed: ≥ 0", s.pressure));
+  if (!(s.time_step < 1.0))
+    throw InputError(fmt::format("sheared junction: time step = {:g} Δt_c; allowed: (0, 1) (the cohesive law's stable "
+                                 "step, 6.6)",
+                                 s.time_step));
+  if (!(s.sliding_distance >= 0.0 && std::isfinite(s.sliding_distance)))
+    throw InputError(fmt::format("sheared junction: sliding distance = {:g}; allowed: ≥ 0 (0: 1.5 D)", s.sliding_distance));
+  if (s.record_every < 1)
+    throw InputError(fmt::format("sheared junction: record_every = {}; allowed: ≥ 1", s.record_every));
+  // Beyond the normal strength σ_m,N the cohesive model holds no solid to shear (as the sliding cell's bound).
+  if (!(s.pressure >= 0.0 && s.pressure <= s.material.tensile_strength))
+    throw InputError(fmt::format("sheared junction: pressure = {:g}; allowed: 0 ≤ p ≤ σ_m,N = {:g} (the material's "
+                                 "normal strength)",
+                                 s.pressure, s.material.tensile_strength));
   const double height = s.height_ratio * s.diameter;
   if (s.diameter > 0.5 * s.box.x)
     throw InputError(fmt::format("sheared junction: D = {:.3g} m is more than half the sliding length {:.3g} m of the box; allowed: D ≤ {:.3g}",
@@ -112,7 +124,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
                                  spec.diameter, spec.d0));
 
   const double distance = spec.sliding_distance > 0.0 ? spec.sliding_distance : 1.5 * spec.diameter;
-  const long planned = static_cast<long>(std::ceil(distance / (spec.velocity * dt)));
+  const long planned = planned_steps(distance / (spec.velocity * dt), "the sheared junction's slide");
   const long window_start = planned - std::max(planned / 5, spec.record_every);
   // The bonds of the carved sample: a junction that detaches breaks all of
   // its original bonds with the surfaces (§6.3), one that deforms
@@ -145,7 +157,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
     const CheckpointState& st = *checkpoints.from;
     sim.restore_state(st);
     const auto& t = tallies(st, "junction.tallies", 3);
-    step = static_cast<long>(t[0]);
+    step = step_tally(st, "junction.tallies", t[0]);
     out.peak_tangential_force = t[1];
     window_sliding = t[2];
     out.history = samples<JunctionSample>(st, "junction.history");
@@ -193,6 +205,12 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
       out.detached_diameter = c.equivalent_diameter;
     }
   }
+  // A junction slid over resists: no resistance at all is no result (a crushed or torn-apart sample).
+  if (!(out.peak_tangential_force > 0.0) || !std::isfinite(out.peak_tangential_force))
+    throw NumericalError("dem sheared junction", out.steps, "peak tangential force",
+                         fmt::format("{:g}: the top wall met no resistance while sliding over the junction (the "
+                                     "sample did not hold together)",
+                                     out.peak_tangential_force));
   // The verdict: the junction turned into a rolling particle when its
   // particles moved as one rigid body (misfit under a third of the motion)
   // that rolled (at least half the rotation of rolling without slip).

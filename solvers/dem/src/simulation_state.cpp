@@ -1,6 +1,7 @@
 // Checkpoints of a DEM system: its dynamic state as named arrays of doubles
 // (integers and flags are stored exactly: all are far below 2^53).
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -39,19 +40,43 @@ const std::vector<double>& sized(const CheckpointState& in, const std::string& n
   return a;
 }
 
+// A checksum proves a checkpoint's bytes, not that they are a state a run reaches: every restored value is
+// held to what a computed state is (finite positions, velocities, forces; counts whole and within their type),
+// before it is converted.
+[[noreturn]] void refuse(const CheckpointState& in, const std::string& name, const std::string& problem) {
+  throw InputError(fmt::format("{}: DEM state entry '{}' {}: no state a run reaches; the checkpoint was changed or "
+                               "written by another program: delete it to start afresh",
+                               in.origin, name, problem));
+}
+
+const std::vector<double>& finite(const CheckpointState& in, const std::string& name, const std::vector<double>& a) {
+  for (const double v : a)
+    if (!std::isfinite(v)) refuse(in, name, fmt::format("holds {}", v));
+  return a;
+}
+
 void unflatten(const CheckpointState& in, const std::string& name, std::vector<Vec3>& out) {
-  const auto& a = sized(in, name, 3 * out.size());
+  const auto& a = finite(in, name, sized(in, name, 3 * out.size()));
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = {a[3 * i], a[3 * i + 1], a[3 * i + 2]};
+}
+
+// Integers stored as doubles: whole numbers within the type's range, checked before the conversion.
+template <class T>
+T whole(const CheckpointState& in, const std::string& name, double v) {
+  if (!(v == std::floor(v) && v >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+        v <= static_cast<double>(std::numeric_limits<T>::max())))
+    refuse(in, name, fmt::format("holds {:g} where a whole number is stored", v));
+  return static_cast<T>(v);
 }
 
 template <class T>
 void from_doubles(const CheckpointState& in, const std::string& name, std::vector<T>& out) {
   const auto& a = sized(in, name, out.size());
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(a[i]);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = whole<T>(in, name, a[i]);
 }
 
 Vec3 vec(const CheckpointState& in, const std::string& name) {
-  const auto& a = sized(in, name, 3);
+  const auto& a = finite(in, name, sized(in, name, 3));
   return {a[0], a[1], a[2]};
 }
 
@@ -96,13 +121,17 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   offset_.resize(built ? particles + 1 : 0);
   neighbor_.resize(pairs);
   shift_.resize(pairs);
-  history_ = sized(in, prefix + "history", static_cast<std::size_t>(history_size) * pairs);
+  history_ = finite(in, prefix + "history", sized(in, prefix + "history", static_cast<std::size_t>(history_size) * pairs));
   built_at_.resize(in.array(prefix + "built_at").size() / 3);
   from_doubles(in, prefix + "offsets", offset_);
   from_doubles(in, prefix + "neighbors", neighbor_);
   from_doubles(in, prefix + "shifts", shift_);
   unflatten(in, prefix + "built_at", built_at_);
   // A list built without keeping its positions (check_displacement off) saves none.
+  for (std::size_t i = 1; i < offset_.size(); ++i)  // each particle's pairs a run of the list, in order
+    if (offset_[i] < offset_[i - 1] || offset_[i] > pairs)
+      refuse(in, prefix + "offsets", fmt::format("does not grow from 0 to the {} pairs", pairs));
+  if (!offset_.empty() && offset_.front() != 0) refuse(in, prefix + "offsets", "does not start at 0");
   if (built && (offset_.back() != pairs || (!built_at_.empty() && built_at_.size() != particles)))
     throw InputError(fmt::format("{}: the DEM neighbour list in '{}' does not fit {} particles", in.origin, prefix,
                                  particles));
@@ -117,7 +146,8 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
   built_image_.resize(particles);  // images change only at builds
   for (std::size_t i = 0; i < particles; ++i) built_image_[i] = image_low_bytes(p.image[i]);
   half_skin_ = in.scalar(prefix + "half_skin");
-  builds_ = static_cast<long>(in.scalar(prefix + "builds"));
+  if (!(std::isfinite(half_skin_) && half_skin_ >= 0.0)) refuse(in, prefix + "half_skin", fmt::format("holds {}", half_skin_));
+  builds_ = in.count(prefix + "builds", 0.0, 9e15);
   old_offset_.clear();
   old_neighbor_.clear();
   old_shift_.clear();
@@ -197,39 +227,48 @@ void Simulation::restore_state(const CheckpointState& in) {
   unflatten(in, "dem.omega", p.omega);
   unflatten(in, "dem.force", p.force);
   unflatten(in, "dem.torque", p.torque);
-  p.radius = in.array("dem.radius");
+  p.radius = finite(in, "dem.radius", in.array("dem.radius"));
+  for (const double r : p.radius)
+    if (!(r > 0.0)) refuse(in, "dem.radius", fmt::format("holds a radius {:g}", r));
   p.mass = sized(in, "dem.mass", n);
-  p.inv_mass = sized(in, "dem.inv_mass", n);
-  p.inv_inertia = sized(in, "dem.inv_inertia", n);
+  p.inv_mass = finite(in, "dem.inv_mass", sized(in, "dem.inv_mass", n));
+  p.inv_inertia = finite(in, "dem.inv_inertia", sized(in, "dem.inv_inertia", n));
   from_doubles(in, "dem.id", p.id);
   from_doubles(in, "dem.material", p.material);
   from_doubles(in, "dem.body", p.body);
   from_doubles(in, "dem.wall", p.wall);
   const auto& image = sized(in, "dem.image", 3 * n);
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t a = 0; a < 3; ++a) p.image[i][a] = static_cast<std::int32_t>(image[3 * i + a]);
+    for (std::size_t a = 0; a < 3; ++a) p.image[i][a] = whole<std::int32_t>(in, "dem.image", image[3 * i + a]);
 
   box_.lo = vec(in, "dem.box.lo");
   box_.hi = vec(in, "dem.box.hi");
+  if (!(box_.hi.x > box_.lo.x && box_.hi.y > box_.lo.y && box_.hi.z > box_.lo.z))
+    refuse(in, "dem.box.hi", "is not above dem.box.lo");
   const auto& periodic = sized(in, "dem.box.periodic", 3);
   for (std::size_t a = 0; a < 3; ++a) box_.periodic[a] = periodic[a] != 0.0;
 
-  const auto walls = static_cast<std::size_t>(in.scalar("dem.walls"));
+  const auto walls = static_cast<std::size_t>(in.count("dem.walls", 0.0, 1024.0));
   walls_.assign(walls, Wall{});
   for (std::size_t w = 0; w < walls; ++w) {
     Wall& wall = walls_[w];
     const std::string k = fmt::format("dem.wall{}.", w);
     const auto& members = in.array(k + "members");
-    wall.members.assign(members.begin(), members.end());
+    wall.members.clear();
+    for (const double i : members) wall.members.push_back(whole<std::size_t>(in, k + "members", i));
     for (std::size_t i : wall.members)
       if (i >= n) throw InputError(fmt::format("{}: DEM wall {} names particle {} of {}", in.origin, w, i, n));
-    const auto& m = sized(in, k + "motion", 10);
-    wall.motion.kind = static_cast<WallMotion::Kind>(static_cast<int>(m[0]));
+    const auto& m = finite(in, k + "motion", sized(in, k + "motion", 10));
+    const int kind = whole<int>(in, k + "motion", m[0]), axis = whole<int>(in, k + "motion", m[4]),
+              outward = whole<int>(in, k + "motion", m[7]);
+    if (kind < 0 || kind > 2 || axis < 0 || axis > 2 || (outward != 1 && outward != -1))
+      refuse(in, k + "motion", fmt::format("holds a wall motion of kind {}, axis {}, side {}", kind, axis, outward));
+    wall.motion.kind = static_cast<WallMotion::Kind>(kind);
     wall.motion.velocity = {m[1], m[2], m[3]};
-    wall.motion.axis = static_cast<int>(m[4]);
+    wall.motion.axis = axis;
     wall.motion.pressure = m[5];
     wall.motion.area = m[6];
-    wall.motion.outward = static_cast<int>(m[7]);
+    wall.motion.outward = outward;
     wall.motion.mass = m[8];
     wall.motion.damping = m[9];
     wall.mass = in.scalar(k + "mass");
@@ -239,9 +278,12 @@ void Simulation::restore_state(const CheckpointState& in) {
   }
 
   neighbors_.restore(in, "dem.list.", p, law_->history_size());
-  const auto& clock = sized(in, "dem.clock", 6);
-  step_ = static_cast<long>(clock[0]);
-  since_build_ = static_cast<long>(clock[1]);
+  const auto& clock = finite(in, "dem.clock", sized(in, "dem.clock", 6));
+  step_ = whole<long>(in, "dem.clock", clock[0]);
+  since_build_ = whole<long>(in, "dem.clock", clock[1]);
+  if (step_ < 0 || since_build_ < 0 || since_build_ > step_ || clock[2] < 0.0 || !(clock[3] > 0.0))
+    refuse(in, "dem.clock", fmt::format("holds step {}, {} steps since the last build, time {:g}, step {:g}", step_,
+                                        since_build_, clock[2], clock[3]));
   time_ = clock[2];
   dt_ = clock[3];
   global_damping_ = clock[5];

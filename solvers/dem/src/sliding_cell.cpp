@@ -21,12 +21,19 @@ void check(const SlidingCellSpec& s, const char* study) {
   positive(s.d0, "d0");
   positive(s.velocity, "velocity");
   positive(s.time_step, "time step (in Δt_c)");
+  if (!(s.time_step < 1.0)) refuse("time step (in Δt_c)", s.time_step, "(0, 1): the cohesive law's stable step (6.6)");
+  if (!(s.velocity < 1000.0)) refuse("velocity", s.velocity, "(0, 1000) m/s");
   positive(s.sliding_distance, "sliding distance");
   positive(s.box.x, "cell length L");
   positive(s.box.y, "cell depth W");
   positive(s.box.z, "cell height H");
   if (!(s.settle_distance >= 0.0) || !std::isfinite(s.settle_distance)) refuse("settle distance", s.settle_distance, "≥ 0");
-  if (!(s.pressure >= 0.0) || !std::isfinite(s.pressure)) refuse("pressure", s.pressure, "≥ 0");
+  if (!(s.pressure >= 0.0 && s.pressure <= s.material.tensile_strength))
+    refuse("pressure", s.pressure, fmt::format("0 ≤ p ≤ σ_m,N = {:g} (the material's normal strength)",
+                                               s.material.tensile_strength));
+  if (!(s.wall_thickness >= 1.0 && s.wall_thickness <= 10.0)) refuse("wall thickness (in d0)", s.wall_thickness, "1 … 10");
+  if (!(s.relax_tolerance > 0.0 && s.relax_tolerance < 1e-2))
+    refuse("relaxation tolerance", s.relax_tolerance, "(0, 0.01)");
   if (s.largest != 0.0 && !(s.largest >= s.d0)) refuse("largest diameter d_l", s.largest, fmt::format("≥ d0 = {}", s.d0));
   if (!(s.wall_damping >= 0.0 && s.wall_damping <= 1.0)) refuse("wall damping (of critical)", s.wall_damping, "0 ≤ ζ ≤ 1");
   if (s.record_every < 1) refuse("record_every", static_cast<double>(s.record_every), "≥ 1");
@@ -65,8 +72,8 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   sim_ = std::make_unique<Simulation>(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true});
   sim_->set_time_step(dt);
   area_ = size.x * size.y;
-  settle_ = static_cast<long>(std::ceil(spec.settle_distance / (spec.velocity * dt)));
-  slide_ = static_cast<long>(std::ceil(spec.sliding_distance / (spec.velocity * dt)));
+  settle_ = dem::planned_steps(spec.settle_distance / (spec.velocity * dt), "the sliding cell's settling");
+  slide_ = dem::planned_steps(spec.sliding_distance / (spec.velocity * dt), "the sliding cell's slide");
   // The pressed wall's normal motion is damped (a fraction of critical on the
   // stiffness E A0 / H of the cell) to calm its ringing; the particles have
   // no global damping.

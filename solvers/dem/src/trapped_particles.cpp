@@ -122,7 +122,7 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
     const CheckpointState& st = *checkpoints.from;
     cell.simulation().restore_state(st);
     const auto& t = tallies(st, "trapped_particles.tallies", 2);
-    done = static_cast<long>(t[0]);
+    done = step_tally(st, "trapped_particles.tallies", t[0]);
     out.peak_tangential_force = t[1];
     out.history = samples<SlidingSample>(st, "trapped_particles.history");
     const auto window = points(st, "trapped_particles.window_positions");

@@ -88,6 +88,10 @@ Child spawn(const std::vector<std::string>& argv, const fs::path& cwd, const fs:
   if (pid == 0) {
     // lmp (or mpirun, which passes it on to its ranks) ends when wearscale does.
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    // wearscale ignores SIGPIPE (write errors are reported instead); lmp and mpirun get the default back.
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    ::sigaction(SIGPIPE, &default_action, nullptr);
     if (::getppid() == 1) ::_exit(126);
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

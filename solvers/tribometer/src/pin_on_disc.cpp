@@ -1,5 +1,7 @@
 #include "wearscale/tribometer/pin_on_disc.hpp"
 
+#include "wearscale/tribometer/state_bounds.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -311,7 +313,13 @@ long PinOnDisc::total_steps() const {
 
 void PinOnDisc::run(const std::function<void(const PinOnDiscSample&)>& observe) {
   const long steps = total_steps();
-  while (steps_ < steps) observe(step());
+  while (steps_ < steps) {
+    const PinOnDiscSample sample = step();
+    // Each state computed is held to the bounds a restored one is (restore, state_bounds.hpp).
+    if (const std::string problem = state_problem(); !problem.empty())
+      throw NumericalError("pin-on-disc", steps_, "state", problem);
+    observe(sample);
+  }
   PinOnDiscSample last;
   evaluate(s_, last, nullptr, nullptr);
   observe(last);
@@ -366,9 +374,23 @@ void PinOnDisc::restore(const CheckpointState& state) {
                                  "the case has {} pin cells ({}×{}) and {} disc profile values",
                                  state.origin, pin.size(), disc.size(), p.size(), pin_.size(), grid().nx, grid().ny,
                                  disc_.size()));
-  for (const auto* v : {&pin, &disc})
-    for (double x : *v)
-      if (!std::isfinite(x)) throw InputError(fmt::format("{}: a saved surface height is NaN or infinite", state.origin));
+  // A checksum proves the bytes intact, not the state possible: the values pass the bounds a computed state
+  // is held to (state_problem) before any is taken, every count before it becomes an integer.
+  const auto refuse = [&](const std::string& problem) {
+    throw InputError(fmt::format("{}: the pin-on-disc state is no state a run reaches ({}); the checkpoint was "
+                                 "changed or written by another program: delete it to start afresh",
+                                 state.origin, problem));
+  };
+  for (const std::string& problem :
+       {count_problem("steps", state.scalar("steps"), 0.0, static_cast<double>(total_steps())),
+        count_problem("contact solves", state.scalar("solves"), 0.0, 2e9),
+        count_problem("stage_valid", state.scalar("stage_valid"), 0.0, 1.0)})
+    if (!problem.empty()) refuse(problem);
+  if (const std::string problem =
+          state_problem(state.scalar("distance"), state.scalar("pin_wear"), state.scalar("disc_wear"),
+                        state.scalar("friction_integral"), pin, disc, p, state.scalar("contact_gap_shift"));
+      !problem.empty())
+    refuse(problem);
   std::copy(pin.begin(), pin.end(), pin_.begin());
   std::copy(disc.begin(), disc.end(), disc_.begin());
   s_ = state.scalar("distance");
@@ -385,10 +407,47 @@ void PinOnDisc::restore(const CheckpointState& state) {
     const auto& x = state.array("stage_sample");
     if (stage_state_.size() != state_size() || stage_rate_.size() != state_size() || x.size() != 12)
       throw InputError(fmt::format("{}: the saved implicit stage does not fit this case", state.origin));
+    for (const double v : stage_state_)
+      if (!std::isfinite(v)) refuse("a value of the saved implicit stage is NaN or infinite");
+    for (const double v : stage_rate_)
+      if (!std::isfinite(v)) refuse("a rate of the saved implicit stage is NaN or infinite");
+    for (const std::string& problem : {count_problem("stage iterations", x[10], 0.0, 1e9),
+                                       count_problem("stage grooves", x[11], 0.0, static_cast<double>(setup_.grid))})
+      if (!problem.empty()) refuse(problem);
     stage_s_ = x[0];
     stage_sample_ = {x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9], static_cast<int>(x[10]),
                      static_cast<int>(x[11])};
+    if (const std::string problem = sample_problem(stage_sample_, setup_); !problem.empty()) refuse(problem);
+    if (!(std::isfinite(stage_s_) && stage_s_ >= 0.0 && stage_s_ <= setup_.distance * (1.0 + 1e-9)))
+      refuse(fmt::format("the saved stage's distance {:g} m is outside the run's [0, {:g}] m", stage_s_,
+                         setup_.distance));
   }
+}
+
+std::string PinOnDisc::state_problem(double s, double pin_wear, double disc_wear, double friction_integral,
+                                     std::span<const double> pin, std::span<const double> disc,
+                                     std::span<const double> pressure, double gap_shift) const {
+  if (!(std::isfinite(s) && s >= 0.0 && s <= setup_.distance * (1.0 + 1e-9)))  // the last step lands on it
+    return fmt::format("sliding distance s = {:g} m; allowed: within the run's [0, {:g}] m", s, setup_.distance);
+  for (const auto& [name, v] : {std::pair{"pin wear", pin_wear}, std::pair{"disc wear", disc_wear},
+                                std::pair{"friction integral", friction_integral}})
+    if (!(std::isfinite(v) && v >= 0.0)) return fmt::format("{} = {:g}; allowed: finite and ≥ 0", name, v);
+  for (const auto& [name, values] : {std::pair{"pin height", pin}, std::pair{"disc height", disc}})
+    for (const double v : values)
+      if (!std::isfinite(v)) return fmt::format("a {} is {}; allowed: finite", name, v);
+  for (const double v : pressure)
+    if (!(std::isfinite(v) && v >= 0.0)) return fmt::format("a contact pressure is {:g} Pa; allowed: finite and ≥ 0", v);
+  if (!std::isfinite(gap_shift)) return fmt::format("the contact's gap shift is {}; allowed: finite", gap_shift);
+  return {};
+}
+
+std::string PinOnDisc::state_problem() const {
+  if (const std::string problem =
+          count_problem("steps", static_cast<double>(steps_), 0.0, static_cast<double>(total_steps()));
+      !problem.empty())
+    return problem;
+  return state_problem(s_, pin_wear_, disc_wear_, friction_integral_, {pin_.data(), pin_.size()}, disc_,
+                       {contact_.pressure().data(), contact_.pressure().size()}, contact_.warm_gap_shift());
 }
 
 std::vector<double> PinOnDisc::state() const {

@@ -18,7 +18,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 void validate(const RoughWearMapSpec& s) {
   validate(s.surface);
-  if (s.seeds.empty()) throw InputError("rough wear map: seeds is empty; allowed: at least one seed");
+  if (s.seeds.empty() || s.seeds.size() > 1000)
+    throw InputError(fmt::format("rough wear map: {} seeds; allowed: 1 … 1000", s.seeds.size()));
+  if (s.loads.size() > 1000 || s.critical_diameters.size() > 1000)
+    throw InputError(fmt::format("rough wear map: {} p̃_N and {} d*/L values; allowed: at most 1000 each (as the "
+                                 "CLI's n_loads, n_dstar)",
+                                 s.loads.size(), s.critical_diameters.size()));
   if (s.loads.empty() || s.critical_diameters.empty())
     throw InputError("rough wear map: the p̃_N and d*/L axes need at least one value each");
   for (std::size_t k = 0; k < s.loads.size(); ++k)

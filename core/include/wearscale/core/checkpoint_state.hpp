@@ -24,6 +24,10 @@ class CheckpointState {
   const std::vector<double>& array(const std::string& name) const;
   /// An array of exactly one value.
   double scalar(const std::string& name) const;
+  /// A scalar that must be a whole number within [low, high] (a step count, a
+  /// counter), checked before it becomes an integer (NaN or 1e300 convert to
+  /// nothing); InputError naming the entry and the checkpoint otherwise.
+  long count(const std::string& name, double low, double high) const;
   const std::string& text(const std::string& name) const;
 
   const std::map<std::string, std::vector<double>>& arrays() const { return arrays_; }
@@ -35,5 +39,9 @@ class CheckpointState {
   std::map<std::string, std::vector<double>> arrays_;
   std::map<std::string, std::string> texts_;
 };
+
+/// "" if `value` is a whole number within [low, high], else the problem naming
+/// `name` (for counts restored from a checkpoint and the same counts computed).
+std::string count_problem(const std::string& name, double value, double low, double high);
 
 }  // namespace wearscale

@@ -10,6 +10,12 @@ namespace wearscale {
 /// Installs the handlers (once per process; the program calls it in main).
 void install_interrupt_handlers();
 
+/// Ignores SIGPIPE and SIGXFSZ, so that a closed standard output (`wearscale
+/// ... | head`) or the file size limit (`ulimit -f`) is a failed write
+/// (EPIPE, EFBIG) that the checked writes report, exit 2, with the unfinished
+/// files removed, never a death by signal. The program calls it in main.
+void ignore_output_signals();
+
 /// Whether SIGINT or SIGTERM has arrived (or request_interrupt was called).
 bool interrupt_requested();
 /// The signal that arrived (SIGINT, SIGTERM), 0 if none.

@@ -13,8 +13,12 @@
 // mix presented as a result. Without commit() (an error, SIGINT) the staged
 // files are removed.
 //
-// Files in subfolders of `dir` are not part of the set; checkpoints are
-// committed with Commit::Now, outside any set.
+// Files in subfolders of `dir` are not part of the set, except the folders a
+// set owns (own_folder: the runs of a sweep), which the manifest lists under
+// "folders" and which step 3 removes in turn when the next run of the folder
+// does not own them again. Checkpoints are committed with Commit::Now,
+// outside any set. That is the one rule for what a run may remove: only what
+// the previous manifest of the same folder lists (what that run wrote).
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -38,6 +42,16 @@ class OutputSet {
   void commit(nlohmann::json manifest);
 
   const std::filesystem::path& dir() const { return dir_; }
+  /// Makes the subfolder `relative` (one or two plain names: "thickness=1e-06", or
+  /// "hurst=0.6/thickness=1e-06" in a series) part of the set: listed in the
+  /// manifest under "folders", kept by commit; std::invalid_argument for
+  /// another kind of path.
+  void own_folder(const std::filesystem::path& relative);
+
+  /// The subfolders the manifest `manifest` (a summary.json) says its run
+  /// owned: the folders a next run of that folder may remove.
+  static std::vector<std::filesystem::path> owned_folders(const nlohmann::json& manifest);
+
   /// Final paths of the files staged so far.
   std::vector<std::filesystem::path> staged() const;
 
@@ -56,6 +70,7 @@ class OutputSet {
   std::filesystem::path dir_, key_;
   std::string manifest_;
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files_;  // partial, final
+  std::vector<std::filesystem::path> folders_;  // owned subfolders, relative
   bool committed_ = false;
 };
 

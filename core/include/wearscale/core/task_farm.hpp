@@ -33,6 +33,7 @@ struct TaskResult {
   Status status = Status::NotRun;  ///< NotRun: the farm stopped (SIGINT) before it
   std::string text;                ///< Done: what the task returned; Failed: the error message
   bool numerical = false;          ///< Failed by a NumericalError (else by an InputError)
+  bool output = false;             ///< Failed by an OutputError: an output that cannot be written (a full disk)
   int rank = 0;                    ///< the rank that ran it
   int threads = 1;                 ///< the OpenMP threads it ran with
   double seconds = 0.0;            ///< its wall time
@@ -120,11 +121,15 @@ FarmOutcome farm_described(const std::string& kind, const std::vector<std::strin
 /// rank 0 only, whose message says which tasks failed and why.
 class TasksFailed : public std::runtime_error {
  public:
-  TasksFailed(const std::string& message, bool speaks) : std::runtime_error(message), speaks_(speaks) {}
+  /// `output`: a task failed because an output could not be written (a full disk, a read-only folder):
+  /// the job ends as a serial run would, with status 2, not 1.
+  TasksFailed(const std::string& message, bool speaks, bool output = false)
+      : std::runtime_error(message), speaks_(speaks), output_(output) {}
   bool speaks() const { return speaks_; }
+  bool output() const { return output_; }
 
  private:
-  bool speaks_;
+  bool speaks_, output_;
 };
 
 }  // namespace wearscale::mpi

@@ -34,6 +34,12 @@ class Config {
   /// regular file, larger than max_case_file_bytes, or malformed.
   static Config load(const std::filesystem::path& file);
   static constexpr std::uintmax_t max_case_file_bytes = std::uintmax_t{4} << 20;
+  /// Bounds on a case's shape, checked when it is parsed (and on every --set key): tables,
+  /// arrays and inline tables nested at most max_depth deep, every dotted key at most
+  /// max_key_bytes long. A deeper or longer case is no case wearscale reads, and walking
+  /// one costs time that grows with the cube of its depth.
+  static constexpr std::size_t max_depth = 32;
+  static constexpr std::size_t max_key_bytes = 1024;
   /// Parses TOML text; `source` names it in error messages.
   static Config from_string(std::string_view text, std::string source = "<string>");
 
@@ -44,6 +50,12 @@ class Config {
   /// names where the value came from in messages ("--set", or the sweep
   /// value of a case file: "case.toml:12 (sweep.values[1])").
   void override_value(std::string_view assignment, std::string_view origin = "--set");
+
+  /// An independent copy of the whole case (its values, overrides and the keys read so far); a
+  /// copy made by the copy constructor is a view of the same case instead.
+  Config clone() const;
+  /// Removes a key or table (and everything under it) from the case; nothing if it is absent.
+  void erase(std::string_view key);
 
   /// A view of a sub-table; its keys are relative to `key`. An absent table
   /// gives an empty view (every optional getter then returns its fallback).

@@ -36,6 +36,10 @@
 
 namespace wearscale::studies {
 
+/// The most runs one [sweep] may hold (its values times its series values):
+/// every run is checked and held before the first starts.
+inline constexpr std::size_t max_sweep_runs = 10000;
+
 struct RunOptions {
   std::filesystem::path case_file;                ///< empty: no case file (a command's flags give the keys)
   /// The case as TOML text instead of a file (Python's dict or string case): case_file then only
@@ -49,7 +53,9 @@ struct RunOptions {
   std::vector<std::string> overrides;             ///< "KEY=VALUE" from --set (messages name "--set KEY=VALUE")
   std::optional<std::filesystem::path> output_dir;  ///< --out, else [output].dir
   std::optional<std::filesystem::path> resume_dir;  ///< --resume: the output folder of the run to continue
-  std::string task;  ///< --task K/N: only the K-th of N shards of the case's ensemble (its [sweep]); "": all
+  /// --task K/N: only the K-th of N shards of the case's ensemble (its [sweep]); none: all (an empty text
+  /// is refused, as an empty --out or --resume is).
+  std::optional<std::string> task;
 };
 
 struct RunSummary {

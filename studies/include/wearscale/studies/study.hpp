@@ -72,6 +72,10 @@ class Study {
   /// at the start of run() need not override it. Returns the parts it runs,
   /// in order (the scales of a pipeline), for the summary.
   virtual std::vector<std::string> prepare(Config& /*inputs*/) { return {}; }
+  /// The memory prepare() keeps until run() (a topography it read, a grid it
+  /// planned), in bytes: a sweep holds every run prepared before the first
+  /// starts, and checks their sum against the memory limit first.
+  virtual double prepared_bytes() const { return 0.0; }
   /// Computes, writing its outputs into context.output_dir() and reporting its
   /// headline figures and files to `context`. Checks every key before any
   /// work (config.reject_unknown_keys()), when prepare() did not.
@@ -127,6 +131,18 @@ class StudyRegistry {
 
 /// Every study of the build (each registered by its WEARSCALE_STUDY line).
 const StudyRegistry& study_registry();
+
+/// The names the runner keeps for itself in a run's output folder (run.h5,
+/// summary.json, checkpoint.h5, log.txt, tasks, logs, task-K-of-N.json, the
+/// lock): no output a user names may take one of them.
+bool is_reserved_output_name(const std::string& name);
+
+/// The file name a key gives for an output of the study in its folder, checked
+/// before any work: a plain name (no folder, not hidden, not empty), ending in
+/// one of `extensions` (none given: any), not one the runner keeps for itself
+/// (is_reserved_output_name). InputError naming the key and what is allowed.
+std::string output_file_name(const Config& c, const std::string& key, const std::string& fallback,
+                             const std::vector<std::string>& extensions);
 
 /// The study a case runs: [case] study = NAME, else "pipeline" for a case
 /// with [scale.*] tables, else the study named by the case's one top-level

@@ -63,7 +63,8 @@ struct MeanTraction {
 };
 
 struct FrictionalOptions {
-  double tolerance = 1e-10;   ///< on FrictionalResult::error
+  static constexpr double max_tolerance = 1e-3;  ///< as ContactOptions::max_tolerance
+  double tolerance = 1e-10;   ///< on FrictionalResult::error, in (0, max_tolerance]
   int max_iterations = 20000;
   /// Asked once an iteration (if set): true ends the solve with Interrupted,
   /// on every process at the same iteration (as ContactOptions::stop).

@@ -51,7 +51,11 @@ enum class ContactMethod {
 };
 
 struct ContactOptions {
-  double tolerance = 1e-12;   ///< on ε above
+  /// The largest tolerance a solve accepts: above it a solve may stop with the
+  /// contact still penetrating or a pressure nowhere near the answer (0.999999
+  /// ended at iteration 0 with full contact).
+  static constexpr double max_tolerance = 1e-3;
+  double tolerance = 1e-12;   ///< on ε above, in (0, max_tolerance]
   int max_iterations = 10000;
   ContactMethod method = ContactMethod::TwoLevelCG;
   /// Asked once an iteration (if set): true ends the solve with Interrupted,

@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "wearscale/bem/roughness.hpp"
 #include "wearscale/core/field.hpp"
@@ -58,7 +59,33 @@ void rough_spectrum(const RoughSurfaceSpec& spec, std::size_t first, std::size_t
 /// The cap of sphere() on rows [first, first + rows) of `grid` (a slab of it).
 RealField sphere_rows(const Grid2D& grid, std::size_t first, std::size_t rows, double radius, double cx, double cy);
 
-/// generate_surface(spec), then rescaled so that `measure` equals `target`.
+/// The steepest surface a rescaled one may be: an RMS slope h'_RMS of at most
+/// 100 (the BEM assumes small slopes, ≲ 1; beyond 100 the heights are more than
+/// a hundred cells tall per cell and nothing the solvers compute holds).
+inline constexpr double max_hprime_rms = 100.0;
+
+/// The h'_RMS of generate_surface(spec, measure, target), from the target PSD
+/// alone (every mode's amplitude is fixed, only its phase is random): exact for
+/// h'_RMS and h_RMS targets (Parseval), about for Sa (Sa ≈ √(2/π) h_RMS of a
+/// Gaussian surface).
+double predicted_hprime_rms(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target);
+
+/// The bounds of a roughness target, one check for every surface made to
+/// one (files, `surface generate`, `contact.rough`, Python): h'_RMS in
+/// (0, max_hprime_rms], h_RMS and Sa in (0, min(lx, ly)], and the surface's
+/// h'_RMS (predicted_hprime_rms) at most max_hprime_rms. InputError naming the
+/// measure, its value and the largest allowed on this spectrum.
+void check_roughness_target(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target);
+/// What check_roughness_target refuses, without throwing: the problem and what is allowed ("" if none), for a
+/// caller that names its own key.
+struct RoughnessTargetProblem {
+  std::string problem, allowed;
+};
+RoughnessTargetProblem roughness_target_problem(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target);
+
+/// generate_surface(spec), then rescaled so that `measure` equals `target`;
+/// check_roughness_target first, and the rescaled surface's h'_RMS checked
+/// against max_hprime_rms after (an Sa target is only predicted about).
 RealField generate_surface(const RoughSurfaceSpec& spec, RoughnessMeasure measure, double target);
 
 /// Spherical cap of radius R centred at (cx, cy), summit up at height 0:

@@ -54,6 +54,10 @@ struct RadialPsd {
 
 /// Radial average of a PSD made by psd_2d (std::invalid_argument if `psd` is not spectral).
 RadialPsd radial_psd(const RealField& psd);
+/// How many |q| bins radial_psd makes on `grid` (1 + the largest radial wavenumber in units of 2π/lx): it
+/// grows with the aspect ratio lx/ly, so a caller checks it against the memory limit first (24 bytes a bin).
+/// A double: a 4096-point side over 1 nm beside 8 points over a metre asks for about 10^12 bins.
+double radial_psd_bins(const Grid2D& grid);
 
 /// Power law C ∝ q^β fitted on the radial PSD in a band: H = −β/2 − 1 (2D, Fig. 1.3).
 struct HurstFit {

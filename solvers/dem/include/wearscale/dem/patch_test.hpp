@@ -14,6 +14,16 @@
 namespace wearscale::dem {
 
 struct PatchTestSpec {
+  /// The bounds of the sample and its loading, one check for every caller
+  /// (run_patch_test refuses outside them; the CLI's keys are read with them):
+  /// L in [6, 400] d0, W in [1.25, 100] d0 (at least the largest particle; an
+  /// HCP cell is √(8/3) d0), a time step in (0, 1) Δt_c, a strain rate in
+  /// (0, 1e-2), at least 1000 elastic steps.
+  static constexpr double min_length = 6.0, max_length = 400.0;
+  static constexpr double min_width = 1.25, max_width = 100.0;
+  static constexpr double max_strain_rate = 1e-2;
+  static constexpr long min_elastic_steps = 1000;
+
   CohesiveMaterial material;
   double d0 = 0.0;             ///< particle diameter (HCP) or mode of the sizes (amorphous)
   bool amorphous = false;      ///< HCP lattice when false

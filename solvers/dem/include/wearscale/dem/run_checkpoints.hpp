@@ -47,6 +47,21 @@ void put_samples(CheckpointState& st, const std::string& name, const std::vector
   st.put(name, flat);
 }
 
+/// The most steps a DEM run may plan: 10^10 (years of one core at the
+/// thesis' sizes). A distance or time asked for in steps beyond it (a sliding
+/// distance of 1e300 m, a time step of 1e-300 Δt_c) is bad input, refused
+/// before the run, never a loop that does not end.
+inline constexpr double max_planned_steps = 1e10;
+
+/// `steps` (a distance over a step length, rounded up) as a count: InputError naming `what` unless it is
+/// finite and at most max_planned_steps.
+long planned_steps(double steps, const std::string& what);
+
+/// A step count kept among a checkpoint's tallies: a whole number ≥ 0, checked
+/// before it becomes an integer (a NaN or 1e300 step would never end a loop);
+/// InputError naming the entry otherwise.
+long step_tally(const CheckpointState& st, const std::string& name, double value);
+
 /// InputError naming the entry if its length is not a whole number of samples.
 void require_whole(const CheckpointState& st, const std::string& name, std::size_t size, std::size_t per_sample);
 

@@ -87,8 +87,16 @@ struct DeckFiles {
   std::string sample = "sample.txt";              ///< "key value" lines: atoms, box, wall counts, completion
 };
 
+/// Whether `word` may appear in a deck as it is: [A-Za-z0-9._+-] only, not
+/// starting with '-' or '.', at most 200 characters. Every word of a deck that
+/// wearscale did not write itself (file names, the preset) is one; the deck
+/// functions refuse others (std::logic_error), so no input is LAMMPS code.
+bool is_deck_word(const std::string& word);
+
 /// The name of the potential file inside a run folder (the Vashishta copy with
-/// its cutoff in the name, e.g. "SiO.1990.vashishta.rc8").
+/// its cutoff in the name, e.g. "SiO.1990.vashishta.rc8"): the user's file
+/// name when it is a deck word, else that name with every other character
+/// replaced by '_' after "potential_".
 std::string run_potential_name(const ShearTestSpec& spec);
 
 /// The LAMMPS deck of the shear test at normal pressure `pressure` [Pa].

@@ -19,6 +19,8 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "wearscale/bem/normal_contact.hpp"
@@ -116,8 +118,13 @@ class PinOnDisc {
   /// step count, the contact solver's warm start and the rate of the last
   /// implicit stage), bit for bit.
   void save(CheckpointState& state) const;
-  /// Restores a saved state; InputError if it does not fit this setup's grid.
+  /// Restores a saved state; InputError if it does not fit this setup's grid,
+  /// or is no state a run reaches (state_problem: the bounds a computed state is held to).
   void restore(const CheckpointState& state);
+  /// "" if the current state is within the physical bounds of a run of this setup (distance within the run's,
+  /// worn volumes and ∫μ ds ≥ 0, heights and pressures finite, pressures ≥ 0, steps within total_steps()),
+  /// else its first problem. run() checks every step's state; restore() checks a restored one.
+  std::string state_problem() const;
 
   double distance() const { return s_; }
   int contact_solves() const { return solves_; }
@@ -164,6 +171,9 @@ class PinOnDisc {
 
  private:
   struct StageCompliance;
+  std::string state_problem(double s, double pin_wear, double disc_wear, double friction_integral,
+                            std::span<const double> pin, std::span<const double> disc,
+                            std::span<const double> pressure, double gap_shift) const;
   void build_profile(double s);
   void classify(double s, const double* disc, std::vector<char>& layer) const;
   // S itself, not the two-level default: on the pin-on-disc's 32–128 grids the two-level saves no time,
