@@ -1,7 +1,11 @@
 #include "wearscale/wear/rough_wear_map.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -53,40 +57,90 @@ SurfaceWearMap rough_wear_map_surface(const RoughWearMapSpec& spec, std::size_t 
   out.index = index;
   out.count.resize(nl * nd), out.volume.resize(nl * nd), out.largest.resize(nl * nd), out.contact_fraction.resize(nl);
   const double nu = spec.surface.poisson;
-  ShearedJunctions junctions{1.0, 1.0 / (2.0 * (1.0 + nu)), nu, spec.tensile_strength, spec.spot};  // E = 1, σ_j = 1
-  std::vector<std::vector<WearParticle>> found(nd);
+  const ShearedJunctions junctions{1.0, 1.0 / (2.0 * (1.0 + nu)), nu, spec.tensile_strength, spec.spot};  // E = 1, σ_j = 1
+  // One compliance (its kernel tables) for every load of the surface.
+  const auto compliance = std::make_shared<const TangentialCompliance>(Grid2D::square(spec.surface.n, 1.0),
+                                                                       junctions.shear_modulus, nu);
   RoughContactSeries series(spec.surface, spec.seeds[index]);
-  for (std::size_t l = 0; l < nl; ++l) {
-    throw_if_interrupted("rough wear map");
+  // Loads in batches, so that the models of a batch (about 40 bytes a grid
+  // point each) stay within about 2 GiB: every load of the map at n = 512.
+  const double model_bytes = 40.0 * static_cast<double>(spec.surface.n * spec.surface.n);
+  const std::size_t batch = std::clamp<std::size_t>(static_cast<std::size_t>(2.0 * (1 << 30) / model_bytes), 1, nl);
+  std::vector<std::vector<WearParticle>> found(nl * nd);
+  DetachmentOptions opt = spec.options;
+  opt.parallel = false;  // the pixels run in parallel instead
+  std::size_t loads_done = 0;
+  for (std::size_t l0 = 0; l0 < nl; l0 += batch) {
+    const std::size_t l1 = std::min(nl, l0 + batch), nb = l1 - l0;
+    // The contacts walk the loads on one surface (each solve warm-started from the last).
     auto t0 = std::chrono::steady_clock::now();
-    const MicroContactMap map = series.at_load(spec.loads[l]);
-    out.contact_fraction[l] = map.contact_fraction();
-    out.contact_seconds += seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
-    const DetachmentModel model(map, junctions);
-    out.candidates += model.candidates().size();
-    out.setup_seconds += seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
-    DetachmentOptions opt = spec.options;
-    opt.parallel = false;  // the d* values run in parallel instead
-    std::size_t evaluations = 0, solves = 0;
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : evaluations, solves)
-    for (std::size_t d = 0; d < nd; ++d) {
-      const auto r = model.detach(spec.critical_diameters[d], opt);  // lengths in units of L = 1
-      out.count[l * nd + d] = static_cast<double>(r.particles.size());
-      out.volume[l * nd + d] = r.wear_volume;
-      out.largest[l * nd + d] = r.largest_diameter();
-      evaluations += r.energy_evaluations;
-      solves += r.solves;
-      found[d] = r.particles;
+    std::vector<MicroContactMap> maps;
+    for (std::size_t l = l0; l < l1; ++l) {
+      throw_if_interrupted("rough wear map");
+      maps.push_back(series.at_load(spec.loads[l]));
+      out.contact_fraction[l] = maps.back().contact_fraction();
     }
+    out.contact_seconds += seconds_since(t0);
+    // Each load's model (crack stresses, candidates, u of the full loading) on its own thread.
+    t0 = std::chrono::steady_clock::now();
+    std::vector<std::unique_ptr<DetachmentModel>> models(nb);
+    std::exception_ptr failure;  // the first error of a thread, rethrown after its loop
+    std::atomic<bool> failed{false};
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::size_t b = 0; b < nb; ++b) {
+      try {
+        models[b] = std::make_unique<DetachmentModel>(maps[b], junctions, compliance);
+      } catch (...) {
+#pragma omp critical(rough_wear_map_failure)
+        if (!failure) failure = std::current_exception();
+        failed = true;
+      }
+    }
+    if (failed) std::rethrow_exception(failure);
+    for (const auto& m : models) out.candidates += m->candidates().size();
+    out.setup_seconds += seconds_since(t0);
+    // Every pixel of the batch on its own thread, the small d* (most particles) first.
+    t0 = std::chrono::steady_clock::now();
+    std::vector<std::size_t> left(nb, nd);  // pixels of each load still running
+    std::size_t evaluations = 0, solves = 0;
+    const auto pixels = static_cast<long>(nb * nd);
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : evaluations, solves)
+    for (long k = 0; k < pixels; ++k) {
+      const std::size_t d = static_cast<std::size_t>(k) / nb, b = static_cast<std::size_t>(k) % nb, l = l0 + b;
+      try {
+        if (failed || interrupt_requested()) continue;
+        const auto r = models[b]->detach(spec.critical_diameters[d], opt);  // lengths in units of L = 1
+        out.count[l * nd + d] = static_cast<double>(r.particles.size());
+        out.volume[l * nd + d] = r.wear_volume;
+        out.largest[l * nd + d] = r.largest_diameter();
+        evaluations += r.energy_evaluations;
+        solves += r.solves;
+        found[l * nd + d] = r.particles;
+      } catch (...) {
+#pragma omp critical(rough_wear_map_failure)
+        if (!failure) failure = std::current_exception();
+        failed = true;
+      }
+#pragma omp critical(rough_wear_map_progress)
+      if (--left[b] == 0 && !failed) {
+        // Loads are done in about their order; report how many are.
+        std::size_t done = l0;
+        while (done < l1 && left[done - l0] == 0) ++done;
+        if (done > loads_done) {
+          loads_done = done;
+          if (progress) progress(loads_done, nl);
+        }
+      }
+    }
+    if (failed) std::rethrow_exception(failure);
+    throw_if_interrupted("rough wear map");
     out.detach_seconds += seconds_since(t0);
     out.energy_evaluations += evaluations;
     out.solves += solves;
-    for (std::size_t d = 0; d < nd; ++d)
-      for (const auto& p : found[d]) out.particles.push_back({spec.seeds[index], l, d, p.x, p.y, p.diameter});
-    if (progress) progress(l + 1, nl);
   }
+  for (std::size_t l = 0; l < nl; ++l)
+    for (std::size_t d = 0; d < nd; ++d)
+      for (const auto& p : found[l * nd + d]) out.particles.push_back({spec.seeds[index], l, d, p.x, p.y, p.diameter});
   return out;
 }
 

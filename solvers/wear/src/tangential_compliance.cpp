@@ -25,11 +25,29 @@ TangentialCompliance::TangentialCompliance(const Grid2D& grid, double g, double 
     : body_(bem::HalfSpace::from_shear_modulus(checked(grid, g, nu), g, nu, bem::Boundary::Free,
                                                bem::Response::ShearX)) {
   const double h = grid.dx();
-  table_.resize(grid.nx * grid.ny);
+  const std::size_t ny = grid.ny;
+  padded_ny_ = (ny + 7) / 8 * 8;
+  const std::size_t stride = 2 * padded_ny_;
+  table_.assign(grid.nx * stride, 0.0);
 #pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < grid.nx; ++a)
-    for (std::size_t b = 0; b < grid.ny; ++b)
-      table_[a * grid.ny + b] = cell_kernel(static_cast<double>(a), static_cast<double>(b), h, g, nu);
+  for (std::size_t a = 0; a < grid.nx; ++a) {
+    double* row = table_.data() + a * stride + padded_ny_;
+    for (std::size_t b = 0; b < ny; ++b) {
+      const double v = cell_kernel(static_cast<double>(a), static_cast<double>(b), h, g, nu);
+      row[b] = v;
+      row[-static_cast<long>(b)] = v;
+    }
+  }
+  cumulative_.assign((grid.nx + 1) * stride, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < ny; ++b) {
+    long double sum = 0.0L;
+    for (std::size_t a = 0; a <= grid.nx; ++a) {
+      double* row = cumulative_.data() + a * stride + padded_ny_;
+      row[b] = row[-static_cast<long>(b)] = static_cast<double>(sum);
+      if (a < grid.nx) sum += table_[a * stride + padded_ny_ + b];
+    }
+  }
 }
 
 double TangentialCompliance::energy(const RealField& p, const RealField& u) const {

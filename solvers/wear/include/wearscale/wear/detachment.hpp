@@ -59,7 +59,7 @@ enum class EnergyReleaseMethod { Fast, Naive };
 struct DetachmentOptions {
   EnergyReleaseMethod method = EnergyReleaseMethod::Fast;
   bool cumulative = true;
-  bool parallel = true;  ///< OpenMP over candidates (off inside an outer parallel loop over map pixels)
+  bool parallel = true;  ///< OpenMP threads (naive: over candidates; fast: in the sums and FFTs of each step); off inside an outer parallel loop over map pixels
   std::size_t max_solves = 0;  ///< naive only: stop after this many full solves (0: never), to time the baseline
 };
 
@@ -71,9 +71,14 @@ double surface_energy_for(double critical_diameter, const ShearedJunctions& junc
 /// shared by every d*.
 class DetachmentModel {
  public:
-  /// max_cells: largest candidate diameter in cells (0: n/2). InputError unless
+  /// max_cells: largest candidate diameter in cells (0: n). InputError unless
   /// the grid has square cells; see crack_sites for the parameters.
   DetachmentModel(const MicroContactMap& map, const ShearedJunctions& junctions, long max_cells = 0);
+  /// The same with the compliance of the map's grid and the junctions' G and ν
+  /// made once and shared (its kernel tables are the costly part of a model:
+  /// a wear map shares one over all its loads). InputError if it is another's.
+  DetachmentModel(const MicroContactMap& map, const ShearedJunctions& junctions,
+                  std::shared_ptr<const TangentialCompliance> compliance, long max_cells = 0);
   ~DetachmentModel();
 
   const MicroContactMap& map() const { return map_; }
@@ -92,12 +97,13 @@ class DetachmentModel {
   double self_energy(std::size_t candidate, const std::vector<std::uint8_t>& loaded, double loaded_count) const;
   MicroContactMap map_;
   ShearedJunctions junctions_;
-  TangentialCompliance compliance_;
+  std::shared_ptr<const TangentialCompliance> compliance_;
   EnergyRelease release_;
   CrackSites sites_;
   std::vector<Disc> candidates_;
   std::vector<double> contact_count_;             // contact points in each candidate disc
   std::unique_ptr<std::atomic<double>[]> self_;   // self-energies, NaN until computed
+  ColumnSegments cover_;  // the contact's cells by column, for the unloading sums
   RealField u0_;
   double energy_ = 0.0;
 };

@@ -8,7 +8,10 @@
 // depend on the rest of the map. Two evaluators: the fast one (this
 // decomposition, self-energy from the real-space kernel G or a small FFT of
 // the disc's box) and the naive one (a full solve of p − p_C per candidate).
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "wearscale/wear/candidate_particles.hpp"
@@ -17,17 +20,58 @@
 namespace wearscale::wear {
 
 /// Sums of mask·value over the cells of a disc in O(diameter): prefix sums
-/// along x on every row.
+/// along x on every row, stored column after column (building them reads and
+/// writes contiguous memory) in blocks of rows that can be brought up to date
+/// alone: after a change of the mask or values, only the rows of the discs
+/// asked about are summed again.
 class DiscSums {
  public:
   explicit DiscSums(const Grid2D& grid);
-  /// values == nullptr counts the masked cells.
+  /// Sums `mask`·`values` (values == nullptr counts the masked cells) over
+  /// every row. Both are kept by reference for stale() and prepare().
   void build(const std::vector<std::uint8_t>& mask, const RealField* values);
+  /// The mask or values given to build() changed: every row is out of date.
+  void stale();
+  /// Brings the rows of the disc up to date (not thread-safe).
+  void prepare(const Disc& disc);
+  /// Σ over the disc; its rows must be up to date (build() or prepare()). Thread-safe.
   double sum(const Disc& disc) const;
 
  private:
+  static constexpr std::size_t kBlock = 16;  // rows summed together
+  void build_block(std::size_t block);
   Grid2D grid_;
-  std::vector<double> prefix_;  // per row j: nx + 1 prefix sums over x
+  std::vector<double> prefix_;  // (nx + 1) × ny: prefix_[m ny + j] = Σ_{i < m} over row j
+  std::vector<std::uint8_t> fresh_;  // per block of kBlock rows
+  const std::vector<std::uint8_t>* mask_ = nullptr;
+  const RealField* values_ = nullptr;
+};
+
+/// Cells of each column i of a mask (fixed x, contiguous in memory) as
+/// segments [j0, j1) whose ends are multiples of 8 (up to the kernel's padded
+/// ny), joined across gaps of fewer than 8 cells: what the kernel sums of
+/// EnergyRelease::unload() run over. A cover of the mask's cells and of any
+/// mask within it (the cells unloaded since stay inside).
+struct ColumnSegments {
+  ColumnSegments(const Grid2D& grid, const std::vector<std::uint8_t>& mask);
+  std::vector<std::size_t> first;         ///< per column i: its segments are spans[first[i] … first[i + 1])
+  std::vector<std::pair<long, long>> spans;
+  std::size_t cells = 0;                  ///< Σ of the segments' lengths
+};
+
+/// Fields of the grid for one full solve (traction, displacement, the padded
+/// workspace), each made on first use. One per thread.
+class SolveScratch {
+ public:
+  explicit SolveScratch(const TangentialCompliance& compliance) : f_(&compliance) {}
+  RealField& traction();
+  RealField& displacement();
+  TangentialCompliance::Workspace& workspace();
+
+ private:
+  const TangentialCompliance* f_;
+  std::optional<RealField> p_, u_;
+  std::optional<TangentialCompliance::Workspace> w_;
 };
 
 class EnergyRelease {
@@ -54,12 +98,17 @@ class EnergyRelease {
   void traction(const std::vector<std::uint8_t>& loaded, RealField& p) const;
 
   /// Unloads the disc: loaded cells of C → 0 and u ← u − F p_C on the cells
-  /// still loaded (u elsewhere is left stale): a sum over the kernel when C is
-  /// small, one padded solve otherwise. Returns the number of cells unloaded.
-  std::size_t unload(const Disc& disc, std::vector<std::uint8_t>& loaded, RealField& u, RealField& scratch_p,
-                     RealField& scratch_u, TangentialCompliance::Workspace& w) const;
+  /// still loaded (u elsewhere is left stale): sums over the kernel for each
+  /// run of C along x when that is cheaper, one padded solve otherwise.
+  /// Returns the number of cells unloaded.
+  /// `cover`: segments covering the loaded cells (e.g. of the contact before
+  /// any unloading), made from `loaded` if null.
+  std::size_t unload(const Disc& disc, std::vector<std::uint8_t>& loaded, RealField& u, SolveScratch& scratch,
+                     const ColumnSegments* cover = nullptr) const;
 
  private:
+  void subtract_run_sums(const std::vector<std::array<long, 3>>& runs, const ColumnSegments& cover,
+                         std::size_t remaining, RealField& u) const;
   const TangentialCompliance* f_;
   double sigma_j_;
 };

@@ -39,9 +39,21 @@ class TangentialCompliance {
 
   /// G(di, dj): u_x at cell offset (di, dj) per unit p_x on one cell [m/Pa]:
   /// (4.3) integrated over the cell, (1/4πG) Σ_corners ± [2(1−ν) x asinh(y/|x|) + 2 y asinh(x/|y|)].
-  double kernel(long di, long dj) const {
-    const std::size_t a = static_cast<std::size_t>(di < 0 ? -di : di), b = static_cast<std::size_t>(dj < 0 ? -dj : dj);
-    return table_[a * grid().ny + b];
+  double kernel(long di, long dj) const { return kernel_row(di)[dj]; }
+
+  /// Row di of the kernel, centred: row[dj] = G(di, dj) for |dj| < ny, and 0
+  /// for ny ≤ dj < padded_ny() (so that sums over blocks of 8 cells may run
+  /// past the last one).
+  const double* kernel_row(long di) const {
+    return table_.data() + static_cast<std::size_t>(di < 0 ? -di : di) * 2 * padded_ny_ + padded_ny_;
+  }
+  /// ny rounded up to a multiple of 8.
+  std::size_t padded_ny() const { return padded_ny_; }
+  /// Row a = 0 … nx of the kernel summed along x, laid out as kernel_row():
+  /// row[dj] = Σ_{0 ≤ a' < a} G(a', dj), so that a run of cells along x sums
+  /// as the difference of two rows (summed in extended precision, rounded once).
+  const double* cumulative_row(std::size_t a) const {
+    return cumulative_.data() + a * 2 * padded_ny_ + padded_ny_;
   }
 
   /// The cell-integrated kernel at any offset (in cells), for checks.
@@ -54,7 +66,9 @@ class TangentialCompliance {
 
  private:
   bem::HalfSpace body_;        // free boundary, x → x block
-  std::vector<double> table_;  // G(|di|, |dj|), 0 ≤ di < nx, 0 ≤ dj < ny
+  std::size_t padded_ny_ = 0;
+  std::vector<double> table_;  // nx rows of 2 padded_ny: G(|di|, dj) at [|di| 2 padded_ny + padded_ny + dj]
+  std::vector<double> cumulative_;  // nx + 1 rows alike: Σ_{a' < a} G(a', dj)
 };
 
 }  // namespace wearscale::wear
