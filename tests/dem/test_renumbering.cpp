@@ -242,9 +242,10 @@ TEST(NeighborList, RenumberedPairsKeepTheirHistoriesAndSidesSwapReversed) {
   for (std::size_t i = 0; i + 1 < list.offsets().size(); ++i)
     for (std::uint32_t k = list.offsets()[i]; k < list.offsets()[i + 1]; ++k) {
       EXPECT_GE(list.neighbors()[k], i);
-      if (k > list.offsets()[i])
+      if (k > list.offsets()[i]) {
         EXPECT_TRUE(list.neighbors()[k - 1] < list.neighbors()[k] ||
                     (list.neighbors()[k - 1] == list.neighbors()[k] && list.shifts()[k - 1] < list.shifts()[k]));
+      }
     }
   // The particles renumbered the same way: a rebuild carries every history.
   std::vector<std::size_t> order(p.size());

@@ -203,24 +203,30 @@ void Simulation::prepare_pairs() {
       for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) span = std::max<std::size_t>(span, nb[k] - i);
   }
   // Blocks of about equal pair counts (walls' rows have fewer pairs), each
-  // but the last at least `span` rows; up to 32 of them, from 8 on a
-  // multiple of 4 so that two or four threads get whole blocks of each
-  // colour. Not a function of the thread count: the same sums on any.
+  // but the last at least `span` rows; up to 32 of them, a multiple of 4,
+  // so that two or four threads get as many blocks of each colour (with 5,
+  // one of two threads ran two of the three even blocks while the other
+  // waited). When the rows' reach leaves fewer than asked, 4 fewer are cut.
+  // Not a function of the thread count: the same sums on any.
   const std::size_t rows = std::max<std::size_t>(span, 64);
-  std::size_t want = std::min<std::size_t>(32, n / rows);
-  if (want >= 8) want -= want % 4;
+  const std::size_t most = std::min<std::size_t>(32, n / rows);
   block_start_.clear();
-  if (threads > 1 && want >= 2 * static_cast<std::size_t>(threads)) {
+  if (threads > 1 && most >= 4 && most >= 2 * static_cast<std::size_t>(threads)) {
     const std::size_t pairs = off.back();
-    block_start_.push_back(0);
-    for (std::size_t b = 1; b < want; ++b) {
-      const auto target = static_cast<std::uint32_t>(pairs * b / want);
-      auto e = static_cast<std::size_t>(std::lower_bound(off.begin(), off.end(), target) - off.begin());
-      e = std::max(e, block_start_.back() + rows);
-      if (e >= n) break;
-      block_start_.push_back(e);
-    }
-    block_start_.push_back(n);
+    auto cut = [&](std::size_t want) {  // the blocks made
+      block_start_.assign(1, 0);
+      for (std::size_t b = 1; b < want; ++b) {
+        const auto target = static_cast<std::uint32_t>(pairs * b / want);
+        auto e = static_cast<std::size_t>(std::lower_bound(off.begin(), off.end(), target) - off.begin());
+        e = std::max(e, block_start_.back() + rows);
+        if (e >= n) break;
+        block_start_.push_back(e);
+      }
+      block_start_.push_back(n);
+      return block_start_.size() - 1;
+    };
+    std::size_t want = most - most % 4;
+    while (cut(want) != want && want > 4) want -= 4;
     if (block_start_.size() - 1 < 2 * static_cast<std::size_t>(threads)) block_start_.clear();
   }
   const std::size_t buffers = threads > 1 && block_start_.empty() ? static_cast<std::size_t>(threads) : 1;
@@ -293,10 +299,10 @@ void Simulation::forces(bool advance, bool cleared) {
 }
 
 namespace {
-double wall_acceleration(const Wall& w) {
+double wall_acceleration(const Wall& w, const Vec3& velocity) {
   const auto& m = w.motion;
   const double load = -static_cast<double>(m.outward) * m.pressure * m.area;
-  return (w.force[m.axis] + load - m.damping * w.velocity[m.axis]) / w.mass;
+  return (w.force[m.axis] + load - m.damping * velocity[m.axis]) / w.mass;
 }
 }  // namespace
 
@@ -305,7 +311,9 @@ double wall_acceleration(const Wall& w) {
 // first half-kick and drift of the next. Run back to back (the run's steps,
 // when nothing observes between them) they read each particle's force,
 // velocity and masses once and the threads meet once; each part computes
-// the bits it computes alone.
+// the bits it computes alone. The walls' half-kicks (pressed walls) come
+// first, from their forces; their particles move with them in the same
+// pass, each on the thread that integrates its stretch of particles.
 void Simulation::kick(bool second, bool first, bool clear_forces) {
   auto& p = particles_;
   const std::size_t n = p.size();
@@ -314,6 +322,17 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
   bool finite = true;
   const bool clear = first && clear_forces;
   const bool virial = clear && track_virial_;
+  wall_moves_.resize(walls_.size());
+  for (std::size_t wi = 0; wi < walls_.size(); ++wi) {
+    const Wall& w = walls_[wi];
+    Vec3 v = w.velocity;
+    if (w.motion.kind == WallMotion::Kind::Pressure) {
+      if (second) v[w.motion.axis] += half * wall_acceleration(w, v);
+      if (first) v[w.motion.axis] += half * wall_acceleration(w, v);
+    }
+    wall_moves_[wi] = {v, dt_ * v};
+  }
+  const WallMove* moves = wall_moves_.data();
 #pragma omp parallel for schedule(static) reduction(max : max_v2) reduction(&& : finite) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 f = p.force[i], tq = p.torque[i];
@@ -322,7 +341,14 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
       p.torque[i] = {};
       if (virial) virial_[i] = {};
     }
-    if (p.wall[i] != no_wall) continue;
+    if (p.wall[i] != no_wall) {
+      if (first) {  // moves with its wall
+        const WallMove& m = moves[p.wall[i]];
+        p.position[i] += m.dx;
+        p.velocity[i] = m.velocity;
+      }
+      continue;
+    }
     Vec3 v = p.velocity[i], w = p.omega[i];
     if (second) {
       v += (half * p.inv_mass[i]) * f;
@@ -339,8 +365,6 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
     p.omega[i] = w;
   }
   if (second) {
-    for (auto& w : walls_)
-      if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
     if (!finite) {
       std::size_t bad = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -356,17 +380,11 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
     ++step_;
     time_ += dt_;
   }
-  if (!first) return;
   for (std::size_t wi = 0; wi < walls_.size(); ++wi) {
-    Wall& w = walls_[wi];
-    if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
-    const Vec3 dx = dt_ * w.velocity;
-    w.displacement += dx;
-    for (std::size_t i : wall_slots(wi)) {
-      p.position[i] += dx;
-      p.velocity[i] = w.velocity;
-    }
+    walls_[wi].velocity = wall_moves_[wi].velocity;
+    if (first) walls_[wi].displacement += wall_moves_[wi].dx;
   }
+  if (!first) return;
   if (std::sqrt(max_v2) * dt_ > settings_.skin || !std::isfinite(max_v2)) {
     std::size_t worst = 0;
     for (std::size_t i = 0; i < n; ++i)

@@ -71,6 +71,7 @@ class NeighborList {
   static constexpr int max_wraps = 128;
   /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
   void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
+  bool history_of_touching_pairs_only() const { return touching_only_; }
   /// Keep the positions of the last build for moved_beyond_half_skin() (24
   /// bytes a particle); NeighborSettings::check_displacement. Without them
   /// moved_beyond_half_skin() is always true.

@@ -121,6 +121,9 @@ class Simulation {
   }
   /// How many times the particles were renumbered (NeighborSettings::renumber_every).
   long renumberings() const { return renumberings_; }
+  /// Blocks of rows of the threaded pair loop's two colours at the last
+  /// build (pair_loop.hpp; 0: one thread, or per-thread buffers).
+  std::size_t colour_blocks() const { return block_start_.empty() ? 0 : block_start_.size() - 1; }
 
   /// Translational + rotational kinetic energy of the mobile particles.
   double kinetic_energy() const;
@@ -184,6 +187,11 @@ class Simulation {
   NeighborSettings settings_;
   NeighborList neighbors_;
   std::vector<Wall> walls_;
+  // Each wall's velocity after a kick and its displacement in the drift.
+  struct WallMove {
+    Vec3 velocity, dx;
+  };
+  std::vector<WallMove> wall_moves_;
   // Row blocks of the threaded pair loop's two colours (empty: buffers).
   std::vector<std::size_t> block_start_;
   // Per-thread force/torque/virial buffers (threads 1..T-1), only for lists
