@@ -121,6 +121,14 @@ void Hooke(benchmark::State& state) {
 }
 BENCHMARK(Hooke)->Args({20, 200})->Args({40, 50})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The same block renumbered in cell order at every state.range(2)-th build
+// (NeighborSettings::renumber_every; Hooke: never).
+void HookeSorted(benchmark::State& state) {
+  auto sim = make_anchor_block({static_cast<int>(state.range(0)), 10, static_cast<int>(state.range(2))});
+  time_steps(state, sim);
+}
+BENCHMARK(HookeSorted)->Args({20, 200, 1})->Args({20, 200, 10})->Args({40, 50, 10})->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The thesis law on the same block: unit spheres of a cohesive material whose
 // d_c is above the particle size, neighbours at 0.5 % overlap. Numbered as
 // the lattice is built (`Cohesive`), shuffled as a randomly inserted sample

@@ -65,6 +65,10 @@ void require_cohesive_law(const Config& root, const char* study) {
 void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cell) {
   cell.material = dem_material(root);
   read_contact_law(root, cell.law, cell.friction);
+  // [dem] history: "touching" carries tangential histories over neighbour
+  // rebuilds for touching pairs only, as LAMMPS did in the thesis' runs.
+  cell.history_of_touching_pairs_only =
+      root.section("dem").choice_or("history", "kept", {"kept", "touching"}) == "touching";
   cell.d0 = c.number("d0", Range::positive(), units::length);
   cell.largest = c.number_or("largest", 1.25 * cell.d0, Range::at_least(cell.d0), units::length);
   cell.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
@@ -748,7 +752,11 @@ class DemStudy : public Study {
   }
   // The sliding cell of the wear studies (read_sliding_cell, and the dumps).
   static Schema sliding_keys(const std::string& table, const std::string& slide_default) {
-    return {{table + ".d0", "number", "> 0", "m", "", "mode of the particle diameters", "--d0"},
+    return {{"dem.history", "choice", "kept | touching", "", "kept",
+             "tangential histories over neighbour rebuilds: kept for every pair in reach (6.4), or for touching pairs "
+             "only (the thesis' LAMMPS runs)",
+             ""},
+            {table + ".d0", "number", "> 0", "m", "", "mode of the particle diameters", "--d0"},
             {table + ".velocity", "number", "(0, 1000)", "m/s", "10", "sliding velocity of the top wall", "--velocity"},
             {table + ".pressure", "number", "[0, σ_m,N]", "Pa", "5e8", "normal pressure on the top wall", "--pressure"},
             {table + ".sliding_distance", "number", "> 0", "m", slide_default, "sliding distance", "--slide"},

@@ -80,3 +80,20 @@ TEST(DemWearCli, TheContactLawKeyNamesARegisteredLawAndTheStrengthStudiesRefuseH
   EXPECT_THAT(r.err, HasSubstr("cohesive law's strengths"));
   EXPECT_FALSE(fs::exists(work / "bad_law" / "rough_shear_history.csv"));
 }
+
+TEST(DemWearCli, TheHistoryTransferIsKeptOrTouchingOnTheSlidingCellsOnly) {
+  fs::create_directories(work);
+  const std::string rough = "dem rough-shear '" + source + "/cases/dem_rough_shear.toml' --out bad_history";
+  auto r = run_cli(rough + " --set 'dem.history=\"lammps\"'", work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("dem.history"));
+  EXPECT_THAT(r.err, HasSubstr("lammps"));
+  EXPECT_THAT(r.err, HasSubstr("kept"));
+  EXPECT_THAT(r.err, HasSubstr("touching"));
+  // The studies that measure the law's strengths do not read it: an unknown key.
+  r = run_cli("dem patch-test '" + source + "/cases/dem_patch_test.toml' --out bad_history --set 'dem.history=\"touching\"'",
+              work);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_THAT(r.err, HasSubstr("history"));
+  EXPECT_FALSE(fs::exists(work / "bad_history" / "rough_shear_history.csv"));
+}

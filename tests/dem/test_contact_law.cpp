@@ -11,6 +11,7 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/anchor_block.hpp"
 #include "wearscale/dem/contact_law.hpp"
+#include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "pair_setup.hpp"
 
@@ -140,4 +141,28 @@ TEST(ContactLaw, ThreadedPairLoopGivesTheSameBitsOnAnyThreadCountAndOneThreadsFo
     }
   // Rounding, grown over 30 steps (measured 4e-13); one missed pair would be ~0.4.
   EXPECT_LT(worst, 1e-10 * largest);
+}
+
+// A slab five times as long in index as its list reaches gets four blocks,
+// not five: with five, one of two threads ran two of the three even blocks
+// while the other waited (the pair loop's critical path 3/5 of the pairs
+// instead of 1/2).
+TEST(ContactLaw, TwoThreadsGetAsManyBlocksOfEachColour) {
+  HcpLattice lattice{0.995, 20, 20, 6};
+  Particles p;
+  for (const auto& x : lattice.sites()) p.add({x, 0.5, 6.0 / std::numbers::pi, {}, 0, 0});
+  Box box = lattice.box();
+  box.periodic = {true, true, false};
+  Simulation sim(std::move(p), box, HookeLaw{2.0e4, 1.0e4, 50.0, 25.0, 0.5}, NeighborSettings{0.1, 10, false});
+  sim.set_time_step(5e-4);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(2);
+  sim.run(1);
+  omp_set_num_threads(saved);
+  std::size_t reach = 0;
+  const auto& l = sim.neighbor_list();
+  for (std::size_t i = 0; i + 1 < l.offsets().size(); ++i)
+    for (std::uint32_t k = l.offsets()[i]; k < l.offsets()[i + 1]; ++k) reach = std::max<std::size_t>(reach, l.neighbors()[k] - i);
+  ASSERT_EQ(sim.particles().size() / reach, 5u) << "room for five blocks of the list's reach";
+  EXPECT_EQ(sim.colour_blocks(), 4u);
 }

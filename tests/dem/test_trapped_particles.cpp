@@ -68,3 +68,15 @@ TEST(TrappedParticles, RefusesParticlesThatDoNotFitTheCell) {
   spec.diameter = 2 * d0;
   EXPECT_THROW(run_trapped_particles(spec), InputError);
 }
+
+// [dem] history = "touching" (the thesis code's transfer, NeighborSettings)
+// reaches the cell's neighbour list; "kept" (the default) does not set it.
+TEST(TrappedParticles, TheCellTakesTheHistoryTransferItIsGiven) {
+  auto spec = reduced();
+  const auto sample = make_cell_sample(spec.cell);
+  for (bool touching : {false, true}) {
+    spec.cell.history_of_touching_pairs_only = touching;
+    const SlidingCell cell(sample.particles, sample.box, spec.cell);
+    EXPECT_EQ(cell.simulation().neighbor_list().history_of_touching_pairs_only(), touching);
+  }
+}

@@ -39,6 +39,7 @@ Simulation make_anchor_block(const AnchorBlock& spec) {
   }
   HookeLaw law{2.0e4, 1.0e4, 50.0, 25.0, 0.5};
   NeighborSettings neighbors{0.1 * d, spec.rebuild_every, false};
+  neighbors.renumber_every = spec.renumber_every;
   Simulation sim(std::move(p), box, law, neighbors);
   sim.add_wall(std::move(bottom), WallMotion::fixed());
   sim.add_wall(std::move(top), WallMotion::fixed());

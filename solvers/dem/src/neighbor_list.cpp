@@ -521,6 +521,89 @@ void NeighborList::carry_history(const Particles& p, const Box& box, int threads
   history_.resize(stride * new_pairs);
 }
 
+// Pairs placed row by row of the new numbering (a counting sort on the
+// lower new index, the old list's order within a row), each row then
+// sorted by (neighbour, image) as sort_rows() does, carrying the old slot
+// of each pair; the histories are then permuted in place along the cycles
+// of that permutation (no second history array: 24 bytes a pair).
+void NeighborList::renumber(std::span<const std::uint32_t> new_index, const std::function<void(double*)>& reverse) {
+  const std::size_t n = new_index.size();
+  auto follow = [&](auto& per_particle) {  // new[new_index[i]] = old[i]
+    if (per_particle.size() != n) return;
+    auto old = per_particle;
+    for (std::size_t i = 0; i < n; ++i) per_particle[new_index[i]] = old[i];
+  };
+  follow(built_at_);
+  follow(built_image_);
+  if (offset_.size() != n + 1) return;  // no list yet (or of another system): the next build starts afresh
+  const auto stride = static_cast<std::size_t>(history_size_);
+  const std::size_t pairs = neighbor_.size();
+  // The new rows' counts, then their offsets (in the scratch of the old list).
+  old_offset_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t k = offset_[i]; k < offset_[i + 1]; ++k)
+      ++old_offset_[std::min(new_index[i], new_index[neighbor_[k]]) + 1];
+  for (std::size_t i = 0; i < n; ++i) old_offset_[i + 1] += old_offset_[i];
+  old_neighbor_.resize(pairs);
+  old_shift_.resize(pairs);
+  renumber_source_.resize(pairs);
+  {
+    std::vector<std::uint32_t> cursor(old_offset_.begin(), old_offset_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::uint32_t k = offset_[i]; k < offset_[i + 1]; ++k) {
+        const std::uint32_t a = new_index[i], b = new_index[neighbor_[k]];
+        const bool swapped = b < a;
+        const std::uint32_t m = cursor[swapped ? b : a]++;
+        old_neighbor_[m] = swapped ? a : b;
+        old_shift_[m] = swapped ? images_.mirrored(shift_[k]) : shift_[k];
+        renumber_source_[m] = k;
+        if (swapped && stride > 0) reverse(history_.data() + stride * k);
+      }
+  }
+  // Each row by (neighbour, image), the source slots alongside.
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::uint32_t b = old_offset_[r], e = old_offset_[r + 1];
+    for (std::uint32_t k = b + 1; k < e; ++k) {
+      const std::uint32_t j = old_neighbor_[k], src = renumber_source_[k];
+      const std::uint8_t s = old_shift_[k];
+      std::uint32_t m = k;
+      while (m > b && (j < old_neighbor_[m - 1] || (j == old_neighbor_[m - 1] && s < old_shift_[m - 1]))) {
+        old_neighbor_[m] = old_neighbor_[m - 1];
+        old_shift_[m] = old_shift_[m - 1];
+        renumber_source_[m] = renumber_source_[m - 1];
+        --m;
+      }
+      old_neighbor_[m] = j;
+      old_shift_[m] = s;
+      renumber_source_[m] = src;
+    }
+  }
+  // history(new m) = history(old source[m]), cycle by cycle; a slot done is
+  // marked as its own source.
+  if (stride > 0) {
+    double* h = history_.data();
+    std::vector<double> held(stride);
+    for (std::size_t start = 0; start < pairs; ++start) {
+      if (renumber_source_[start] == start) continue;
+      std::copy_n(h + stride * start, stride, held.begin());
+      std::size_t at = start;
+      for (;;) {
+        const std::size_t from = renumber_source_[at];
+        renumber_source_[at] = static_cast<std::uint32_t>(at);
+        if (from == start) {
+          std::copy_n(held.begin(), stride, h + stride * at);
+          break;
+        }
+        std::copy_n(h + stride * from, stride, h + stride * at);
+        at = from;
+      }
+    }
+  }
+  offset_.swap(old_offset_);
+  neighbor_.swap(old_neighbor_);
+  shift_.swap(old_shift_);
+}
+
 bool NeighborList::moved_beyond_half_skin(const Particles& p) const {
   if (built_at_.size() != p.size()) return true;
   const double limit = half_skin_ * half_skin_;

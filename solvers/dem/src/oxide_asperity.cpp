@@ -212,7 +212,9 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   CohesiveLaw law({spec.oxide, spec.substrate});
   if (spec.interface) law.set_interface(0, 1, *spec.interface);
   const BondCriterion bond = BondCriterion::cohesive(law, max_radius);
-  Simulation sim(std::move(p), box, law, NeighborSettings{0.1 * d0, 0, true});
+  NeighborSettings neighbors{0.1 * d0, 0, true};
+  neighbors.renumber_every = spec.renumber_every;
+  Simulation sim(std::move(p), box, law, neighbors);
   const double dt = spec.time_step * sim.law().critical_time_step(sim.particles());
   sim.set_time_step(dt);
   out.time_step = dt;

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 #include <fmt/format.h>
 #include <omp.h>
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
+#include "wearscale/dem/cell_order.hpp"
 
 namespace wearscale::dem {
 
@@ -39,6 +42,7 @@ Simulation::Simulation(Particles particles, Box box, std::unique_ptr<ContactLaw>
 }
 
 int Simulation::add_wall(std::vector<std::size_t> members, WallMotion motion) {
+  in_user_order();
   const auto index = static_cast<int>(walls_.size());
   Wall w;
   w.motion = motion;
@@ -59,6 +63,7 @@ int Simulation::add_wall(std::vector<std::size_t> members, WallMotion motion) {
   }
   for (std::size_t i : w.members) particles_.velocity[i] = w.velocity;
   walls_.push_back(std::move(w));
+  map_walls();
   forces_valid_ = false;
   since_build_ = -1;  // frozen pairs changed: rebuild
   return index;
@@ -71,6 +76,10 @@ void Simulation::set_time_step(double dt) {
 }
 
 void Simulation::reset() {
+  in_user_order();  // the user's numbering from here on, until the next renumbering
+  user_of_.clear();
+  slot_of_.clear();
+  wall_slots_.clear();
   neighbors_.clear();
   forces_valid_ = false;
   since_build_ = -1;
@@ -103,9 +112,81 @@ void Simulation::rebuild() {
                                      "{} allowed): it has missed its contacts on the way; rebuild the list more often "
                                      "or lower the time step",
                                      farthest, NeighborList::max_wraps - 1));
+  if (settings_.renumber_every > 0 && neighbors_.builds() % settings_.renumber_every == 0) renumber();
   neighbors_.build(p, box_, reach(), settings_.skin, law_->history_size());
   prepare_pairs();
   since_build_ = 0;
+}
+
+// Cells of the largest radius (cell_order.hpp: about half the largest
+// diameter numbers best), z, then y, then x, stable within a cell.
+void Simulation::renumber() {
+  const std::size_t n = particles_.size();
+  if (n == 0) return;
+  double max_radius = 0.0;
+  for (double r : particles_.radius) max_radius = std::max(max_radius, r);
+  const auto order = cell_order(particles_.position, max_radius);
+  std::vector<std::uint32_t> from(order.begin(), order.end()), new_index(n);
+  for (std::size_t k = 0; k < n; ++k) new_index[from[k]] = static_cast<std::uint32_t>(k);
+  neighbors_.renumber(new_index, [&](double* h) { law_->reverse_history(h); });
+  in_slots_ = true;  // the arrays are in slot order (the user's, the first time)
+  gather(from);
+  if (user_of_.empty()) {
+    user_of_ = std::move(from);
+  } else {
+    std::vector<std::uint32_t> user(n);
+    for (std::size_t k = 0; k < n; ++k) user[k] = user_of_[from[k]];
+    user_of_.swap(user);
+  }
+  slot_of_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) slot_of_[user_of_[k]] = static_cast<std::uint32_t>(k);
+  map_walls();
+  ++renumberings_;
+}
+
+namespace {
+// v reordered through `scratch`: new[k] = old[from[k]].
+template <class T>
+void reorder_array(std::vector<T>& v, const std::uint32_t* from, std::vector<std::byte>& scratch) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const std::size_t n = v.size();
+  if (scratch.size() < n * sizeof(T)) scratch.resize(n * sizeof(T));
+  std::byte* out = scratch.data();
+  const T* in = v.data();
+#pragma omp parallel for schedule(static) if (n >= 4096)
+  for (std::size_t k = 0; k < n; ++k) std::memcpy(out + k * sizeof(T), in + from[k], sizeof(T));
+  std::memcpy(static_cast<void*>(v.data()), out, n * sizeof(T));
+}
+}  // namespace
+
+void Simulation::gather(const std::vector<std::uint32_t>& from) const {
+  const std::size_t n = particles_.size();
+  particles_.for_each_array([&](auto& v) {
+    if (v.size() == n) reorder_array(v, from.data(), reorder_scratch_);
+  });
+  if (virial_.size() == n) reorder_array(virial_, from.data(), reorder_scratch_);
+}
+
+void Simulation::in_slot_order() const {
+  if (in_slots_ || user_of_.empty()) return;
+  gather(user_of_);  // slot k ← user's user_of_[k]
+  in_slots_ = true;
+}
+
+void Simulation::in_user_order() const {
+  if (!in_slots_) return;
+  gather(slot_of_);  // user's u ← slot slot_of_[u]
+  in_slots_ = false;
+}
+
+void Simulation::map_walls() {
+  wall_slots_.clear();
+  if (user_of_.empty()) return;
+  wall_slots_.resize(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    wall_slots_[w].resize(walls_[w].members.size());
+    for (std::size_t m = 0; m < walls_[w].members.size(); ++m) wall_slots_[w][m] = slot_of_[walls_[w].members[m]];
+  }
 }
 
 void Simulation::prepare_pairs() {
@@ -122,24 +203,30 @@ void Simulation::prepare_pairs() {
       for (std::uint32_t k = off[i]; k < off[i + 1]; ++k) span = std::max<std::size_t>(span, nb[k] - i);
   }
   // Blocks of about equal pair counts (walls' rows have fewer pairs), each
-  // but the last at least `span` rows; up to 32 of them, from 8 on a
-  // multiple of 4 so that two or four threads get whole blocks of each
-  // colour. Not a function of the thread count: the same sums on any.
+  // but the last at least `span` rows; up to 32 of them, a multiple of 4,
+  // so that two or four threads get as many blocks of each colour (with 5,
+  // one of two threads ran two of the three even blocks while the other
+  // waited). When the rows' reach leaves fewer than asked, 4 fewer are cut.
+  // Not a function of the thread count: the same sums on any.
   const std::size_t rows = std::max<std::size_t>(span, 64);
-  std::size_t want = std::min<std::size_t>(32, n / rows);
-  if (want >= 8) want -= want % 4;
+  const std::size_t most = std::min<std::size_t>(32, n / rows);
   block_start_.clear();
-  if (threads > 1 && want >= 2 * static_cast<std::size_t>(threads)) {
+  if (threads > 1 && most >= 4 && most >= 2 * static_cast<std::size_t>(threads)) {
     const std::size_t pairs = off.back();
-    block_start_.push_back(0);
-    for (std::size_t b = 1; b < want; ++b) {
-      const auto target = static_cast<std::uint32_t>(pairs * b / want);
-      auto e = static_cast<std::size_t>(std::lower_bound(off.begin(), off.end(), target) - off.begin());
-      e = std::max(e, block_start_.back() + rows);
-      if (e >= n) break;
-      block_start_.push_back(e);
-    }
-    block_start_.push_back(n);
+    auto cut = [&](std::size_t want) {  // the blocks made
+      block_start_.assign(1, 0);
+      for (std::size_t b = 1; b < want; ++b) {
+        const auto target = static_cast<std::uint32_t>(pairs * b / want);
+        auto e = static_cast<std::size_t>(std::lower_bound(off.begin(), off.end(), target) - off.begin());
+        e = std::max(e, block_start_.back() + rows);
+        if (e >= n) break;
+        block_start_.push_back(e);
+      }
+      block_start_.push_back(n);
+      return block_start_.size() - 1;
+    };
+    std::size_t want = most - most % 4;
+    while (cut(want) != want && want > 4) want -= 4;
     if (block_start_.size() - 1 < 2 * static_cast<std::size_t>(threads)) block_start_.clear();
   }
   const std::size_t buffers = threads > 1 && block_start_.empty() ? static_cast<std::size_t>(threads) : 1;
@@ -155,7 +242,10 @@ void Simulation::prepare_pairs() {
   law_->prepare(particles_, neighbors_);
 }
 
-void Simulation::compute_forces() { forces(false); }
+void Simulation::compute_forces() {
+  const SlotOrder order(*this);
+  forces(false);
+}
 
 void Simulation::forces(bool advance, bool cleared) {
   if (since_build_ < 0 || neighbors_.offsets().size() != particles_.size() + 1) rebuild();
@@ -200,18 +290,19 @@ void Simulation::forces(bool advance, bool cleared) {
   if (global_damping_ > 0.0)
     for (std::size_t i = 0; i < n; ++i)
       if (p.wall[i] == no_wall) p.force[i] -= global_damping_ * p.velocity[i];
-  for (auto& wall : walls_) {
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    Wall& wall = walls_[w];
     wall.force = {};
-    for (std::size_t i : wall.members) wall.force += p.force[i];
+    for (std::size_t i : wall_slots(w)) wall.force += p.force[i];
   }
   forces_valid_ = true;
 }
 
 namespace {
-double wall_acceleration(const Wall& w) {
+double wall_acceleration(const Wall& w, const Vec3& velocity) {
   const auto& m = w.motion;
   const double load = -static_cast<double>(m.outward) * m.pressure * m.area;
-  return (w.force[m.axis] + load - m.damping * w.velocity[m.axis]) / w.mass;
+  return (w.force[m.axis] + load - m.damping * velocity[m.axis]) / w.mass;
 }
 }  // namespace
 
@@ -220,7 +311,9 @@ double wall_acceleration(const Wall& w) {
 // first half-kick and drift of the next. Run back to back (the run's steps,
 // when nothing observes between them) they read each particle's force,
 // velocity and masses once and the threads meet once; each part computes
-// the bits it computes alone.
+// the bits it computes alone. The walls' half-kicks (pressed walls) come
+// first, from their forces; their particles move with them in the same
+// pass, each on the thread that integrates its stretch of particles.
 void Simulation::kick(bool second, bool first, bool clear_forces) {
   auto& p = particles_;
   const std::size_t n = p.size();
@@ -229,6 +322,17 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
   bool finite = true;
   const bool clear = first && clear_forces;
   const bool virial = clear && track_virial_;
+  wall_moves_.resize(walls_.size());
+  for (std::size_t wi = 0; wi < walls_.size(); ++wi) {
+    const Wall& w = walls_[wi];
+    Vec3 v = w.velocity;
+    if (w.motion.kind == WallMotion::Kind::Pressure) {
+      if (second) v[w.motion.axis] += half * wall_acceleration(w, v);
+      if (first) v[w.motion.axis] += half * wall_acceleration(w, v);
+    }
+    wall_moves_[wi] = {v, dt_ * v};
+  }
+  const WallMove* moves = wall_moves_.data();
 #pragma omp parallel for schedule(static) reduction(max : max_v2) reduction(&& : finite) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 f = p.force[i], tq = p.torque[i];
@@ -237,7 +341,14 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
       p.torque[i] = {};
       if (virial) virial_[i] = {};
     }
-    if (p.wall[i] != no_wall) continue;
+    if (p.wall[i] != no_wall) {
+      if (first) {  // moves with its wall
+        const WallMove& m = moves[p.wall[i]];
+        p.position[i] += m.dx;
+        p.velocity[i] = m.velocity;
+      }
+      continue;
+    }
     Vec3 v = p.velocity[i], w = p.omega[i];
     if (second) {
       v += (half * p.inv_mass[i]) * f;
@@ -254,8 +365,6 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
     p.omega[i] = w;
   }
   if (second) {
-    for (auto& w : walls_)
-      if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
     if (!finite) {
       std::size_t bad = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -266,21 +375,16 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
       throw NumericalError("dem", step_ + 1, fmt::format("velocity of particle {}", p.id[bad]),
                            fmt::format("became NaN or infinite; the time step {:.3g} is likely too large (0.1 Δt_c "
                                        "= √(2m/k_N)/10 = {:.3g} here)",
-                                       dt_, stable_time_step()));
+                                       dt_, 0.1 * law_->critical_time_step(p)));
     }
     ++step_;
     time_ += dt_;
   }
-  if (!first) return;
-  for (auto& w : walls_) {
-    if (w.motion.kind == WallMotion::Kind::Pressure) w.velocity[w.motion.axis] += half * wall_acceleration(w);
-    const Vec3 dx = dt_ * w.velocity;
-    w.displacement += dx;
-    for (std::size_t i : w.members) {
-      p.position[i] += dx;
-      p.velocity[i] = w.velocity;
-    }
+  for (std::size_t wi = 0; wi < walls_.size(); ++wi) {
+    walls_[wi].velocity = wall_moves_[wi].velocity;
+    if (first) walls_[wi].displacement += wall_moves_[wi].dx;
   }
+  if (!first) return;
   if (std::sqrt(max_v2) * dt_ > settings_.skin || !std::isfinite(max_v2)) {
     std::size_t worst = 0;
     for (std::size_t i = 0; i < n; ++i)
@@ -289,7 +393,7 @@ void Simulation::kick(bool second, bool first, bool clear_forces) {
         "dem", step_ + 1, fmt::format("velocity of particle {}", p.id[worst]),
         fmt::format("it moved {:.3g} in one step of {:.3g}, more than the neighbour skin {:.3g}; the "
                     "time step is unstable (keep it a fraction of Δt_c = √(2m/k_N): 0.1 Δt_c = {:.3g} here)",
-                    std::sqrt(max_v2) * dt_, dt_, settings_.skin, stable_time_step()));
+                    std::sqrt(max_v2) * dt_, dt_, settings_.skin, 0.1 * law_->critical_time_step(p)));
   }
 }
 
@@ -313,6 +417,7 @@ void Simulation::finish_step_forces() {
 }
 
 void Simulation::step() {
+  const SlotOrder order(*this);
   start_step();
   kick(false, true, clears_forces_in_kick());
   finish_step_forces();
@@ -338,8 +443,10 @@ void Simulation::run(long steps, const std::function<void(long)>& observe, StopI
   // Between two steps that nobody observes, the second half-kick of one and
   // the first of the next are one pass (kick); the call's last step ends
   // with its own, so the state between calls is the same.
+  const SlotOrder order(*this);
   bool kicked = false;  // this step's first half-kick is done
   for (long s = 0; s < steps; ++s) {
+    in_slot_order();  // an observer may have asked for the user's
     if (!kicked) {
       if (stops_before(s)) throw_if_interrupted(fmt::format("dem (step {})", step_));
       start_step();
@@ -357,9 +464,13 @@ void Simulation::run(long steps, const std::function<void(long)>& observe, StopI
   }
 }
 
-double Simulation::stable_time_step() const { return 0.1 * law_->critical_time_step(particles_); }
+double Simulation::stable_time_step() const {
+  in_user_order();
+  return 0.1 * law_->critical_time_step(particles_);
+}
 
 double Simulation::kinetic_energy() const {
+  in_user_order();  // summed in the user's order: the same bits renumbered or not
   const auto& p = particles_;
   double e = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -371,6 +482,7 @@ double Simulation::kinetic_energy() const {
 }
 
 double Simulation::potential_energy() const {
+  const SlotOrder order(*this);  // the list's numbering
   const auto& p = particles_;
   const auto& off = neighbors_.offsets();
   const auto& nb = neighbors_.neighbors();
@@ -392,6 +504,7 @@ double Simulation::potential_energy() const {
 }
 
 Vec3 Simulation::momentum() const {
+  in_user_order();
   Vec3 m{};
   for (std::size_t i = 0; i < particles_.size(); ++i) m += particles_.mass[i] * particles_.velocity[i];
   return m;

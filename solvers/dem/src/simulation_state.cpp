@@ -15,7 +15,11 @@ namespace {
 
 // Format 2 adds the reach of the periodic images the neighbour list's shift
 // indices refer to (lists of thin periodic cells meet several images);
-// format 1 is read as its 27 nearest images.
+// format 1 is read as its 27 nearest images. Format 3 (a renumbered system)
+// adds the numbering of the neighbour list: the particles are stored in the
+// user's order, the list in the system's own ("dem.order": the user's
+// particle in each slot); a system never renumbered still writes format 2.
+constexpr const char* kFormat3 = "wearscale-dem-state-3";
 constexpr const char* kFormat = "wearscale-dem-state-2";
 constexpr const char* kFormat1 = "wearscale-dem-state-1";
 
@@ -155,8 +159,10 @@ void NeighborList::restore(const CheckpointState& in, const std::string& prefix,
 }
 
 void Simulation::save_state(CheckpointState& out) const {
+  in_user_order();
   const Particles& p = particles_;
-  out.put_text("dem.format", kFormat);
+  out.put_text("dem.format", user_of_.empty() ? kFormat : kFormat3);
+  if (!user_of_.empty()) out.put("dem.order", as_doubles(user_of_));
   out.put("dem.position", flatten(p.position));
   out.put("dem.velocity", flatten(p.velocity));
   out.put("dem.omega", flatten(p.omega));
@@ -207,9 +213,11 @@ void Simulation::save_state(CheckpointState& out) const {
 }
 
 void Simulation::restore_state(const CheckpointState& in) {
-  if (!in.has("dem.format") || (in.text("dem.format") != kFormat && in.text("dem.format") != kFormat1))
-    throw InputError(fmt::format("{}: not a DEM state of this version (expected format '{}' or '{}')", in.origin,
-                                 kFormat, kFormat1));
+  if (!in.has("dem.format") ||
+      (in.text("dem.format") != kFormat3 && in.text("dem.format") != kFormat && in.text("dem.format") != kFormat1))
+    throw InputError(fmt::format("{}: not a DEM state of this version (expected format '{}', '{}' or '{}')", in.origin,
+                                 kFormat3, kFormat, kFormat1));
+  in_user_order();
   const std::size_t n = in.array("dem.radius").size();
   Particles& p = particles_;
   // A state of as many particles as this set-up must be of the same
@@ -277,6 +285,32 @@ void Simulation::restore_state(const CheckpointState& in) {
     wall.displacement = vec(in, k + "displacement");
   }
 
+  // The list's numbering: the user's particle in each slot, a permutation.
+  user_of_.clear();
+  slot_of_.clear();
+  if (in.text("dem.format") == kFormat3) {
+    const auto& order = sized(in, "dem.order", n);
+    slot_of_.assign(n, static_cast<std::uint32_t>(n));
+    user_of_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double u = order[k];
+      if (!(u >= 0.0 && u < static_cast<double>(n)) || u != std::floor(u) || slot_of_[static_cast<std::size_t>(u)] != n)
+        throw InputError(fmt::format("{}: DEM state entry 'dem.order' is not a numbering of its {} particles", in.origin,
+                                     n));
+      user_of_[k] = static_cast<std::uint32_t>(u);
+      slot_of_[static_cast<std::size_t>(u)] = static_cast<std::uint32_t>(k);
+    }
+  }
+  map_walls();
+  if (track_virial_) {
+    virial_.assign(n, SymTensor{});
+    if (in.has("dem.virial")) {
+      const auto& v = sized(in, "dem.virial", 6 * n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t c = 0; c < 6; ++c) virial_[i][c] = v[6 * i + c];
+    }
+  }
+  const SlotOrder slots(*this);  // the list, its images and per-pair parameters in the list's numbering
   neighbors_.restore(in, "dem.list.", p, law_->history_size());
   const auto& clock = finite(in, "dem.clock", sized(in, "dem.clock", 6));
   step_ = whole<long>(in, "dem.clock", clock[0]);
@@ -293,14 +327,6 @@ void Simulation::restore_state(const CheckpointState& in) {
   } else {
     prepare_pairs();  // per-pair parameters and thread buffers for the restored list
     forces_valid_ = clock[4] != 0.0;
-  }
-  if (track_virial_) {
-    virial_.assign(n, SymTensor{});
-    if (in.has("dem.virial")) {
-      const auto& v = sized(in, "dem.virial", 6 * n);
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t c = 0; c < 6; ++c) virial_[i][c] = v[6 * i + c];
-    }
   }
 }
 

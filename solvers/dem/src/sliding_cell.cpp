@@ -69,7 +69,7 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   auto law = make_contact_law(spec.law, {{spec.material}, spec.d0, spec.friction});
   const double dt = spec.time_step * law->critical_time_step(particles);
   bond_ = BondCriterion::cohesive(CohesiveLaw({spec.material}), max_radius);
-  sim_ = std::make_unique<Simulation>(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true});
+  sim_ = std::make_unique<Simulation>(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true, spec.history_of_touching_pairs_only});
   sim_->set_time_step(dt);
   area_ = size.x * size.y;
   settle_ = dem::planned_steps(spec.settle_distance / (spec.velocity * dt), "the sliding cell's settling");

@@ -12,6 +12,9 @@ namespace wearscale::dem {
 struct AnchorBlock {
   int cells = 20;           ///< n: N = 4 n³ spheres
   int rebuild_every = 10;   ///< neighbour list rebuilt every this many steps, no check
+  /// Particles renumbered in cell order every this many builds (0: never;
+  /// NeighborSettings::renumber_every). The decks keep the lattice's order.
+  int renumber_every = 0;
 };
 
 /// The deck's system, ready to run (walls frozen and fixed).

@@ -67,6 +67,13 @@ class ContactLaw {
   /// Doubles of history stored per pair (kept over rebuilds, wraps and
   /// checkpoints by the neighbour list).
   virtual int history_size() const { return 3; }
+  /// The history of pair (j, i) from that of (i, j), in place (when the
+  /// particles are renumbered and a pair changes sides). By default every
+  /// double is negated: a relative displacement of i from j, as the
+  /// tangential springs of both laws here (and LAMMPS' fix neigh/history).
+  virtual void reverse_history(double* history) const {
+    for (int c = 0; c < history_size(); ++c) history[c] = -history[c];
+  }
   /// The longest separation beyond contact at which a pair still interacts,
   /// for particles of radius ≤ max_radius (0: contact only).
   virtual double pull_off_distance(double max_radius) const = 0;

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,6 +35,12 @@ struct NeighborSettings {
   /// depend on a numerical parameter. A compatibility switch, to reproduce
   /// the thesis' runs (bench/dem/thesis_lammps/README.md); off by default.
   bool history_of_touching_pairs_only = false;
+  /// Renumber the particles in cell order (cell_order.hpp) at the first
+  /// build and then at every this many builds (0: never), the pairs and
+  /// their histories with them, so that a system whose particles flow keeps
+  /// its pairs close in index (Simulation: the user's numbering is kept
+  /// outside its calls).
+  int renumber_every = 0;
 };
 
 class NeighborList {
@@ -51,10 +58,20 @@ class NeighborList {
   /// `history_size` doubles of history per pair (the contact law's); the
   /// histories are carried over only between builds of the same size.
   void build(const Particles& p, const Box& box, double reach, double skin, int history_size = 3);
+  /// The particles were renumbered, old i becoming new_index[i] (a
+  /// permutation of the list's particles): every pair moves to the row of
+  /// its lower new index, and when its two particles swapped sides it takes
+  /// the mirrored image and its history goes through `reverse` (the history
+  /// of (j, i) from that of (i, j)); the rows are sorted as a build sorts
+  /// them, and the positions and images of the last build follow their
+  /// particles. The next build then carries the histories over as after any
+  /// other build.
+  void renumber(std::span<const std::uint32_t> new_index, const std::function<void(double*)>& reverse);
   /// The periods a particle may be wrapped by between two builds, exclusive.
   static constexpr int max_wraps = 128;
   /// NeighborSettings::history_of_touching_pairs_only, for the next builds.
   void set_history_of_touching_pairs_only(bool on) { touching_only_ = on; }
+  bool history_of_touching_pairs_only() const { return touching_only_; }
   /// Keep the positions of the last build for moved_beyond_half_skin() (24
   /// bytes a particle); NeighborSettings::check_displacement. Without them
   /// moved_beyond_half_skin() is always true.
@@ -140,6 +157,8 @@ class NeighborList {
     std::span<const Pair> others_found() const { return {other.data(), others}; }
   };
   std::vector<Stream> streams_;
+  // Scratch of renumber(): the old pair at each new slot.
+  std::vector<std::uint32_t> renumber_source_;
   CellGrid grid_;
   std::vector<float> sorted_radius_;  // the radii in the grid's cell order (half-stencil grids)
   std::vector<Vec3> built_at_;

@@ -60,6 +60,9 @@ struct OxideAsperitySpec {
   std::uint64_t seed = 1;
   double relax_tolerance = 1e-4;  ///< of the amorphous SiO2 (§6.2.2), in E
   long max_relax_steps = 20000;
+  /// Particles renumbered along the cells every this many neighbour builds
+  /// (NeighborSettings::renumber_every; 0: never).
+  int renumber_every = 0;
 };
 
 /// InputError naming the quantity, its value and the allowed range.

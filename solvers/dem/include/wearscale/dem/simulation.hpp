@@ -1,6 +1,15 @@
 #pragma once
 // A DEM system and its time integration: particles in a box, a force law,
 // walls, a neighbour list, and velocity Verlet with rotations (6.1).
+//
+// With NeighborSettings::renumber_every the system renumbers its particles
+// in cell order at neighbour builds, inside its calls: outside them (and
+// through particles() and virial() anywhere) the particles are in the order
+// they were handed in, the walls' members are those indices, and every
+// index a user holds keeps its particle. Inside an observer of run(),
+// particles() restores that order (a pass over the particles; the walls and
+// the clock need none), so a reference to the particles taken before run()
+// is read there only after a call of particles().
 #include <array>
 #include <concepts>
 #include <cstddef>
@@ -30,8 +39,14 @@ class Simulation {
   Simulation(Simulation&&) noexcept = default;
   Simulation& operator=(Simulation&&) noexcept = default;
 
-  Particles& particles() { return particles_; }
-  const Particles& particles() const { return particles_; }
+  Particles& particles() {
+    in_user_order();
+    return particles_;
+  }
+  const Particles& particles() const {
+    in_user_order();
+    return particles_;
+  }
   Box& box() { return box_; }
   const Box& box() const { return box_; }
   /// The contact law. Changing its parameters is allowed between steps
@@ -100,7 +115,15 @@ class Simulation {
   void restore_state(const CheckpointState& in);
 
   /// Per-particle virial W_i = ½ Σ_j r_ij ⊗ f_ij (only with set_track_virial).
-  const std::vector<SymTensor>& virial() const { return virial_; }
+  const std::vector<SymTensor>& virial() const {
+    in_user_order();
+    return virial_;
+  }
+  /// How many times the particles were renumbered (NeighborSettings::renumber_every).
+  long renumberings() const { return renumberings_; }
+  /// Blocks of rows of the threaded pair loop's two colours at the last
+  /// build (pair_loop.hpp; 0: one thread, or per-thread buffers).
+  std::size_t colour_blocks() const { return block_start_.empty() ? 0 : block_start_.size() - 1; }
 
   /// Translational + rotational kinetic energy of the mobile particles.
   double kinetic_energy() const;
@@ -132,20 +155,58 @@ class Simulation {
   /// After the first half-kick: the list rebuilt if due, the step's forces.
   void finish_step_forces();
   void rebuild();
+  /// The particles (and their pairs) renumbered in cell order.
+  void renumber();
+  /// The arrays in the system's own numbering (a no-op unless renumbered),
+  /// or in the user's; walls' members in slots (wall_slots_) either way.
+  void in_slot_order() const;
+  void in_user_order() const;
+  /// The arrays reordered: new[k] = old[from[k]].
+  void gather(const std::vector<std::uint32_t>& from) const;
+  const std::vector<std::size_t>& wall_slots(std::size_t w) const {
+    return user_of_.empty() ? walls_[w].members : wall_slots_[w];
+  }
+  void map_walls();
+  /// In the system's own numbering for the scope of a call, the user's after.
+  class SlotOrder {
+   public:
+    explicit SlotOrder(const Simulation& s) : sim_(s) { sim_.in_slot_order(); }
+    ~SlotOrder() { sim_.in_user_order(); }
+    SlotOrder(const SlotOrder&) = delete;
+    SlotOrder& operator=(const SlotOrder&) = delete;
 
-  Particles particles_;
+   private:
+    const Simulation& sim_;
+  };
+
+  // mutable: the order the arrays are held in is not the system's state
+  // (in_user_order from the const accessors).
+  mutable Particles particles_;
   Box box_;
   std::unique_ptr<ContactLaw> law_;
   NeighborSettings settings_;
   NeighborList neighbors_;
   std::vector<Wall> walls_;
+  // Each wall's velocity after a kick and its displacement in the drift.
+  struct WallMove {
+    Vec3 velocity, dx;
+  };
+  std::vector<WallMove> wall_moves_;
   // Row blocks of the threaded pair loop's two colours (empty: buffers).
   std::vector<std::size_t> block_start_;
   // Per-thread force/torque/virial buffers (threads 1..T-1), only for lists
   // that reach too far in index for the colour blocks.
   std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
   std::vector<std::vector<SymTensor>> thread_virial_;
-  std::vector<SymTensor> virial_;
+  mutable std::vector<SymTensor> virial_;
+  // Renumbering: slot k holds the user's particle user_of_[k], user's u sits
+  // in slot slot_of_[u] (both empty: never renumbered); in_slots_, the
+  // arrays are in slot order now. wall_slots_: the walls' members as slots.
+  std::vector<std::uint32_t> user_of_, slot_of_;
+  mutable bool in_slots_ = false;
+  std::vector<std::vector<std::size_t>> wall_slots_;
+  mutable std::vector<std::byte> reorder_scratch_;
+  long renumberings_ = 0;
   std::array<Vec3, PeriodicImages::max_count> shift_table_{};  // offsets of the list's images
   double dt_ = 0.0;
   double global_damping_ = 0.0;

@@ -30,6 +30,10 @@ struct SlidingCellSpec {
   /// bonds either way) and its Coulomb μ where it has one.
   std::string law = "cohesive";
   double friction = 0.5;
+  /// Tangential histories carried over neighbour rebuilds for touching pairs
+  /// only, as LAMMPS did in the thesis' runs (NeighborSettings); by default
+  /// every pair within reach keeps its history, as (6.4) defines it.
+  bool history_of_touching_pairs_only = false;
   double d0 = 0.0;                ///< mode of the particle diameters
   double largest = 0.0;           ///< d_l (0: 1.25 d0; §6.2.3 fixes it across discretizations)
   Vec3 box{};                     ///< L (sliding, periodic) × W (periodic depth) × H (normal)
