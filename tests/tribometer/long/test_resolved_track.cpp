@@ -1,7 +1,9 @@
 // The resolved wear track converged in its step (n = 32, 62.5 µm cells; 1 µm
 // of oxide through the transition, 0.06 m): the adaptive integrator, whose
 // steps are at most one cell, against the explicit stepping at a quarter of a
-// cell a step. Long: about 4 000 contact solves each.
+// cell a step (measured: μ_mean, both worn volumes and the substrate distance
+// within 0.07 %; μ_final, over the last 5 %, 0.7 %). Long: 960-3 841 contact
+// solves a run, three runs.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -39,7 +41,7 @@ TEST(ResolvedTrack, OnAnOxideTheAdaptiveIntegratorAgreesWithTheExplicitStepAtAQu
     RecordProperty(std::string("solves_") + name, o.solves);
   }
   EXPECT_NEAR(adaptive.mu_mean, quarter.mu_mean, 2e-3 * quarter.mu_mean);
-  EXPECT_NEAR(adaptive.pin, quarter.pin, 1e-2 * quarter.pin);
-  EXPECT_NEAR(adaptive.disc, quarter.disc, 1e-2 * quarter.disc);
+  EXPECT_NEAR(adaptive.pin, quarter.pin, 2e-3 * quarter.pin);
+  EXPECT_NEAR(adaptive.disc, quarter.disc, 2e-3 * quarter.disc);
   EXPECT_NEAR(adaptive.reached, quarter.reached, 2e-3 * quarter.reached);
 }
