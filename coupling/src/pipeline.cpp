@@ -76,6 +76,12 @@ bool Pipeline::farms_ensembles() const {
   return false;
 }
 
+double Pipeline::estimated_cost() const {
+  double cost = 0.0;
+  for (const auto& n : nodes_) cost += n.scale->estimated_cost();
+  return cost;
+}
+
 void Pipeline::run(Exchange& exchange, RunContext& context) {
   if (!ordered_) order();
   for (auto& n : nodes_) {

@@ -78,6 +78,7 @@ class PipelineStudy final : public Study {
   // nano/dem): rank 0 runs the pipeline, the other ranks serve its ensembles.
   bool distributed() const override { return pipeline_.farms_ensembles(); }
   bool has_ensembles() const override { return pipeline_.farms_ensembles(); }
+  double estimated_cost() const override { return pipeline_.estimated_cost(); }
   void run_other_rank(const Config& /*inputs*/) override { mpi::serve_ensembles(); }
 
   void run(const Config& /*inputs*/, RunContext& context) override {

@@ -18,6 +18,7 @@
 #include <fmt/ranges.h>
 
 #include "wearscale/core/atomic_file.hpp"
+#include "wearscale/core/costliest_first.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/interrupt.hpp"
@@ -941,7 +942,13 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     pool.caller_omp_too = true;
     pool.stop = [] { return interrupt_requested(); };
     std::vector<double> seconds(mine.size(), 0.0);
-    run_on_workers(mine.size(), pool, [&](std::size_t t) {
+    // With several workers the costliest runs start first (the rest fill in at
+    // the end); one worker runs them in the order given (nothing to balance).
+    std::vector<double> costs;
+    for (const auto k : mine) costs.push_back(workers > 1 ? runs[k].study->estimated_cost() : 0.0);
+    const auto order = costliest_first(costs);
+    run_on_workers(mine.size(), pool, [&](std::size_t slot) {
+      const std::size_t t = order[slot];
       const auto start = std::chrono::steady_clock::now();
       try {
         execute(runs[mine[t]], options, false, &command);

@@ -312,7 +312,7 @@ TEST(UnusualInput, ASweepOverAStringKeyWritesTheValuesAsText) {
 TEST(UnusualInput, ALongTimeStepCoversExactlyTheDistanceAskedFor) {
   const auto dir = work / "long-step";
   const auto r = run_cli("run '" + pin_on_disc + "' --set scale.macro.grid=32 --set 'scale.macro.time_step=\"10 s\"' "
-                         "--set scale.macro.distance=0.5 --out out --json",
+                         "--set scale.macro.distance=0.5 --set scale.macro.integrator=explicit --out out --json",
                          dir);
   ASSERT_EQ(r.status, 0) << r.err;
   const auto results = nlohmann::json::parse(r.out)["results"];

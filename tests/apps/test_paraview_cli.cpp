@@ -168,7 +168,9 @@ TEST(ParaViewCli, WearMapsOpenWithTheirFirstAxisAlongX) {
 // `out`: the time steps of its fields.xdmf, each checked against run.h5.
 std::vector<std::pair<double, std::vector<std::string>>> snapshot_run(const std::string& sets, const std::string& out) {
   const std::string pin_on_disc = "'" + std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_on_disc_si_oxide.toml'";
-  const auto r = run_cli("run " + pin_on_disc + " --set scale.macro.grid=32" + sets + " --out " + out, work);
+  const auto r = run_cli("run " + pin_on_disc + " --set scale.macro.grid=32 --set scale.macro.integrator=explicit" + sets +
+                             " --out " + out,
+                         work);
   EXPECT_EQ(r.status, 0) << r.err;
   if (r.status != 0) return {};
   return expect_xdmf_time_series(work / out / "fields.xdmf", work / out / "run.h5", {32, 32});

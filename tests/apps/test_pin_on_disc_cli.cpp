@@ -85,8 +85,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadKey{"steps_per_period", "--set scale.macro.adaptive.steps_per_period=2",
                "scale.macro.adaptive.steps_per_period", "2", "allowed: integer [4, 10000]"},
         BadKey{"rtol", "--set scale.macro.adaptive.rtol=0", "scale.macro.adaptive.rtol", "0", "allowed: (0, 1)"},
-        BadKey{"resolved_adaptive", "--set scale.macro.track=resolved --set scale.macro.integrator=adaptive",
-               "scale.macro.integrator", "\"adaptive\"", "\"explicit\" with track = \"resolved\""},
         BadKey{"resolved_period", "--set scale.macro.track=resolved --set scale.macro.nonplanarity.period=0.05",
                "scale.macro.nonplanarity.period", "0.05", "once per revolution"},
         BadKey{"series_key", "--set sweep.key=scale.macro.grid --set 'sweep.values=[32]' "

@@ -36,7 +36,8 @@ const std::string pin_on_disc = std::string(WEARSCALE_SOURCE_DIR) + "/cases/pin_
 // About 2000 explicit steps on a 64² grid: a second or two, long enough to be
 // killed mid-way. FFTW's estimate planning makes separate processes compute alike.
 const std::string reduced =
-    " --set scale.macro.grid=64 --set scale.macro.distance=0.3 --set run.fft_planning=estimate";
+    " --set scale.macro.grid=64 --set scale.macro.distance=0.3 --set run.fft_planning=estimate"
+    " --set scale.macro.integrator=explicit";
 
 /// Starts the program in the background (the returned pid is the program's own).
 pid_t spawn_cli(const std::string& args, const fs::path& cwd) {

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "wearscale/io/shipped_data.hpp"
+#include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 #include "thesis_pin_on_disc.hpp"
@@ -85,6 +86,24 @@ TEST(Nonplanarity, ThePhysicalReadingLeavesFinalFrictionOneGrooveAndTheWearAsThe
   EXPECT_NEAR(tilted.wear, planar.wear, 0.05 * planar.wear);
 }
 
+TEST(Nonplanarity, UnderThePhysicalReadingTheAdaptiveIntegratorMatchesTheConvergedExplicitStepping) {
+  // 2 µm of oxide, a slope of 0.02 turning once per 0.05 m: μ_mean, μ_final
+  // (the last period), both worn volumes and the distance at which the
+  // substrate is reached within 0.1 % of the explicit stepping at a quarter
+  // of the thesis step (halving that moves none of them by more than 0.02 %).
+  const auto setup = disc(2e-6, 0.02, LayerTest::Disc);
+  auto converged = setup;
+  converged.time_step /= 4.0;
+  const auto e = test_support::run_outcome(converged, false), a = test_support::run_outcome(setup, true);
+  EXPECT_NEAR(a.mu_mean, e.mu_mean, 1e-3 * e.mu_mean);
+  EXPECT_NEAR(a.mu_final, e.mu_final, 1e-3 * e.mu_final);
+  EXPECT_NEAR(a.pin, e.pin, 1e-3 * e.pin);
+  EXPECT_NEAR(a.disc, e.disc, 1e-3 * e.disc);
+  EXPECT_NEAR(a.reached, e.reached, 1e-3 * e.reached);
+  RecordProperty("adaptive_solves", a.solves);
+  RecordProperty("explicit_solves", e.solves);
+}
+
 TEST(ResolvedTrack, APlanarDiscWithoutLayerSlidesAtMu0AndWearsAsTheAveragedTrack) {
   // Bare Si: the two tracks differ only in where the disc's wear goes.
   auto setup = disc(0.0, 0.0, LayerTest::Disc, 32, 0.05);
@@ -109,4 +128,24 @@ TEST(ResolvedTrack, APlanarDiscWithoutLayerSlidesAtMu0AndWearsAsTheAveragedTrack
   EXPECT_NEAR(volume, end.disc_wear, 1e-9 * end.disc_wear);
   EXPECT_EQ(model.disc_profile().size(), 32 * setup.track_cells());
   EXPECT_EQ(setup.track_cells(), 100u);  // 6.28 mm / 62.5 µm
+}
+
+TEST(ResolvedTrack, TheExplicitStepIsBoundedSoThePinMovesAtMostOneCell) {
+  // n = 32 on 2 mm: 62.5 µm cells. The thesis step (8 mm/s × 0.02 s = 0.16 mm)
+  // is cut to one cell; a step shorter than a cell is kept.
+  auto setup = disc(1e-6, 0.0, LayerTest::Disc, 32, 0.01);
+  setup.track = Track::Resolved;
+  const double cell = setup.size / 32;
+  EXPECT_TRUE(setup.step_bounded());
+  EXPECT_DOUBLE_EQ(setup.explicit_step(), cell);
+  PinOnDisc model(setup);
+  EXPECT_EQ(model.total_steps(), static_cast<long>(std::ceil(0.01 / cell - 1e-9)));
+  model.step();
+  EXPECT_NEAR(model.distance(), cell, 1e-15);
+  setup.time_step = 0.005;  // 40 µm
+  EXPECT_FALSE(setup.step_bounded());
+  EXPECT_DOUBLE_EQ(setup.explicit_step(), 0.04e-3);
+  setup.track = Track::Averaged;
+  setup.time_step = 0.02;
+  EXPECT_FALSE(setup.step_bounded());  // the averaged track keeps the thesis step
 }

@@ -220,6 +220,9 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
   const std::size_t n = h_.size();
   double* p = p_.data();
   const double *u = u_.data(), *t = t_.data(), *h = h_.data();
+  // The re-admission stiffness: per point (readmit_field_) or one value (stride 0).
+  const double* stiffness = readmit_field_.empty() ? &readmit_stiffness_ : readmit_field_.data();
+  const std::size_t stride = readmit_field_.empty() ? 0 : 1;
   const double alpha = state.alpha;
   double overlap = 0.0, new_sum = 0.0;
 #pragma omp parallel for simd reduction(+ : overlap, new_sum) schedule(static)
@@ -227,7 +230,7 @@ void NormalContact::descend(double tau, double g_mean, double p0, int iteration,
     const double descended = p[k] > 0.0 ? std::max(alpha * p[k] - tau * t[k], 0.0) : 0.0;
     const double g = u[k] - h[k] - g_mean;
     const bool readmit = descended == 0.0 && g < 0.0;
-    const double pk = readmit ? -tau * readmit_stiffness_ * g : descended;
+    const double pk = readmit ? -tau * stiffness[k * stride] * g : descended;
     overlap += readmit ? 1.0 : 0.0;
     p[k] = pk;
     new_sum += pk;
@@ -328,7 +331,12 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
   const bool preconditioned = opt.method != ContactMethod::PolonskyKeer;
   const bool two_level = opt.method == ContactMethod::TwoLevelCG;
   if (preconditioned && !(z_.grid() == h_.grid())) z_ = RealField(h_.grid());
+  // The added compliance's own preconditioner of K + A, when it has one.
+  const bool own = preconditioned && added_ != nullptr && added_->has_preconditioner();
   readmit_stiffness_ = preconditioned ? body_->stiffness_diagonal() : 1.0;
+  readmit_field_ = own ? added_->precondition_diagonal() : std::span<const double>();
+  if (!readmit_field_.empty() && readmit_field_.size() != p_.size())
+    throw std::logic_error("NormalContact: the added compliance's preconditioner diagonal is not one value a point");
   double first_error = 0.0;
   for (int it = 0; it < opt.max_iterations; ++it) {
     body_->displacement(p_, u_, state.alpha);  // u = K (α p)
@@ -355,7 +363,9 @@ ContactResult NormalContact::solve(double p0, const ContactOptions& opt) {
       return r;
     }
     if (preconditioned) {
-      if (two_level)
+      if (own)
+        added_->precondition(gap_, z_);  // z = M r ≈ (K + A)⁻¹ r
+      else if (two_level)
         body_->two_level_stiffness(gap_, z_);  // z = M r ≈ S r
       else
         body_->stiffness(gap_, z_);  // z = S r

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "stage_compliance.hpp"
+#include "track_stage_compliance.hpp"
 #include "wear_share.hpp"
 #include "wearscale/core/errors.hpp"
 
@@ -49,6 +50,7 @@ void PinOnDiscSetup::validate() const {
   require(nonplanar_slope >= 0.0 && nonplanar_slope < 0.2, "nonplanarity.slope", nonplanar_slope, "[0, 0.2)");
   require(nonplanar_period > 0.0 && std::isfinite(nonplanar_period), "nonplanarity.period", nonplanar_period, "> 0 m");
   require(tolerance > 0.0 && tolerance < 1e-3, "tolerance", tolerance, "(0, 1e-3)");
+  require(stage_tolerance > 0.0 && stage_tolerance < 1e-3, "stage_tolerance", stage_tolerance, "(0, 1e-3)");
   require(max_iterations >= 1, "max_iterations", max_iterations, "≥ 1");
   if (track == Track::Resolved)
     require(static_cast<double>(grid) * path_length / size <= 1e6, "path_length", path_length,
@@ -70,6 +72,15 @@ std::size_t PinOnDiscSetup::track_cells() const {
 double PinOnDiscSetup::tilt_period() const {
   return track == Track::Resolved ? static_cast<double>(track_cells()) * size / static_cast<double>(grid)
                                   : nonplanar_period;
+}
+
+double PinOnDiscSetup::explicit_step() const {
+  const double step = velocity * time_step;
+  return step_bounded() ? size / static_cast<double>(grid) : step;
+}
+
+bool PinOnDiscSetup::step_bounded() const {
+  return track == Track::Resolved && velocity * time_step > size / static_cast<double>(grid);
 }
 
 PinOnDisc::~PinOnDisc() = default;
@@ -117,7 +128,7 @@ void PinOnDisc::build_profile(double s) {
 void PinOnDisc::classify(double s, const double* disc, std::vector<char>& layer) const {
   const Grid2D& g = grid();
   const double h = setup_.layer_thickness;
-  const bool tilted = setup_.layer_test == LayerTest::Tilted && setup_.nonplanar_slope > 0.0;
+  const bool tilted = setup_.tilt_in_layer_test();
   const double theta = 2.0 * std::numbers::pi * s / setup_.tilt_period();
   const double tx = tilted ? setup_.nonplanar_slope * std::cos(theta) : 0.0;
   const double ty = tilted ? setup_.nonplanar_slope * std::sin(theta) : 0.0;
@@ -164,7 +175,8 @@ int PinOnDisc::count_grooves(const double* disc) const {
   return grooves;
 }
 
-bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::ContactMethod method) {
+bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::ContactMethod method,
+                                            double tolerance) {
   const Grid2D& g = grid();
   for (std::size_t k = 0; k < profile_.size(); ++k)
     if (!std::isfinite(profile_[k]))
@@ -174,13 +186,15 @@ bem::ContactResult PinOnDisc::solve_contact(double s, int max_iterations, bem::C
   contact_.set_surface(profile_);
   bem::ContactResult r;
   try {
-    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(), {setup_.tolerance, max_iterations, method});
+    r = contact_.solve_mean_pressure(setup_.normal_load / g.area(),
+                                     {tolerance > 0.0 ? tolerance : setup_.tolerance, max_iterations, method});
   } catch (const NumericalError& e) {
     contact_.set_added_compliance(nullptr);
     throw NumericalError(kModel, solves_, fmt::format("contact at s = {:g} m", s),
                          fmt::format("{} at iteration {}: {}: {}", e.solver(), e.step(), e.quantity(), e.detail()));
   }
   ++solves_;
+  iterations_ += r.iterations;
   // The window must hold the whole contact: pressure on its border means the
   // pin (or its worn flat) is wider than the window, and the periodic
   // half-space then sees overlapping copies of it.
@@ -286,10 +300,26 @@ void PinOnDisc::deposit_swept(double s0, double s1) {
   }
 }
 
+// The strip cells under the window wear at the rate of the cell above them
+// (split between the two nearest strip cells as the window reads them).
+void PinOnDisc::spread_on_track(double s, double* strip_rate) const {
+  const Grid2D& g = grid();
+  std::fill(strip_rate, strip_rate + disc_.size(), 0.0);
+  const double at0 = s / g.dx(), base = std::floor(at0), f = at0 - base;
+  const auto first = static_cast<std::size_t>(std::fmod(base, static_cast<double>(track_)));
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t j = 0; j < g.ny; ++j) {
+      const std::size_t m = (first + j) % track_;
+      const double rate = disc_rate_[g.index(i, j)];
+      strip_rate[i * track_ + m] -= (1.0 - f) * rate;
+      strip_rate[i * track_ + (m + 1) % track_] -= f * rate;
+    }
+}
+
 PinOnDiscSample PinOnDisc::step() {
   PinOnDiscSample sample;
   evaluate(s_, sample, &pin_rate_, &disc_rate_);
-  double ds = setup_.velocity * setup_.time_step;  // dh = rate · v dt (9.23)
+  double ds = setup_.explicit_step();  // dh = rate · v dt (9.23)
   if (const double rest = setup_.distance - s_; rest > 0.0 && rest < ds * (1.0 - 1e-9)) ds = rest;  // lands on the distance
   for (std::size_t k = 0; k < pin_rate_.size(); ++k) pin_[k] += pin_rate_[k] * ds;
   if (track_ == 0) {
@@ -307,7 +337,7 @@ PinOnDiscSample PinOnDisc::step() {
 }
 
 long PinOnDisc::total_steps() const {
-  const double ds = setup_.velocity * setup_.time_step;
+  const double ds = setup_.explicit_step();
   return static_cast<long>(std::ceil(setup_.distance / ds - 1e-9));
 }
 
@@ -351,6 +381,7 @@ void PinOnDisc::save(CheckpointState& state) const {
   state.put("friction_integral", friction_integral_);
   state.put("steps", static_cast<double>(steps_));
   state.put("solves", static_cast<double>(solves_));
+  state.put("contact_iterations", static_cast<double>(iterations_));
   state.put("contact_pressure", std::span<const double>(contact_.pressure().data(), contact_.pressure().size()));
   state.put("contact_gap_shift", contact_.warm_gap_shift());
   state.put("stage_valid", stage_valid_ ? 1.0 : 0.0);
@@ -399,6 +430,7 @@ void PinOnDisc::restore(const CheckpointState& state) {
   friction_integral_ = state.scalar("friction_integral");
   steps_ = static_cast<long>(state.scalar("steps"));
   solves_ = static_cast<int>(state.scalar("solves"));
+  iterations_ = state.has("contact_iterations") ? static_cast<long>(state.scalar("contact_iterations")) : 0;
   contact_.set_warm_start(p, state.scalar("contact_gap_shift"));
   stage_valid_ = state.scalar("stage_valid") != 0.0;
   if (stage_valid_) {
@@ -500,19 +532,7 @@ void PinOnDisc::derivative(double s, const double* y, double* dyds, PinOnDiscSam
   if (track_ == 0) {
     for (std::size_t i = 0; i < nd; ++i) dyds[np + i] = -disc_rate_[i];
   } else {
-    // The strip cells under the window wear at the rate of the cell above
-    // them (split between the two nearest strip cells as the window reads them).
-    std::fill(dyds + np, dyds + np + nd, 0.0);
-    const Grid2D& g = grid();
-    const double at0 = s / g.dx(), base = std::floor(at0), f = at0 - base;
-    const auto first = static_cast<std::size_t>(std::fmod(base, static_cast<double>(track_)));
-    for (std::size_t i = 0; i < g.nx; ++i)
-      for (std::size_t j = 0; j < g.ny; ++j) {
-        const std::size_t m = (first + j) % track_;
-        const double rate = disc_rate_[g.index(i, j)];
-        dyds[np + i * track_ + m] -= (1.0 - f) * rate;
-        dyds[np + i * track_ + (m + 1) % track_] -= f * rate;
-      }
+    spread_on_track(s, dyds + np);
   }
   dyds[np + nd] = last_pin_volume_rate_;
   dyds[np + nd + 1] = last_disc_volume_rate_;

@@ -23,6 +23,8 @@ class Pipeline {
 
   /// A scale farms ensembles over the ranks of an mpirun job (Scale::farms_ensembles).
   bool farms_ensembles() const;
+  /// The sum of its scales' Scale::estimated_cost().
+  double estimated_cost() const;
 
   /// Runs every scale in order; checks each provided what it declared.
   void run(Exchange& exchange, RunContext& context);

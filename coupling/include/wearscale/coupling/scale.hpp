@@ -24,6 +24,10 @@ class Scale {
   /// (mpi::farm_described); a pipeline with such a scale runs on rank 0 while
   /// the other ranks serve it.
   virtual bool farms_ensembles() const { return false; }
+  /// The work of run() in some unit common to the backends (about a BEM solve
+  /// on a 128² grid), from its keys alone: what a sweep orders its runs by,
+  /// the costliest first. 0: negligible or not known.
+  virtual double estimated_cost() const { return 0.0; }
 };
 
 /// What a backend factory receives. A backend reads all its keys in its

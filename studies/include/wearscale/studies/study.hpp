@@ -94,6 +94,11 @@ class Study {
   /// a shard (--task K/N) splits, and whose finished tasks a resumed run keeps.
   virtual bool has_ensembles() const { return false; }
 
+  /// After prepare(): an estimate of the run's work (see coupling::Scale::
+  /// estimated_cost; 0: not known), by which a sweep starts its runs, the
+  /// costliest first.
+  virtual double estimated_cost() const { return 0.0; }
+
   /// What a sweep over this study adds besides its table (plots of the
   /// runs' curves), given each run's folder and label; returns the files written.
   struct SweepRuns {

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "wearscale/bem/half_space.hpp"
@@ -31,9 +32,10 @@ namespace wearscale::bem {
 /// A linear compliance added to the half-space's, symmetric and positive
 /// semi-definite: the surface then moves by u = K p + A p. An implicit wear
 /// step is one (wearing in proportion to the pressure over a step lowers a
-/// surface as a compliance would); A = 0 is the plain contact. Both methods
-/// take it: the preconditioner S stays the half-space's inverse (still SPD,
-/// so the conjugate directions still converge, more slowly the more A
+/// surface as a compliance would); A = 0 is the plain contact. Every method
+/// takes it. The preconditioned ones use the compliance's own preconditioner
+/// of K + A when it has one (precondition()), else the half-space's S (still
+/// SPD, so the conjugate directions still converge, more slowly the more A
 /// dominates K).
 class AddedCompliance {
  public:
@@ -42,6 +44,17 @@ class AddedCompliance {
   virtual void add(const RealField& p, double scale, RealField& u) const = 0;
   /// t · A t
   virtual double quadratic_form(const RealField& t) const = 0;
+  /// Whether it has a preconditioner M of K + A (false, the default: the solver uses the half-space's S).
+  virtual bool has_preconditioner() const { return false; }
+  /// z = M r, M a symmetric positive definite approximation of (K + A)⁻¹, allocating nothing.
+  virtual void precondition(const RealField& /*r*/, RealField& /*z*/) const {
+    throw std::logic_error("AddedCompliance::precondition: this compliance has no preconditioner");
+  }
+  /// M at offset 0, per point of the grid [Pa/m]: the pressure per unit gap
+  /// a penetrating point is re-admitted with (as S(0) is for S; a compliance
+  /// that differs from point to point needs it per point, or the contact set
+  /// overshoots where A is large).
+  virtual std::span<const double> precondition_diagonal() const { return {}; }
 };
 
 enum class ContactMethod {
@@ -187,6 +200,7 @@ class NormalContact {
   // The pressure a penetrating point is re-admitted with, per unit gap and step:
   // 1 (Polonsky–Keer) or S at offset 0 (preconditioned) [Pa/m].
   double readmit_stiffness_ = 1.0;
+  std::span<const double> readmit_field_;  // per point, when the added compliance's preconditioner gives it
   double e_star_, h_rms_ = 1.0, h_max_ = 0.0;
   double gap_shift_ = 0.0;  // running estimate of the mean gap on the contact
   std::vector<double> history_;

@@ -58,7 +58,13 @@ struct PinOnDiscSetup {
   double nonplanar_period = 0.05;   ///< its rotation period in sliding distance [m] (resolved track: L_path)
   LayerTest layer_test = LayerTest::Disc;
   Track track = Track::Averaged;
-  double tolerance = 1e-10;         ///< BEM orthogonality error
+  double tolerance = 1e-10;         ///< BEM orthogonality error (explicit steps, and the adaptive integrator's rates)
+  /// BEM orthogonality error of an implicit stage's solve (adaptive integrator):
+  /// ε h_rms ≈ 1e-12 m of gap on the contact at 1e-8, 1e-4 of the heights' tolerance
+  double stage_tolerance = 1e-8;
+  /// Whether an implicit stage's solve is preconditioned by the stage's own
+  /// (K(0) + A)⁻¹ (true), or unpreconditioned (Polonsky–Keer), for comparison.
+  bool stage_preconditioner = true;
   int max_iterations = 20000;       ///< BEM iterations of a solve (of an implicit stage: at most 3000, then a shorter step)
   bem::Boundary boundary = bem::Boundary::Periodic;  ///< of the BEM cell: periodic images, or an isolated pin (free)
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
@@ -73,6 +79,16 @@ struct PinOnDiscSetup {
   std::size_t track_cells() const;
   /// The rotation period of the tilt: nonplanar_period, or the track's length when resolved.
   double tilt_period() const;
+  /// The sliding distance of an explicit step: v·time_step, but on a resolved
+  /// track at most one cell (size/grid): the pin moves at most one cell a step,
+  /// the step below which the resolved track converges (docs/pin_on_disc.md).
+  double explicit_step() const;
+  /// Whether that bound shortens the step (v·time_step is longer than a cell on a resolved track).
+  bool step_bounded() const;
+  /// Whether the tilt enters the test of the material (layer_test = Tilted
+  /// with a slope): the material then changes with the tilt's turn, not only
+  /// with the wear.
+  bool tilt_in_layer_test() const { return layer_test == LayerTest::Tilted && nonplanar_slope > 0.0; }
 };
 
 /// The state after a step, and what happened during it.
@@ -128,6 +144,8 @@ class PinOnDisc {
 
   double distance() const { return s_; }
   int contact_solves() const { return solves_; }
+  /// BEM iterations of those solves, in all.
+  long contact_iterations() const { return iterations_; }
   /// Pin and disc surface heights (z_pin over the grid; z_disc per x column
   /// (averaged track) or over the track's nx × track_cells() strip (resolved)).
   const RealField& pin_surface() const { return pin_; }
@@ -156,7 +174,8 @@ class PinOnDisc {
   /// Solves the implicit stage z = a + γ f(s, z) exactly, in one contact
   /// solve: wearing by γ p/p_crit over the stage acts as a compliance added to
   /// the half-space's, so z is the contact of the surfaces of `a` on K + A_γ
-  /// (averaged track only). The material of each cell is that of `layer`
+  /// (on a resolved track, the strip cells under the window wearing with
+  /// the window's cells over them). The material of each cell is that of `layer`
   /// (1: the oxide) when given, else made consistent with z by re-solving
   /// (at most a few times). Writes z, f(s, z) and the sample at z.
   /// StageNotSolved if a contact solve does not converge (a shorter stage
@@ -174,12 +193,19 @@ class PinOnDisc {
   std::string state_problem(double s, double pin_wear, double disc_wear, double friction_integral,
                             std::span<const double> pin, std::span<const double> disc,
                             std::span<const double> pressure, double gap_shift) const;
+  struct TrackStageCompliance;
+  void solve_track_stage(double s, const double* a, double gamma, double* z, double* rate, PinOnDiscSample& sample,
+                         const std::vector<char>* layer);
+  // Resolved track: the window cells' disc rates (disc_rate_) onto the strip
+  // cells they read at s, as dz/ds of the strip (the window's weights R).
+  void spread_on_track(double s, double* strip_rate) const;
   void build_profile(double s);
   void classify(double s, const double* disc, std::vector<char>& layer) const;
   // S itself, not the two-level default: on the pin-on-disc's 32–128 grids the two-level saves no time,
   // and the tilted reading's wear history turns iterate-level differences into percent (docs/bem.md).
   bem::ContactResult solve_contact(double s, int max_iterations,
-                                  bem::ContactMethod method = bem::ContactMethod::PreconditionedCG);
+                                  bem::ContactMethod method = bem::ContactMethod::PreconditionedCG,
+                                  double tolerance = 0.0);  // 0: setup().tolerance
   void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
   double disc_height(const double* disc, std::size_t i, std::size_t j, double s) const;
   void deposit_swept(double s0, double s1);
@@ -194,6 +220,7 @@ class PinOnDisc {
   long steps_ = 0;
   double last_pin_volume_rate_ = 0.0, last_disc_volume_rate_ = 0.0;  // dV/ds of the last evaluate()
   int solves_ = 0;
+  long iterations_ = 0;
   std::size_t track_ = 0;  // strip cells along y (resolved), else 0
   // The solution of the last implicit stage and its rate, for derivative().
   std::vector<double> stage_state_, stage_rate_;
@@ -201,6 +228,7 @@ class PinOnDisc {
   bool stage_valid_ = false;
   PinOnDiscSample stage_sample_;
   std::unique_ptr<StageCompliance> compliance_;
+  std::unique_ptr<TrackStageCompliance> track_compliance_;
 };
 
 }  // namespace wearscale::tribometer
