@@ -429,6 +429,7 @@ void WearmapRough::run(const Config& cfg, RunContext& context) {
       RealField f(g);
       for (std::size_t k = 0; k < v.size(); ++k) f[k] = v[k];
       w.write_field(path, f);
+      w.set_attribute(path, "axes", "rows: p_N_tilde (/axes/p_N_tilde), columns: dstar_over_L (/axes/dstar_over_L)");
     };
     field(cm, "/maps/count_mean"), field(cs, "/maps/count_sd"), field(vm, "/maps/volume_mean");
     field(vs, "/maps/volume_sd"), field(valid, "/maps/valid");
