@@ -285,6 +285,7 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     h5.write_scalar("/results/" + name, value, r["unit"].get<std::string>());
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
+  context.draw_figures();  // all of the run's, with one gnuplot
   summary.results = context.results();
   summary.notes = context.notes();
   summary.files = context.files();
@@ -649,6 +650,8 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
     sweep.runs.push_back(runs[k].summary);
     view.folders.push_back(runs[k].summary.output_dir);
     view.labels.push_back(label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k])));
+    view.values.push_back(run_value[k]);
+    view.series_values.push_back(series_key.empty() ? std::string() : run_series[k]);
   }
   if (any_failed)
     log::warn("{}: no sweep plots (some runs failed)", sweep.output_dir.string());
