@@ -38,8 +38,8 @@ struct Config::State {
   std::string source;
   std::filesystem::path base_dir;  // relative paths in the file are relative to its folder
   std::set<std::string, std::less<>> used;
-  std::map<std::string, std::string, std::less<>> overridden;  // key → origin of its value
   std::map<std::string, units::Dimension, std::less<>> dimensions;  // key → the dimension it was read in (number())
+  std::map<std::string, std::string, std::less<>> overridden;  // key → origin of its value
 };
 
 namespace {

@@ -45,8 +45,7 @@ class WearmapAnalytic2d final : public Study {
            "3.27)";
   }
   std::string default_case_name() const override { return "wearmap"; }
-  // A folder of its own: the maps of the other kinds are not replaced.
-  std::string default_output_dir() const override { return "out/wearmap-analytic2d"; }
+  std::string default_output_dir() const override { return "out/wearmap-analytic2d"; }  // each map its own folder
   Schema schema() const override {
     return {
         {"wearmap.analytic2d.dr_over_dstar", "range", "[MIN, MAX], each ≥ 0", "1", "[0, 3]",

@@ -62,8 +62,7 @@ class WearmapAnalytic3d final : public Study {
            "R of (4.48)";
   }
   std::string default_case_name() const override { return "wearmap"; }
-  // A folder of its own: the maps of the other kinds are not replaced.
-  std::string default_output_dir() const override { return "out/wearmap-analytic3d"; }
+  std::string default_output_dir() const override { return "out/wearmap-analytic3d"; }  // each map its own folder
   Schema schema() const override {
     return {
         {"wearmap.analytic3d.d_over_l", "range", "[MIN, MAX] within [0, 1]", "1", "[0, 1]",

@@ -280,8 +280,7 @@ class WearmapRough final : public Study {
            "(p̃_N, d*/L), averaged over surfaces";
   }
   std::string default_case_name() const override { return "wearmap"; }
-  // A folder of its own: the maps of the other kinds are not replaced.
-  std::string default_output_dir() const override { return "out/wearmap-rough"; }
+  std::string default_output_dir() const override { return "out/wearmap-rough"; }  // each map its own folder
   Schema schema() const override;
   std::vector<std::string> prepare(Config& cfg) override;
   void run(const Config& cfg, RunContext& context) override;

@@ -17,8 +17,8 @@
 #include "wearscale/io/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
-#include "wearscale/tribometer/pin_on_disc.hpp"
 #include "wearscale/tribometer/specific_wear_rate.hpp"
+#include "wearscale/tribometer/pin_on_disc.hpp"
 
 namespace wearscale::coupling {
 
