@@ -398,9 +398,9 @@ std::string pin_on_disc_parameters(const Config& c, const std::vector<std::strin
 }
 
 namespace {
-// A case's name as a title's first line: at most 150 characters, so that the
+// A case's name as a title's first line(s): at most 150 characters, so that the
 // parameters after it fit in what a figure draws of a text (kMaxTextBytes).
-std::string name_line(const std::string& case_name) { return figure_text(case_name, 150); }
+std::string name_line(const std::string& case_name) { return figure_text(case_name, 150, true); }
 }  // namespace
 
 std::string run_title(const Config& c, const std::string& case_name) {
