@@ -1,407 +1,547 @@
 #include "wearscale/coupling/plots.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
-#include <iterator>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "wearscale/core/atomic_file.hpp"
-#include "wearscale/core/errors.hpp"
-#include "wearscale/core/interrupt.hpp"
-#include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
-#include "wearscale/core/program_path.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/coupling/palette.hpp"
 
-extern "C" char** environ;
-
 namespace wearscale::coupling {
 
-namespace {
-// gnuplot on the PATH, looked up once (empty: none).
-const std::filesystem::path& gnuplot_program() {
-  static const std::filesystem::path program = [] {
-    auto found = find_on_path("gnuplot");
-    if (found.empty()) log::info("gnuplot not found: no PNG plots (install it with: apt-get install gnuplot-nox)");
-    return found;
-  }();
-  return program;
-}
-
-// gnuplot drawing `script`, its output and messages to /dev/null; the wait
-// status, or -1 if it could not be started. Started directly (not through
-// std::system, which ignores SIGINT in the caller while it waits): a Ctrl-C,
-// which gnuplot answers by exiting with status 1, reaches this run as well.
-int run_gnuplot(const std::filesystem::path& script) {
-  posix_spawn_file_actions_t files;
-  if (posix_spawn_file_actions_init(&files) != 0) return -1;
-  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&files, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  const std::string program = gnuplot_program().string(), script_name = script.string();
-  char* argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script_name.c_str()), nullptr};
-  pid_t pid = -1;
-  const int spawned = posix_spawn(&pid, program.c_str(), &files, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&files);
-  if (spawned != 0) return -1;
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return status;
-}
-
-// A whole PNG: the signature, and the IEND chunk closing it (gnuplot exits 0
-// even when the disk filled up under it, leaving a truncated image).
-bool complete_png(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  char head[8] = {}, tail[12] = {};
-  if (!in.read(head, 8) || std::string_view(head, 8) != "\x89PNG\r\n\x1a\n") return false;
-  in.seekg(-12, std::ios::end);
-  return in.read(tail, 12) && std::string_view(tail + 4, 8) == "IEND\xae\x42\x60\x82";
-}
-
-// The data files of a plot are read where they are now: staged outputs of
-// the run under their temporary names.
-std::string data(const std::filesystem::path& csv) { return OutputSet::readable(csv).string(); }
-}  // namespace
-
-bool plotting_available() { return !gnuplot_program().empty(); }
-
-std::optional<std::filesystem::path> render_plot(const std::string& script, const std::filesystem::path& png, int width,
-                                                 int height) {
-  if (!plotting_available()) return std::nullopt;
-  const auto partial = partial_path(png);
-  const auto script_file = partial_path(png.parent_path() / (png.stem().string() + ".gp"));
-  try {
-    write_temporary_file(script_file, fmt::format("set terminal pngcairo size {},{} font 'sans,11'\nset output '{}'\n{}",
-                                                  width, height, partial.string(), script));
-  } catch (const OutputError& e) {
-    throw OutputError(fmt::format("{}; {} was not drawn", e.what(), png.string()));
-  }
-  const int status = run_gnuplot(script_file);
-  std::error_code ec;
-  std::filesystem::remove(script_file, ec);
-  if (status != 0) {
-    std::filesystem::remove(partial, ec);
-    // Stopped by a signal (the job's, or this run's SIGINT/SIGTERM): the run
-    // stops too, so that it is not taken as complete without its plot.
-    if ((status != -1 && WIFSIGNALED(status)) || interrupt_requested())
-      throw Interrupted(fmt::format("gnuplot was stopped by a signal while drawing {}", png.string()));
-    log::warn("gnuplot could not draw {} ({})", png.string(),
-              status == -1 ? "it could not be started" : fmt::format("exit status {}", WEXITSTATUS(status)));
-    return std::nullopt;
-  }
-  if (!complete_png(partial)) {  // gnuplot said yes, but the file system did not take it all
-    std::filesystem::remove(partial, ec);
-    throw OutputError(fmt::format("cannot write {}: gnuplot left an incomplete image (is the disk full?); {} was not "
-                                  "written",
-                                  partial.string(), png.string()));
-  }
-  commit_file(partial, png);
-  return png;
-}
+namespace fs = std::filesystem;
 
 namespace {
+
 // Okabe & Ito's colour-blind-safe palette (Color Universal Design, 2008), its
 // yellow last (faint on white): the k-th series has the same colour in every
-// figure of a sweep (friction curves, disc profiles).
-namespace oi = okabe_ito;
-constexpr const char* kColours[] = {oi::blue,   oi::vermillion, oi::bluish_green, oi::reddish_purple,
-                                    oi::orange, oi::sky_blue,   oi::black,        oi::yellow};
-// "RRGGBB", without the '#': the scripts prefix it, or an alpha ('#A0RRGGBB').
-std::string colour(std::size_t k) { return kColours[k % (sizeof kColours / sizeof *kColours)] + 1; }
+// figure of a sweep (friction curves, disc profiles). A gnuplot word list.
+std::string colour_words() {
+  namespace oi = okabe_ito;
+  return fmt::format("{}", fmt::join({oi::blue, oi::vermillion, oi::bluish_green, oi::reddish_purple, oi::orange,
+                                      oi::sky_blue, oi::black, oi::yellow},
+                                     " "));
+}
 
-// A label in gnuplot's enhanced text, in single quotes: '_' printed as itself.
-std::string literal(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') out += '\\';
-    if (c == '\'') out += '\'';
-    out += c;
+// What every kind's script shares after the prologue: the colours, and a
+// loop drawing the figure as PNG, then as PDF (7 in wide, for a paper).
+std::string kind_script(std::string_view body, int png_width, int png_height) {
+  const double pdf_height = 7.0 * png_height / png_width;
+  return fmt::format(
+      "colours = \"{}\"\n"
+      "colour(c) = word(colours, (c - 1) % words(colours) + 1)\n"
+      "faint(c) = \"#A0\".colour(c)[2:]\n"
+      "do for [FORMAT in \"png pdf\"] {{\n"
+      "if (FORMAT eq \"png\") {{ set terminal pngcairo size {},{} font \"sans,11\" }} "
+      "else {{ set terminal pdfcairo size 7in,{:.2f}in font \"sans,9\" }}\n"
+      "set output name.\".\".FORMAT\n"
+      "{}"
+      "unset output\n"
+      "}}\n",
+      colour_words(), png_width, png_height, pdf_height, body);
+}
+
+// The columns `names` of a wearscale CSV table (one header line), read where
+// the file is now (a staged output under its temporary name).
+std::map<std::string, std::vector<double>> read_columns(const fs::path& csv, const std::vector<std::string>& names) {
+  std::ifstream in(OutputSet::readable(csv));
+  std::string line;
+  std::map<std::string, std::vector<double>> out;
+  if (!std::getline(in, line)) return out;
+  std::vector<int> index(names.size(), -1);
+  {
+    std::istringstream header(line);
+    std::string cell;
+    for (int c = 0; std::getline(header, cell, ','); ++c)
+      for (std::size_t k = 0; k < names.size(); ++k)
+        if (cell == names[k]) index[k] = c;
+  }
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (index[k] >= 0 && static_cast<std::size_t>(index[k]) < cells.size()) {
+        char* end = nullptr;
+        const double v = std::strtod(cells[static_cast<std::size_t>(index[k])].c_str(), &end);
+        out[names[k]].push_back(v);
+      }
   }
   return out;
 }
 
-// A title as a gnuplot string expression: each line literal() in single
-// quotes, the lines joined by "\n" (a line break in gnuplot's double quotes).
-std::string title_string(const std::string& title) {
-  std::string out;
-  for (std::size_t start = 0;;) {
-    const auto end = title.find('\n', start);
-    out += "'" + literal(title.substr(start, end == std::string::npos ? std::string::npos : end - start)) + "'";
-    if (end == std::string::npos) return out;
-    out += ".\"\\n\".";
-    start = end + 1;
-  }
+// `file` named relative to `folder`, which holds it.
+fs::path inside(const fs::path& file, const fs::path& folder) {
+  const fs::path relative = fs::absolute(file).lexically_normal().lexically_relative(fs::absolute(folder).lexically_normal());
+  if (relative.empty() || *relative.begin() == "..")
+    throw std::logic_error(fmt::format("{} is not inside {}", file.string(), folder.string()));
+  return relative;
+}
+
+// "4.41×10⁻⁵" for small or large numbers, "0.0441" otherwise: 3 significant digits.
+std::string readable_number(double x) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "–" : x > 0 ? "∞" : "−∞";
+  if (x == 0.0 || (std::fabs(x) >= 1e-3 && std::fabs(x) < 1e5)) return fmt::format("{:.3g}", x);
+  const int e = static_cast<int>(std::floor(std::log10(std::fabs(x))));
+  double m = x / std::pow(10.0, e);
+  std::string mantissa = fmt::format("{:.3g}", m);
+  static const char* superscript[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string exponent = e < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(e))) exponent += superscript[c - '0'];
+  return mantissa + "×10" + exponent;
 }
 
 // A long title broken into lines of at most `width` characters, at spaces
 // (a long DEM caption ran off both edges of the plot, cut off).
 std::string wrapped(const std::string& title, std::size_t width = 90) {
-  std::string out, line, word;
-  std::istringstream words(title);
-  while (words >> word) {
-    if (!line.empty() && line.size() + 1 + word.size() > width) {
-      out += line + "\n";
-      line.clear();
+  std::string out;
+  std::istringstream lines(title);
+  for (std::string text; std::getline(lines, text);) {
+    if (!out.empty()) out += "\n";
+    if (text.size() <= width) {  // as it is, its spaces too
+      out += text;
+      continue;
     }
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
-}
-
-// The sliding distances (second column) of a history table, in order.
-std::vector<double> second_column(const std::filesystem::path& csv) {
-  std::ifstream in(OutputSet::readable(csv));
-  std::string line;
-  std::vector<double> out;
-  std::getline(in, line);  // the header
-  while (std::getline(in, line)) {
-    const auto comma = line.find(',');
-    if (comma == std::string::npos) continue;
-    try {
-      out.push_back(std::stod(line.substr(comma + 1)));
-    } catch (const std::exception&) {
-      return out;
+    std::string line, word;
+    std::istringstream words(text);
+    std::string wrapped_line;
+    while (words >> word) {
+      while (word.size() > width) {  // a word longer than a line (a name of thousands of characters): cut, at a character
+        std::size_t cut = width;
+        while (cut > 0 && (static_cast<unsigned char>(word[cut]) & 0xC0) == 0x80) --cut;
+        if (cut == 0) cut = width;
+        if (!line.empty()) wrapped_line += line + "\n";
+        wrapped_line += word.substr(0, cut) + "\n";
+        line.clear();
+        word.erase(0, cut);
+      }
+      if (!line.empty() && line.size() + 1 + word.size() > width) {
+        wrapped_line += line + "\n";
+        line.clear();
+      }
+      line += (line.empty() ? "" : " ") + word;
     }
+    out += wrapped_line + line;
   }
   return out;
 }
 
-}  // namespace
+// A title for a figure: its lines wrapped, at most 6, each character checked.
+std::string title_text(const std::string& title) { return figure_text(wrapped(figure_text(title, 600, true)), 600, true); }
 
-std::string sweep_title(const Config& c, const std::string& case_name, const std::string& key,
-                        const std::string& series_key) {
-  std::vector<std::string> parts;
-  try {  // material names (a material defined in the case is a table: left out)
-    if (c.has("materials.pin") && c.has("materials.disc"))
-      parts.push_back(fmt::format("{} pin on {} disc", c.string("materials.pin"), c.string("materials.disc")));
-  } catch (const std::exception&) {
-  }
-  struct Parameter {
-    const char *key, *symbol, *unit;
-    double scale;
-    units::Dimension dim;
-  };
-  for (const auto& [name, symbol, unit, scale, dim] :
-       {Parameter{"scale.macro.pin_radius", "R", "mm", units::mm, units::length},
-        Parameter{"scale.macro.normal_load", "F_N", "N", units::N, units::force},
-        Parameter{"scale.macro.velocity", "v", "mm/s", units::mm, units::velocity}}) {
-    if (name == key || name == series_key || !c.has(name)) continue;  // swept: the legends give it
-    try {
-      parts.push_back(fmt::format("{} = {:.3g} {}", symbol, c.number(name, Range::any(), dim) / scale, unit));
-    } catch (const std::exception&) {  // not a number (the run would have said so): left out of the title
-    }
-  }
-  std::string swept = "swept: " + key;
-  if (!series_key.empty()) swept += ", series: " + series_key;
-  return fmt::format("{}\n{}{}{}", case_name, fmt::join(parts, ", "), parts.empty() ? "" : "; ", swept);
+// A legend entry: one line, at most 60 characters.
+std::string entry_text(const std::string& label) { return figure_text(label, 60); }
+
+// --- the kinds' scripts (constant text) -------------------------------------
+
+// μ(s) and V(s): texts 1 title, 2 volume unit, 3 its scale from m³, 4 rows
+// between the pin's markers, 5 the number of runs n; then per run c: its
+// table, its legend entry, the disc's entry and the pin's (one run).
+constexpr std::string_view kFriction = R"gp(title = given_text(1)
+volume_unit = given_text(2)
+volume_scale = given_number(3)
+marker_every = int(given_number(4))
+n = int(given_number(5))
+file(c) = given_text(5 + 4*c - 3)
+label(c) = given_text(5 + 4*c - 2)
+disc_entry(c) = given_text(5 + 4*c - 1)
+pin_entry(c) = given_text(5 + 4*c)
+set multiplot layout 2,1 title title noenhanced
+set lmargin 11
+set rmargin 3
+set grid
+set key noenhanced
+unset xlabel
+set ylabel "friction coefficient μ"
+set yrange [0:1.3]
+set ytics 0, 0.2, 1
+set key top left horizontal maxrows 2 samplen 2.5 Left reverse
+plot for [c=1:n] file(c) using (column("distance_m")*1e3):(column("friction")) with lines lw 1 lc rgb faint(c) notitle, \
+     for [c=1:n] file(c) using (column("distance_m")*1e3):(column("friction_moving_average")) with lines lw 2 lc rgb colour(c) title (n == 1 ? "moving average" : label(c)), \
+     NaN with lines lw 1 lc rgb (n == 1 ? faint(1) : "#A0000000") title (n == 1 ? "raw μ" : "raw μ (faint)")
+set xlabel "sliding distance s [mm]"
+set ylabel "worn volume [".volume_unit."]"
+set autoscale y
+set yrange [0:*]
+set ytics autofreq
+set format y "%g"
+set key top left vertical maxrows auto samplen 4 Left reverse
+plot for [c=1:n] file(c) using (column("distance_m")*1e3):(column("disc_wear_m3")*volume_scale) with lines lw 2 lc rgb colour(c) title (n == 1 ? disc_entry(c) : ""), \
+     for [c=1:n] file(c) using (column("distance_m")*1e3):(column("pin_wear_m3")*volume_scale) with linespoints lw 1.5 dt 2 pt 6 ps 0.9 pi marker_every lc rgb colour(c) title (n == 1 ? pin_entry(c) : ""), \
+     NaN with lines lw 2 lc rgb "black" title (n == 1 ? "" : "disc"), \
+     NaN with linespoints lw 1.5 dt 2 pt 6 ps 0.9 lc rgb "black" title (n == 1 ? "" : "pin (dashed)")
+unset multiplot
+)gp";
+
+// The disc across the track: texts 1 title, 2 the interface's depth [µm]
+// (nan: none drawn), 3 its legend entry, 4 the number of runs n; then per
+// run its table and its legend entry.
+constexpr std::string_view kDiscProfiles = R"gp(title = given_text(1)
+interface = given_number(2)
+interface_entry = given_text(3)
+n = int(given_number(4))
+file(c) = given_text(4 + 2*c - 1)
+label(c) = given_text(4 + 2*c)
+set title title noenhanced
+set xlabel "across the track x [mm] (0: the pin's axis)"
+set ylabel "disc surface [µm]"
+set grid
+set key bottom left noenhanced Left reverse
+set offsets 0, 0, graph 0.08, graph 0.05
+plot for [c=1:n] file(c) using (column("x_m")*1e3):(-column("worn_depth_m")*1e6) with lines lw 2 lc rgb colour(c) title label(c), \
+     (interface == interface ? -interface : NaN) with lines dt 2 lw 1.5 lc rgb "black" title (interface == interface ? interface_entry : "")
+)gp";
+
+// Fig. 9.25 and the specific wear rates: texts 1 title, 2 the number of
+// tables n; then per table its file and its name ("" for one table).
+constexpr std::string_view kFrictionVsThickness = R"gp(title = given_text(1)
+n = int(given_number(2))
+file(c) = given_text(2 + 2*c - 1)
+label(c) = given_text(2 + 2*c)
+entry(c, what) = (label(c) eq "" ? what : label(c).": ".what)
+finite(h) = (h > 1) ? NaN : h*1e6      # thicknesses in µm; bulk (inf) apart
+bulk(h) = (h > 1) ? 6 : NaN            # bulk drawn at 6 µm, as in Fig. 9.25
+set multiplot layout 2,1 title title noenhanced
+set lmargin 11
+set rmargin 3
+set grid
+set key noenhanced
+set xrange [-0.3:6.6]
+set xtics ("0" 0, "1" 1, "2" 2, "3" 3, "4" 4, "bulk" 6)
+unset xlabel
+set ylabel "friction coefficient μ"
+set yrange [0:1.3]
+set ytics 0, 0.2, 1
+set key top left horizontal maxrows 2 samplen 2.5 Left reverse
+set offsets 0, 0, 0, 0
+set label 1 "bulk oxide drawn at 6 µm (Fig. 9.25)" at graph 0.98, graph 0.06 right font ",9"
+plot for [c=1:n] file(c) using (finite(column(1))):(column("mu_final")) with linespoints pt 7 ps 1.3 lw 2 lc rgb colour(c) title entry(c, "final μ"), \
+     for [c=1:n] file(c) using (bulk(column(1))):(column("mu_final")) with points pt 5 ps 1.8 lc rgb colour(c) notitle, \
+     for [c=1:n] file(c) using (finite(column(1))):(column("mu_mean")) with linespoints pt 6 dt 3 lw 1 lc rgb colour(c) title entry(c, "mean μ"), \
+     [0:3] 0.337 + 0.070*x with lines dt 2 lw 2 lc rgb "black" title "experiments: μ ≈ 0.337 + 0.070 h (9.1)"
+unset label 1
+set xlabel "oxide layer thickness h [µm]"
+set ylabel "specific wear rate k [mm³/(N·m)]"
+set autoscale y
+set yrange [0:*]
+set ytics autofreq
+set format y "%g"
+set key top left vertical maxrows auto samplen 3 Left reverse
+set offsets 0, 0, graph 0.3, 0
+plot for [c=1:n] file(c) using (finite(column(1))):(column("disc_specific_wear_rate_mm3_per_N_per_m")) with linespoints pt 7 ps 1.3 lw 2 lc rgb colour(c) title entry(c, "disc"), \
+     for [c=1:n] file(c) using (bulk(column(1))):(column("disc_specific_wear_rate_mm3_per_N_per_m")) with points pt 5 ps 1.8 lc rgb colour(c) notitle, \
+     for [c=1:n] file(c) using (finite(column(1))):(column("pin_specific_wear_rate_mm3_per_N_per_m")) with linespoints pt 6 ps 1.3 dt 2 lw 1.5 lc rgb colour(c) title entry(c, "pin"), \
+     for [c=1:n] file(c) using (bulk(column(1))):(column("pin_specific_wear_rate_mm3_per_N_per_m")) with points pt 4 ps 1.8 lw 1.5 lc rgb colour(c) notitle
+unset multiplot
+)gp";
+
+// A DEM junction's forces: texts 1 title, 2 the history table, 3 the last
+// sliding distance drawn [m].
+constexpr std::string_view kJunctionForce = R"gp(title = given_text(1)
+file = given_text(2)
+last = given_number(3)
+set title title noenhanced font ",11"
+set xlabel "sliding distance [nm]"
+set ylabel "force [nN]"
+set key top left Left reverse
+set grid
+plot file using (column(2) <= last ? column(2)*1e9 : NaN):(column(3)*1e9) with lines lw 2 lc rgb colour(1) title "tangential F_T", \
+     file using (column(2) <= last ? column(2)*1e9 : NaN):(column(4)*1e9) with lines lw 1.5 lc rgb colour(2) title "normal F_N"
+)gp";
+
+// Peak p_T against p_N with the model (7.9)-(7.10): texts 1 title, 2 the runs'
+// table (columns 1 D/L, 2 p_N [Pa], 6 peak p_T [Pa], 9 outcome: 0 flattened,
+// 1 sheared, 2 detached), 3 σ [GPa], 4 p_crit [GPa], 5 where (7.10) starts
+// [GPa], 6 the fit's line, 7 the number of D/L values n; then per D/L its
+// value and its legend entry.
+constexpr std::string_view kJunctionStrength = R"gp(title = given_text(1)
+file = given_text(2)
+sigma = given_number(3)
+p_crit = given_number(4)
+from = given_number(5)
+fit = given_text(6)
+n = int(given_number(7))
+ratio(c) = given_number(7 + 2*c - 1)
+label(c) = given_text(7 + 2*c)
+same(a, b) = abs(a - b) <= 1e-9*abs(b)
+outcome_code(o) = word("1 0 2", o) + 0
+outcome_point(o) = word("7 6 9", o) + 0
+outcome_name(o) = word("sheared flattened detached", o)
+set key top left Left reverse
+set offsets 0, graph 0.05, graph 0.6, 0    # room above the points for the legend
+set title title noenhanced
+set xlabel "normal pressure p_N [GPa]"
+set ylabel "peak tangential stress p_T [GPa]"
+set grid
+set xrange [0:*]
+set yrange [0:*]
+set samples 1000
+set label 1 fit at graph 0.98, graph 0.05 right noenhanced
+plot for [c=1:n] for [o=1:3] file using ((same(column(1), ratio(c)) && column(9) == outcome_code(o)) ? column(2)/1e9 : NaN):(column(6)/1e9) with points pt outcome_point(o) ps 1.6 lw 1.5 lc rgb colour(c) notitle, \
+     for [c=1:n] (x < ratio(c)*p_crit ? ratio(c)*sigma : NaN) with lines lw 2 lc rgb colour(c) title label(c) noenhanced, \
+     (x >= from ? x/p_crit*sigma : NaN) with lines lw 2 lc rgb "black" title "(7.10): p_T = (p_N/p_{crit}) σ", \
+     x with lines dt 2 lc rgb "black" title "p_T = p_N", \
+     NaN with lines lw 2 lc rgb "#999999" title "(7.9): p_T = (D/L) σ, a line per D", \
+     for [o=1:3] NaN with points pt outcome_point(o) ps 1.6 lw 1.5 lc rgb "black" title "DEM run: ".outcome_name(o)
+unset label 1
+)gp";
+
+const std::string& script(std::string_view body, int width, int height) {
+  static std::map<const char*, std::string> built;  // one per kind, made once
+  static std::mutex guard;
+  std::lock_guard lock(guard);
+  auto& s = built[body.data()];
+  if (s.empty()) s = kind_script(body, width, height);
+  return s;
 }
 
-std::string legend_label(const std::string& run_label) {
-  std::string out;
-  std::istringstream words(run_label);
-  for (std::string word; words >> word;) {
-    const auto eq = word.find('=');
-    std::string part = word;
-    if (eq != std::string::npos) {
-      const std::string key = word.substr(0, eq), value = word.substr(eq + 1);
-      part = key + " = " + value;
-      if (key == "thickness") {  // the oxide layer's, in metres
-        if (value == "inf") {
-          part = "h = ∞ (bulk oxide)";
-        } else {
-          char* end = nullptr;
-          const double h = std::strtod(value.c_str(), &end);
-          if (end == value.c_str() + value.size() && !value.empty())
-            part = h == 0.0 ? std::string("h = 0 (no oxide)") : fmt::format("h = {:g} µm", h * 1e6);
-        }
-      }
-    }
-    out += (out.empty() ? "" : ", ") + part;
-  }
-  return out.empty() ? run_label : out;
+}  // namespace
+
+std::string length_words(double m) {
+  if (m == 0.0) return "0";
+  if (std::isinf(m)) return m > 0 ? "∞" : "−∞";
+  if (std::isnan(m)) return "nan";
+  const double a = std::fabs(m);
+  if (a < 1e-7) return fmt::format("{:.3g} nm", m / units::nm);
+  if (a < 1e-3) return fmt::format("{:.3g} µm", m / units::um);
+  if (a < 1.0) return fmt::format("{:.3g} mm", m / units::mm);
+  return fmt::format("{:.3g} m", m);
 }
 
 namespace {
-bool has_column(const std::filesystem::path& csv, const std::string& name) {
-  std::ifstream in(OutputSet::readable(csv));  // a staged output is read under its temporary name
-  std::string line;
-  while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') return ("," + line + ",").find("," + name + ",") != std::string::npos;
-  return false;
+// The value of a key as a number in SI, its bare numbers SI in `dim` (as the
+// case reads them); nullopt if it is not one.
+std::optional<double> si_value(const std::string& value, units::Dimension dim) {
+  try {
+    const auto q = units::parse_quantity(value);
+    if (q.dimension == dim || q.dimension == units::dimensionless) return q.value;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
 }
+
+std::string text_or(const Config& c, const std::string& key, const std::string& fallback) {
+  try {
+    if (c.has(key)) return c.string(key);
+  } catch (const std::exception&) {  // a table (a material defined in the case): its name is the key's
+  }
+  return fallback;
+}
+
+// The pin-on-disc keys in words, with the unit a reader gives them; `title`:
+// stated in a run's title (the others only when swept).
+struct Named {
+  const char *key, *words, *unit;
+  double scale;
+  units::Dimension dim;
+  bool title;
+};
+constexpr Named kNamed[] = {
+    {"scale.macro.pin_radius", "pin radius", "mm", units::mm, units::length, true},
+    {"scale.macro.normal_load", "load", "N", units::N, units::force, true},
+    {"scale.macro.velocity", "speed", "mm/s", units::mm, units::velocity, true},
+    {"scale.macro.nonplanarity.slope", "disc tilt", "", 1.0, units::dimensionless, true},
+    {"scale.macro.distance", "sliding distance", "m", 1.0, units::length, false},
+    {"scale.macro.time_step", "time step", "s", 1.0, units::time, false},
+    {"scale.macro.nonplanarity.period", "tilt period", "mm", units::mm, units::length, false},
+};
 }  // namespace
 
-std::optional<std::filesystem::path> plot_friction_curves(const std::vector<FrictionCurve>& curves,
-                                                          const std::filesystem::path& png, const std::string& title) {
-  std::string mu, wear;
-  for (std::size_t k = 0; k < curves.size(); ++k) {
-    const auto& c = curves[k];
-    const std::string rgb = colour(k);
-    // One run: the title names it, the legend says what the lines are.
-    const bool one = curves.size() == 1;
-    const std::string name = literal(legend_label(c.label));
-    if (has_column(c.csv, "friction_moving_average")) {
-      mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1 lc rgb '#A0{}' notitle, "
-                        "'' using ($1*1e3):(column('friction_moving_average')) with lines lw 2 lc rgb '#{}' title '{}'",
-                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "moving average" : name);
-    } else {
-      mu += fmt::format("{}'{}' using ($1*1e3):(column('friction')) with lines lw 1.5 lc rgb '#{}' title '{}'", k ? ", " : "",
-                        data(c.csv), rgb, one ? "μ" : name);
+std::string parameter_words(const Config& c, const std::string& key, const std::string& value) {
+  if (key == "materials.layer.thickness") {
+    const std::string disc = text_or(c, "materials.disc", "disc");
+    const std::string layer = text_or(c, "materials.layer.material", disc);
+    if (const auto h = si_value(value, units::length)) {
+      if (*h == 0.0) return fmt::format("no {} layer", layer);
+      if (std::isinf(*h)) return fmt::format("bulk {}", layer);
+      return fmt::format("{} layer {}", layer, length_words(*h));
     }
-    // One legend entry per series (its colour); the line style tells pin from disc.
-    wear += fmt::format("{}'{}' using ($1*1e3):(column('pin_wear_m3')*1e18) with lines lw 1.5 dt 2 lc rgb '#{}' notitle, "
-                        "'' using ($1*1e3):(column('disc_wear_m3')*1e18) with lines lw 1.5 lc rgb '#{}' {}",
-                        k ? ", " : "", data(c.csv), rgb, rgb, one ? "notitle" : "title '" + name + "'");
   }
-  if (curves.size() > 1)
-    wear += ", NaN with lines lw 1.5 lc rgb 'black' title 'disc (solid)', "
-            "NaN with lines lw 1.5 dt 2 lc rgb 'black' title 'pin (dashed)'";
-  else if (curves.size() == 1)
-    wear += fmt::format(", NaN with lines lw 1.5 lc rgb '#{0}' title 'disc', NaN with lines lw 1.5 dt 2 lc rgb '#{0}' "
-                        "title 'pin'",
-                        colour(0));
-  // Both panels share the x axis and the same margins, so that their axes align
-  // whatever the width of the tick labels and of the legend outside.
-  const std::string script = fmt::format(
-      "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
-      "set multiplot layout 2,1 title {}\n"
-      "set lmargin at screen 0.10\nset rmargin at screen 0.74\n"
-      "set ylabel 'friction coefficient μ'\nset yrange [0:1]\nset grid\nset key outside right top\n"
-      "set xlabel 'sliding distance s [mm]'\n"
-      "set label 1 'faint: raw μ; full: moving average' at graph 0.01, graph 0.93 font ',9'\n"
-      "plot {}\nunset label 1\n"
-      "set ylabel 'worn volume [µm³]'\nset autoscale y\nset yrange [0:*]\n"
-      "plot {}\nunset multiplot\n",
-      title_string(title), mu.empty() ? "NaN notitle" : mu, wear);
-  return render_plot(script, png);
+  for (const auto& n : kNamed)
+    if (key == n.key)
+      if (const auto v = si_value(value, n.dim))
+        return fmt::format("{} {:.3g}{}{}", n.words, *v / n.scale, *n.unit ? " " : "", n.unit);
+  std::string leaf = key.substr(key.rfind('.') + 1);
+  std::replace(leaf.begin(), leaf.end(), '_', ' ');
+  return leaf + " " + value;
 }
 
-std::optional<std::filesystem::path> plot_disc_profiles(const std::vector<FrictionCurve>& profiles,
-                                                        const std::filesystem::path& png, const std::string& title,
-                                                        double layer_thickness) {
-  std::string curves;
-  for (std::size_t k = 0; k < profiles.size(); ++k)
-    curves += fmt::format("{}'{}' using ($1*1e3):(-$2*1e6) with lines lw 2 lc rgb '#{}' title '{}'", k ? ", " : "",
-                          data(profiles[k].csv), colour(k), literal(legend_label(profiles[k].label)));
-  if (layer_thickness > 0.0 && std::isfinite(layer_thickness))
-    curves += fmt::format(", {:.17g} with lines dt 2 lw 1.5 lc rgb 'black' title 'oxide/substrate interface'",
-                          -layer_thickness * 1e6);
-  return render_plot(fmt::format("set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
-                                 "set title {}\nset xlabel 'across the track x [mm]'\nset ylabel 'disc surface [µm]'\n"
-                                 "set grid\nset key outside right\nplot {}\n",
-                                 title_string(title), curves),
-                     png);
-}
-
-std::optional<std::filesystem::path> plot_friction_vs_thickness(const std::vector<SweepTable>& tables,
-                                                                const std::filesystem::path& png) {
-  // Column 1: thickness [m] (inf for bulk); the tables name their μ columns.
-  std::string curves;
-  for (std::size_t k = 0; k < tables.size(); ++k) {
-    const auto& t = tables[k];
-    const std::string rgb = colour(k), file = data(t.csv);
-    curves += fmt::format(
-        "'{0}' using (finite($1)):(column('mu_final')) with linespoints pt 7 ps 1.3 lw 2 lc rgb '#{1}' "
-        "title '{2}: final μ', \\\n"
-        "'{0}' using (bulk($1)):(column('mu_final')) with points pt 5 ps 1.8 lc rgb '#{1}' title '{2}: bulk SiO_2', \\\n"
-        "'{0}' using (finite($1)):(column('mu_mean')) with linespoints pt 6 dt 3 lw 1 lc rgb '#{1}' "
-        "title '{2}: mean μ', \\\n",
-        file, rgb, literal(legend_label(t.label)));
+std::string pin_on_disc_parameters(const Config& c, const std::vector<std::string>& left_out) {
+  auto out_of = [&](const std::string& key) { return std::find(left_out.begin(), left_out.end(), key) != left_out.end(); };
+  std::vector<std::string> parts;
+  if (c.has("materials.pin") && c.has("materials.disc"))
+    parts.push_back(fmt::format("{} pin on {} disc", text_or(c, "materials.pin", "pin"), text_or(c, "materials.disc", "disc")));
+  const std::string thickness = "materials.layer.thickness";
+  if (c.has(thickness) && !out_of(thickness)) try {
+      const double h = c.number(thickness, Range::non_negative().or_infinite(), units::length);
+      parts.push_back(parameter_words(c, thickness, fmt::format("{}", h)));
+    } catch (const std::exception&) {  // not a number (the run would have said so): left out
+    }
+  for (const auto& n : kNamed) {
+    if (!n.title || out_of(n.key) || !c.has(n.key)) continue;
+    try {
+      const double v = c.number(n.key, Range::any(), n.dim);
+      if (n.dim == units::dimensionless && v == 0.0) continue;  // no tilt
+      parts.push_back(fmt::format("{} {:.3g}{}{}", n.words, v / n.scale, *n.unit ? " " : "", n.unit));
+    } catch (const std::exception&) {  // not a number (the run would have said so): left out
+    }
   }
-  const std::string script = fmt::format(
-      "set datafile separator ','\nset datafile commentschars '#'\nset key autotitle columnhead\n"
-      "finite(x) = (x > 1) ? 1/0 : x*1e6   # oxide thicknesses [µm]\n"
-      "bulk(x) = (x > 1) ? 6 : 1/0         # bulk (inf) placed at 6 µm, as in Fig. 9.25\n"
-      "set xlabel 'oxide layer thickness h_{{layer}} [µm]'\nset ylabel 'friction coefficient μ'\n"
-      "set xrange [-0.3:6.6]\nset yrange [0:1]\nset grid\nset key top left font ',9'\n"
-      "set xtics ('0' 0, '1' 1, '2' 2, '3' 3, '4' 4, 'bulk' 6)\n"
-      "set label 1 'bulk SiO_2 is drawn at 6 µm (the thesis places it there, Fig. 9.25)' at graph 0.35, graph 0.06 "
-      "font ',9'\n"
-      "plot {}     [0:3] 0.337 + 0.070*x with lines dt 2 lw 2 lc rgb 'black' title 'experiments: μ ≈ 0.337 + 0.070 h "
-      "(9.1)'\n",
-      curves);
-  return render_plot(script, png);
+  return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-std::optional<std::filesystem::path> plot_junction_force(const std::filesystem::path& history_csv,
-                                                         const std::filesystem::path& png, const std::string& title) {
+namespace {
+// A case's name as a title's first line(s): at most 150 characters, so that the
+// parameters after it fit in what a figure draws of a text (kMaxTextBytes).
+std::string name_line(const std::string& case_name) { return figure_text(case_name, 150, true); }
+}  // namespace
+
+std::string run_title(const Config& c, const std::string& case_name) {
+  const std::string parameters = pin_on_disc_parameters(c);
+  return parameters.empty() ? name_line(case_name) : name_line(case_name) + "\n" + parameters;
+}
+
+std::string sweep_title(const Config& c, const std::string& case_name, const std::string& key,
+                        const std::string& series_key) {
+  auto swept = [&](const std::string& k) {
+    if (k == "materials.layer.thickness") return text_or(c, "materials.layer.material", text_or(c, "materials.disc", "layer")) + " layer thickness";
+    for (const auto& n : kNamed)
+      if (k == n.key) return std::string(n.words);
+    std::string leaf = k.substr(k.rfind('.') + 1);
+    std::replace(leaf.begin(), leaf.end(), '_', ' ');
+    return leaf;
+  };
+  const std::string parameters = pin_on_disc_parameters(c, {key, series_key});
+  std::string what = "swept: " + swept(key);
+  if (!series_key.empty()) what += "; series: " + swept(series_key);
+  return fmt::format("{}\n{}{}{}", name_line(case_name), parameters, parameters.empty() ? "" : "; ", what);
+}
+
+Figure friction_figure(const std::string& name, const std::string& title, const std::vector<FrictionCurve>& curves,
+                       const fs::path& folder) {
+  Figure f{name, script(kFriction, 1000, 760), {}, {}};
+  // Worn volumes in mm³ (what tribologists read), in µm³ when under 10⁻³ mm³.
+  double largest = 0.0;
+  std::size_t rows = 0;
+  std::vector<std::map<std::string, std::vector<double>>> tables;
+  const std::string k_pin = "pin_specific_wear_rate_mm3_per_N_per_m", k_disc = "disc_specific_wear_rate_mm3_per_N_per_m";
+  for (const auto& c : curves) {
+    tables.push_back(read_columns(c.csv, {"pin_wear_m3", "disc_wear_m3", k_pin, k_disc}));
+    for (const char* v : {"pin_wear_m3", "disc_wear_m3"})
+      for (const double x : tables.back()[v])
+        if (std::isfinite(x)) largest = std::max(largest, x);
+    rows = std::max(rows, tables.back()["pin_wear_m3"].size());
+  }
+  const bool mm3 = largest == 0.0 || largest >= 1e-12;
+  f.add("title", title_text(title));
+  f.add("volume unit", mm3 ? "mm³" : "µm³");
+  f.add("volume scale from m³", mm3 ? 1e9 : 1e18);
+  f.add("rows between the pin's markers", static_cast<double>(std::max<std::size_t>(1, rows / 12)));
+  f.add("runs", static_cast<double>(curves.size()));
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const auto file = inside(curves[k].csv, folder);
+    f.data.push_back(file);
+    f.add("table", file.string());
+    f.add("legend", entry_text(curves[k].label));
+    auto last = [&](const std::string& column) {
+      const auto& v = tables[k][column];
+      return v.empty() ? std::nan("") : v.back();
+    };
+    f.add("disc", fmt::format("disc, k = {} mm³/(N·m)", readable_number(last(k_disc))));
+    f.add("pin", fmt::format("pin (dashed), k = {} mm³/(N·m)", readable_number(last(k_pin))));
+  }
+  return f;
+}
+
+Figure disc_profiles_figure(const std::string& name, const std::string& title,
+                            const std::vector<FrictionCurve>& profiles, double layer_thickness, const fs::path& folder) {
+  Figure f{name, script(kDiscProfiles, 1000, 700), {}, {}};
+  f.add("title", title_text(title));
+  const bool interface = layer_thickness > 0.0 && std::isfinite(layer_thickness);
+  f.add("interface depth [µm]", interface ? layer_thickness * 1e6 : std::nan(""));
+  f.add("interface", "oxide/substrate interface");
+  f.add("runs", static_cast<double>(profiles.size()));
+  for (const auto& p : profiles) {
+    const auto file = inside(p.csv, folder);
+    f.data.push_back(file);
+    f.add("table", file.string());
+    f.add("legend", entry_text(p.label));
+  }
+  return f;
+}
+
+Figure friction_vs_thickness_figure(const std::string& name, const std::string& title,
+                                    const std::vector<SweepTable>& tables, const fs::path& folder) {
+  Figure f{name, script(kFrictionVsThickness, 1000, 860), {}, {}};
+  f.add("title", title_text(title));
+  f.add("tables", static_cast<double>(tables.size()));
+  for (const auto& t : tables) {
+    const auto file = inside(t.csv, folder);
+    f.data.push_back(file);
+    f.add("table", file.string());
+    f.add("legend", tables.size() == 1 ? std::string() : entry_text(t.label));
+  }
+  return f;
+}
+
+Figure junction_force_figure(const std::string& name, const std::string& title, const fs::path& history_csv,
+                             const fs::path& folder) {
   // The samples are forces averaged over equal intervals of sliding; the last
   // one closes a shorter interval when the slide is not a whole number of
   // them, and its average of fewer steps draws a spike: it is left out.
-  const auto s = second_column(history_csv);
+  std::vector<double> s;
+  {
+    std::ifstream in(OutputSet::readable(history_csv));
+    std::string line;
+    std::getline(in, line);  // the header
+    while (std::getline(in, line)) {
+      const auto comma = line.find(',');
+      if (comma == std::string::npos) continue;
+      char* end = nullptr;
+      s.push_back(std::strtod(line.c_str() + comma + 1, &end));
+    }
+  }
   double last = s.empty() ? 0.0 : s.back();
   if (s.size() >= 3 && s[s.size() - 1] - s[s.size() - 2] < 0.99 * (s[s.size() - 2] - s[s.size() - 3]))
     last = s[s.size() - 2];
-  return render_plot(fmt::format("set datafile separator ','\nset key autotitle columnhead top left\n"
-                            "set title {} font ',11'\nset xlabel 'sliding distance [nm]'\nset ylabel 'force [nN]'\n"
-                            "last = {:.17g}\nset grid\n"
-                            "plot '{}' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($3*1e9) with lines lw 2 "
-                            "lc rgb '#0072B2' title 'tangential F_T', "
-                            "'' every ::1 using ($2 <= last ? $2*1e9 : 1/0):($4*1e9) with lines lw 1.5 "
-                            "lc rgb '#D55E00' title 'normal F_N'\n",
-                            title_string(wrapped(title)), last, data(history_csv)),
-                png);
+  Figure f{name, script(kJunctionForce, 1000, 700), {}, {}};
+  const auto file = inside(history_csv, folder);
+  f.add("title", title_text(title));
+  f.add("history", file.string());
+  f.add("last distance drawn [m]", last);
+  f.data.push_back(file);
+  return f;
 }
 
-std::optional<std::filesystem::path> plot_junction_strength(const std::filesystem::path& runs_csv,
-                                                            const std::filesystem::path& png, const std::string& title,
-                                                            const std::vector<double>& contact_ratios, double sigma,
-                                                            double p_crit, double length) {
-  // Columns: 1 D/L, 2 p_N [Pa], 6 peak p_T [Pa], 9 outcome (0 flattened, 1 sheared, 2 detached). Each D/L in
-  // its colour, each outcome its marker; (7.9), p_T = (D/L) σ, is each D/L's plateau, (7.10),
-  // p_T = (p_N/p_crit) σ, the same line for all: drawn once, in black, over the plateaus' ends.
-  std::string plots;
+Figure junction_strength_figure(const std::string& name, const std::string& title, const fs::path& runs_csv,
+                                const std::vector<double>& contact_ratios, double sigma, double p_crit, double length,
+                                const fs::path& folder) {
+  Figure f{name, script(kJunctionStrength, 1100, 760), {}, {}};
   const double s = sigma / 1e9, pc = p_crit / 1e9;
-  const std::string file = data(runs_csv);
-  struct Outcome {
-    int code, point;
-    const char* name;
-  };
-  constexpr Outcome outcomes[] = {{1, 7, "sheared"}, {0, 6, "flattened"}, {2, 9, "detached (rolling)"}};
-  for (std::size_t k = 0; k < contact_ratios.size(); ++k) {
-    const double c = contact_ratios[k];
-    const std::string rgb = colour(k);
-    const std::string label = length > 0.0 ? fmt::format("D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
-                                           : fmt::format("D/L = {:.3g}", c);
-    for (const auto& o : outcomes)
-      plots += fmt::format("'{}' every ::1 using (($1=={:.17g} && $9=={}) ? $2/1e9 : 1/0):($6/1e9) with points pt {} "
-                           "ps 1.6 lw 1.5 lc rgb '#{}' notitle, ",
-                           file, c, o.code, o.point, rgb);
-    plots += fmt::format("(x < {0:.17g}*{1:.17g} ? {0:.17g}*{2:.17g} : 1/0) with lines lw 2 lc rgb '#{3}' title '{4}', ",
-                         c, pc, s, rgb, literal(label));
-  }
   // (7.10) from the smallest plateau's end on: below it the model is the plateaus.
   const double from = contact_ratios.empty() ? 0.0 : *std::min_element(contact_ratios.begin(), contact_ratios.end()) * pc;
-  plots += fmt::format("(x >= {0:.17g} ? x/{1:.17g}*{2:.17g} : 1/0) with lines lw 2 lc rgb 'black' "
-                       "title '(7.10): p_T = (p_N/p_{{crit}}) σ', ",
-                       from, pc, s);
-  plots += "x with lines dt 2 lc rgb 'black' title 'p_T = p_N', ";
-  plots += "NaN with lines lw 2 lc rgb '#999999' title '(7.9): p_T = (D/L) σ, a line per D', ";
-  for (std::size_t k = 0; k < std::size(outcomes); ++k)
-    plots += fmt::format("{}NaN with points pt {} ps 1.6 lw 1.5 lc rgb 'black' title 'DEM run: {}'", k ? ", " : "",
-                         outcomes[k].point, outcomes[k].name);
-  return render_plot(
-      fmt::format("set datafile separator ','\nset key outside right top\n"
-                  "set offsets 0, graph 0.05, graph 0.05, 0\nset title {}\nset xlabel 'normal pressure p_N [GPa]'\n"
-                  "set ylabel 'peak tangential stress p_T [GPa]'\nset grid\nset xrange [0:*]\nset yrange [0:*]\n"
-                  "set samples 1000\nset label 1 'fit: σ = {:.3g} GPa, p_{{crit}} = {:.3g} GPa' at graph 0.5, graph 0.05\n"
-                  "plot {}\n",
-                  title_string(title), s, pc, plots),
-      png, 1100, 700);
+  const auto file = inside(runs_csv, folder);
+  f.add("title", title_text(title));
+  f.add("runs", file.string());
+  f.add("sigma [GPa]", s);
+  f.add("p_crit [GPa]", pc);
+  f.add("(7.10) from p_N [GPa]", from);
+  f.add("fit", fmt::format("fit: σ = {:.3g} GPa, p_crit = {:.3g} GPa", s, pc));
+  f.add("D/L values", static_cast<double>(contact_ratios.size()));
+  for (const double c : contact_ratios) {
+    f.add("D/L", c);
+    f.add("legend", length > 0.0 ? fmt::format("D = {:.3g} nm (D/L = {:.3g})", c * length * 1e9, c)
+                                 : fmt::format("D/L = {:.3g}", c));
+  }
+  f.data.push_back(file);
+  return f;
 }
 
 }  // namespace wearscale::coupling

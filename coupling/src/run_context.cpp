@@ -9,4 +9,10 @@ void RunContext::report(const std::string& name, double value, const std::string
   results_[name] = {{"value", value}, {"unit", unit}, {"description", description}};
 }
 
+void RunContext::draw_figures() {
+  std::vector<Figure> figures;
+  figures.swap(figures_);
+  for (auto& file : coupling::draw_figures(dir_, figures)) add_file(file);
+}
+
 }  // namespace wearscale::coupling

@@ -40,6 +40,7 @@ struct Config::State {
   std::string source;
   std::filesystem::path base_dir;  // relative paths in the file are relative to its folder
   std::set<std::string, std::less<>> used;
+  std::map<std::string, units::Dimension, std::less<>> dimensions;  // key → the dimension it was read in (number())
   std::map<std::string, std::string, std::less<>> overridden;  // key → origin of its value
   bool collecting = false;          // collect_errors()
   std::vector<std::string> errors;  // what was recorded while collecting
@@ -345,6 +346,7 @@ void Config::record_default(std::string_view key, nlohmann::json value) const {
 double Config::number(std::string_view key, const Range& range, units::Dimension dim) const {
   const std::string full = full_key(key);
   mark_used(key);
+  state_->dimensions[full] = dim;
   const std::string unit = dim == units::dimensionless ? "" : " " + dim.to_string();
   const std::string allowed = range.describe() + unit;
   const toml::node* n = find(state_->root, full);
@@ -504,8 +506,15 @@ std::string Config::choice_or(std::string_view key, std::string fallback,
   }
 }
 
+std::optional<units::Dimension> Config::dimension_of(std::string_view key) const {
+  const auto it = state_->dimensions.find(full_key(key));
+  if (it == state_->dimensions.end()) return std::nullopt;
+  return it->second;
+}
+
 std::vector<double> Config::numbers(std::string_view key, const Range& range, units::Dimension dim) const {
   mark_used(key);
+  state_->dimensions[full_key(key)] = dim;
   const std::string unit = dim == units::dimensionless ? "" : " " + dim.to_string();
   const toml::node* n = find(state_->root, full_key(key));
   const std::string allowed = "array of numbers in " + range.describe() + unit;

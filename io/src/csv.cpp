@@ -1,6 +1,7 @@
 #include "wearscale/io/csv.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -31,6 +32,18 @@ std::string factor_word(std::string factor, bool denominator) {
   return (denominator ? "per_" : "") + symbol + power;
 }
 
+// A number as pandas writes a float64 column, so that a column reads back as
+// floats whatever its values: "0.0", "3126.0", "1.5e-06", "nan", "inf"; a
+// negative zero as "0.0", a NaN of either sign as "nan". 10 significant digits.
+std::string number_cell(double v) {
+  if (v == 0.0) return "0.0";
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0.0 ? "inf" : "-inf";
+  std::string text = fmt::format("{:.10g}", v);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
 std::size_t row_count(const std::vector<std::string>* labels, const std::vector<std::span<const double>>& columns) {
   return labels ? labels->size() : columns.empty() ? 0 : columns[0].size();
 }
@@ -48,7 +61,7 @@ std::string table_text(const std::vector<std::string>* labels, const std::vector
   for (std::size_t r = 0; r < rows; ++r) {
     if (labels) text += quoted((*labels)[r]);
     for (std::size_t k = 0; k < columns.size(); ++k)
-      text += fmt::format("{}{:.10g}", k || labels ? "," : "", columns[k][r]);
+      text += (k || labels ? "," : "") + number_cell(columns[k][r]);
     text += '\n';
   }
   return text;
@@ -80,6 +93,8 @@ std::string csv_column_name(const std::string& name, const std::string& unit) {
   const auto slash = unit.find('/');
   for (int part = 0; part < 2; ++part) {
     std::string text = part == 0 ? unit.substr(0, slash) : slash == std::string::npos ? "" : unit.substr(slash + 1);
+    if (part == 1 && text.size() > 2 && text.front() == '(' && text.back() == ')')  // "mm^3/(N·m)"
+      text = text.substr(1, text.size() - 2);
     for (std::size_t at; (at = text.find("·")) != std::string::npos;) text.replace(at, std::string("·").size(), " ");
     for (std::size_t start = 0; start < text.size();) {
       const auto space = text.find_first_of(" *", start);

@@ -59,16 +59,21 @@ std::pair<std::string, std::string> split(const std::string& path) {
   return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
 }
 
+// A string attribute of variable length, UTF-8, a scalar (h5py reads it as a
+// str): its text lives in the file's global heap and the object header holds
+// a reference, so no text, however long (a case of megabytes), can exceed
+// the 64 KiB an attribute may take in an object header.
 void put_string_attribute(hid_t obj, const std::string& name, std::string_view value) {
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  check(H5Tset_size(type, value.empty() ? 1 : value.size()), "string type");
+  check(H5Tset_size(type, H5T_VARIABLE), "string type");
   check(H5Tset_cset(type, H5T_CSET_UTF8), "string charset");
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
   Handle attr(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   if (!attr.valid()) throw std::runtime_error("HDF5: cannot create attribute " + name);
-  const std::string buf = value.empty() ? std::string(1, '\0') : std::string(value);
-  check(H5Awrite(attr, type, buf.data()), "write attribute " + name);
+  const std::string text(value);  // a C string: the text up to a NUL, as every reader takes it
+  const char* data = text.c_str();
+  check(H5Awrite(attr, type, &data), "write attribute " + name);
 }
 
 void put_number_attribute(hid_t obj, const std::string& name, hid_t file_type, hid_t memory_type, const void* value) {
@@ -83,9 +88,12 @@ void put_number_attribute(hid_t obj, const std::string& name, double value) {
   put_number_attribute(obj, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
+// A dataset of doubles of shape `dims` (empty: a scalar, shape ()).
 void write_dataset(hid_t parent, const std::string& name, const std::vector<hsize_t>& dims, const double* data,
                    std::string_view unit) {
-  Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+  Handle space(dims.empty() ? H5Screate(H5S_SCALAR)
+                            : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+               H5Sclose);
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   hsize_t total = 1;
   for (auto d : dims) total *= d;
@@ -270,18 +278,33 @@ void H5Writer::write_table(const std::string& group_path, const std::vector<std:
   set_attribute(group_path, "columns", list);
 }
 
-void H5Writer::write_field(const std::string& path, const RealField& field, std::string_view unit) {
+namespace {
+// The attributes every field carries beside its values (write_field, reserve_field).
+void put_field_attributes(hid_t ds, const Grid2D& grid, std::string_view unit, std::string_view description,
+                          std::array<double, 2> origin) {
+  if (!unit.empty()) put_string_attribute(ds, "unit", unit);
+  put_number_attribute(ds, "lx", grid.lx);
+  put_number_attribute(ds, "ly", grid.ly);
+  put_number_attribute(ds, "x0", origin[0]);
+  put_number_attribute(ds, "y0", origin[1]);
+  put_string_attribute(ds, "axes", "x,y");
+  if (!description.empty()) put_string_attribute(ds, "description", description);
+}
+}  // namespace
+
+void H5Writer::write_field(const std::string& path, const RealField& field, std::string_view unit,
+                           std::string_view description, std::array<double, 2> origin) {
   std::lock_guard lock(hdf5_mutex());
   if (field.layout() != Layout::Physical) throw std::invalid_argument("H5Writer::write_field: spectral field");
   Handle g(group(path), H5Oclose);
   const auto name = split(path).second;
-  write_dataset(g, name, {field.rows(), field.cols()}, field.data(), unit);
+  write_dataset(g, name, {field.rows(), field.cols()}, field.data(), {});
   Handle ds(H5Dopen2(g, name.c_str(), H5P_DEFAULT), H5Dclose);
-  put_number_attribute(ds, "lx", field.grid().lx);
-  put_number_attribute(ds, "ly", field.grid().ly);
+  put_field_attributes(ds, field.grid(), unit, description, origin);
 }
 
-std::uint64_t H5Writer::reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit) {
+std::uint64_t H5Writer::reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit,
+                                      std::string_view description, std::array<double, 2> origin) {
   std::lock_guard lock(hdf5_mutex());
   if (storage_ != H5Storage::Disk) throw std::logic_error("H5Writer::reserve_field: the file is built in memory");
   Handle g(group(path), H5Oclose);
@@ -296,9 +319,7 @@ std::uint64_t H5Writer::reserve_field(const std::string& path, const Grid2D& gri
   if (!ds.valid()) throw std::runtime_error("HDF5: cannot create dataset " + path);
   const haddr_t offset = H5Dget_offset(ds);
   if (offset == HADDR_UNDEF) throw std::runtime_error("HDF5: no storage allocated for " + path);
-  if (!unit.empty()) put_string_attribute(ds, "unit", unit);
-  put_number_attribute(ds, "lx", grid.lx);
-  put_number_attribute(ds, "ly", grid.ly);
+  put_field_attributes(ds, grid, unit, description, origin);
   return static_cast<std::uint64_t>(offset);
 }
 
@@ -330,7 +351,7 @@ void H5Writer::hand_over() {
 void H5Writer::write_scalar(const std::string& path, double value, std::string_view unit) {
   std::lock_guard lock(hdf5_mutex());
   Handle g(group(path), H5Oclose);
-  write_dataset(g, split(path).second, {1}, &value, unit);
+  write_dataset(g, split(path).second, {}, &value, unit);
 }
 
 void H5Writer::set_attribute(const std::string& object, const std::string& name, std::string_view value) {

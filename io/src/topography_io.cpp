@@ -285,7 +285,7 @@ fs::path write_surface(const fs::path& file, const RealField& h, const SurfaceAt
   sidecar.replace_extension(".xdmf");
   {
     H5Writer writer(file);
-    writer.write_field(default_surface_dataset, h, "m");
+    writer.write_field(default_surface_dataset, h, "m", "surface heights h(x, y)");
     for (const auto& [key, value] : attributes) writer.set_attribute(default_surface_dataset, key, value);
     writer.set_attribute("/surface", "description", "surface heights h(x_i, y_j), rows i along x, columns j along y");
     xdmf.add(writer, {{default_surface_dataset, "height"}});

@@ -45,10 +45,12 @@ std::filesystem::path write_wear_map_h5(const std::filesystem::path& path, const
   const std::vector<double> codes(map.region.begin(), map.region.end());
   h5.write_field("/region", as_field(map, codes));
   h5.set_attribute("/region", "codes", legend(map));
+  h5.set_attribute("/region", "description", "the region of each point of the map, by its code (attribute codes)");
   h5.set_attribute("/region", "axes", fmt::format("rows: {}, columns: {}", map.x.name, map.y.name));
   for (const auto& l : map.layers) {
     h5.write_field("/ratio/" + l.name, as_field(map, l.values));
     h5.set_attribute("/ratio/" + l.name, "description", l.description);
+    h5.set_attribute("/ratio/" + l.name, "axes", fmt::format("rows: {}, columns: {}", map.x.name, map.y.name));
   }
   // ParaView: the region codes and every layer; the map samples cell
   // centres, so the first node is half a cell in from (min, min).

@@ -15,6 +15,7 @@
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/topography_io.hpp"
 #include "wearscale/io/xdmf.hpp"
+#include "field_descriptions.hpp"
 
 namespace wearscale::studies {
 
@@ -186,11 +187,11 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
   for (std::size_t k = 0; k < g.size(); ++k) in_contact[k] = p[k] > 0.0 ? 1.0 : 0.0;
   const auto h5_path = out / "contact.h5";
   H5Writer h5(h5_path);
-  h5.write_field("/surface/height", h, "m");
-  h5.write_field("/fields/pressure", p, "Pa");
-  h5.write_field("/fields/gap", gap, "m");
-  h5.write_field("/fields/displacement", u, "m");
-  h5.write_field("/fields/contact", in_contact, "1");
+  h5.write_field("/surface/height", h, "m", contact_field_description("/surface/height"));
+  h5.write_field("/fields/pressure", p, "Pa", contact_field_description("/fields/pressure"));
+  h5.write_field("/fields/gap", gap, "m", contact_field_description("/fields/gap"));
+  h5.write_field("/fields/displacement", u, "m", contact_field_description("/fields/displacement"));
+  h5.write_field("/fields/contact", in_contact, "1", contact_field_description("/fields/contact"));
   h5.set_attribute("/", "case_toml", config.to_toml());
 
   auto report = [&](const std::string& name, double v, const std::string& unit, const std::string& what) {
@@ -284,7 +285,7 @@ void write_frictional_study(const Config& config, const FrictionalCase& fc, cons
   H5Writer h5(h5_path);
   std::vector<XdmfField> xdmf;
   auto field = [&](const std::string& path, const RealField& f, const char* unit, const std::string& name) {
-    h5.write_field(path, f, unit);
+    h5.write_field(path, f, unit, contact_field_description(path));
     xdmf.push_back({path, name});
   };
   field("/surface/height", fields.height, "m", "height");

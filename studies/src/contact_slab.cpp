@@ -27,6 +27,7 @@
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/laid_out_file.hpp"
 #include "wearscale/io/xdmf.hpp"
+#include "field_descriptions.hpp"
 
 namespace wearscale::studies {
 
@@ -182,7 +183,8 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
     });
     file.emplace(context->output_dir() / "contact.h5", [&](H5Writer& h5) {
       std::vector<std::uint64_t> at;
-      for (const SlabField& f : fields) at.push_back(h5.reserve_field(f.dataset, g, f.unit));
+      for (const SlabField& f : fields)
+        at.push_back(h5.reserve_field(f.dataset, g, f.unit, contact_field_description(f.dataset)));
       h5.set_attribute("/", "case_toml", config.to_toml());
       for (const auto& [name, v, unit] : figures) h5.write_scalar("/results/" + name, v, unit);
       tables(h5);

@@ -737,8 +737,7 @@ class DemStudy : public Study {
     // The title states the parameters, then the verdict.
     const std::string title =
         outputs.contains("caption") ? outputs["caption"].get<std::string>() + ": " + verdict : verdict;
-    if (auto png = coupling::plot_junction_force(out / (history + "_history.csv"), out / (history + "_force.png"), title))
-      context.add_file(*png);
+    context.add_figure(coupling::junction_force_figure(history + "_force", title, out / (history + "_history.csv"), out));
   }
   // [dem]: the material (dem_material) and the contact law (read_contact_law).
   static Schema material_keys(const std::string& flag_doc) {

@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/task_farm.hpp"
 #include "wearscale/coupling/pipeline.hpp"
@@ -81,46 +82,61 @@ class PipelineStudy final : public Study {
   double estimated_cost() const override { return pipeline_.estimated_cost(); }
   void run_other_rank(const Config& /*inputs*/) override { mpi::serve_ensembles(); }
 
-  void run(const Config& /*inputs*/, RunContext& context) override {
+  void run(const Config& inputs, RunContext& context) override {
     const mpi::ServedRun served;  // under mpirun: the other ranks serve; this rank runs the scales alone
     Exchange exchange;
     pipeline_.run(exchange, context);
     write_exchange_provenance(exchange, context.h5());
     const auto friction = context.output_dir() / "friction.csv";
     if (std::filesystem::exists(OutputSet::readable(friction)))
-      if (auto png = plot_friction_curves({{case_name_, friction}}, context.output_dir() / "friction.png", case_name_))
-        context.add_file(*png);
+      context.add_figure(friction_figure("friction", run_title(inputs, case_name_), {{case_name_, friction}},
+                                         context.output_dir()));
   }
 
   // The pin-on-disc curves of the runs side by side, and Fig. 9.25 for a sweep over the oxide's thickness.
   std::vector<std::filesystem::path> finish_sweep(const SweepRuns& s) override {
-    std::vector<std::filesystem::path> files;
+    std::vector<Figure> figures;
+    const std::string title = sweep_title(*s.probe, s.case_name, s.key, s.series_key);
+    // A run's legend entry: its swept values in words ("SiO2 layer 0.5 µm, layer test tilted").
+    auto label = [&](std::size_t k) {
+      std::string text = parameter_words(*s.probe, s.key, s.values[k]);
+      if (!s.series_key.empty()) text += ", " + parameter_words(*s.probe, s.series_key, s.series_values[k]);
+      return text;
+    };
     std::vector<FrictionCurve> curves, profiles;
-    for (std::size_t k = 0; k < s.folders.size(); ++k)
-      if (std::filesystem::exists(s.folders[k] / "friction.csv")) curves.push_back({s.labels[k], s.folders[k] / "friction.csv"});
-    if (!curves.empty())
-      if (auto png = plot_friction_curves(curves, s.output_dir / "friction_curves.png", sweep_title(*s.probe, s.case_name, s.key, s.series_key))) files.push_back(*png);
     for (std::size_t k = 0; k < s.folders.size(); ++k) {
-      const auto csv = s.folders[k] / "disc_profile.csv";
-      if (std::filesystem::exists(csv))
-        profiles.push_back({curves.size() == s.folders.size() ? curves[k].label : csv.parent_path().filename().string(), csv});
+      if (std::filesystem::exists(s.folders[k] / "friction.csv")) curves.push_back({label(k), s.folders[k] / "friction.csv"});
+      if (std::filesystem::exists(s.folders[k] / "disc_profile.csv"))
+        profiles.push_back({label(k), s.folders[k] / "disc_profile.csv"});
     }
+    // One figure for so many runs is no longer read: each run has its own.
+    constexpr std::size_t most = 16;
+    if (curves.size() > most || profiles.size() > most)
+      log::info("{}: {} runs, too many for one figure: no friction_curves or disc_profiles figure (each run has its "
+                "own friction figure)",
+                s.output_dir.string(), std::max(curves.size(), profiles.size()));
+    if (!curves.empty() && curves.size() <= most)
+      figures.push_back(friction_figure("friction_curves", title, curves, s.output_dir));
     const std::string thickness = "materials.layer.thickness";
-    if (!profiles.empty()) {
+    if (!profiles.empty() && profiles.size() <= most) {
       // One oxide for all runs: its interface is drawn.
       const bool one_oxide = s.key != thickness && s.series_key != thickness && s.probe->has(thickness);
       const double h =
           one_oxide ? s.probe->number(thickness, Range::non_negative().or_infinite(), units::length) : 0.0;
-      if (auto png = plot_disc_profiles(profiles, s.output_dir / "disc_profiles.png", sweep_title(*s.probe, s.case_name, s.key, s.series_key), h))
-        files.push_back(*png);
+      figures.push_back(disc_profiles_figure("disc_profiles", title, profiles, h, s.output_dir));
     }
     if (s.key == thickness && s.numeric_values &&
         std::find(s.result_names.begin(), s.result_names.end(), "mu_mean") != s.result_names.end()) {
+      // A table per series value, in the order of the runs.
       std::vector<SweepTable> tables;
-      for (const auto& [label, csv] : s.tables) tables.push_back({label, csv});
-      if (auto png = plot_friction_vs_thickness(tables, s.output_dir / "friction_vs_thickness.png")) files.push_back(*png);
+      const std::size_t per_table = s.tables.empty() ? 0 : s.folders.size() / s.tables.size();
+      for (std::size_t t = 0; t < s.tables.size(); ++t)
+        tables.push_back({s.series_key.empty() ? s.tables[t].first
+                                               : parameter_words(*s.probe, s.series_key, s.series_values[t * per_table]),
+                          s.tables[t].second});
+      figures.push_back(friction_vs_thickness_figure("friction_vs_thickness", title, tables, s.output_dir));
     }
-    return files;
+    return draw_figures(s.output_dir, figures);
   }
 
  private:

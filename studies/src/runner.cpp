@@ -416,6 +416,7 @@ void execute(PreparedRun& run, const RunOptions& options, bool show_progress, co
     h5.write_scalar("/results/" + name, value, r["unit"].get<std::string>());
     h5.set_attribute("/results/" + name, "description", r["description"].get<std::string>());
   }
+  context.draw_figures();  // all of the run's, with one gnuplot
   summary.results = context.results();
   summary.notes = context.notes();
   summary.files = context.files();
@@ -454,6 +455,18 @@ std::string label_of(const std::string& key, const std::string& value) {
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '=' || c == '.' || c == '-' || c == '+' || c == '_'))
       c = '_';
   return leaf;
+}
+
+// The name of a swept key's column in a sweep table: its last two components
+// joined, "materials.layer.thickness" → "layer_thickness" (the table adds
+// the unit: "layer_thickness_m").
+std::string swept_column(const std::string& key) {
+  const auto last = key.rfind('.');
+  if (last == std::string::npos || last == 0) return key;
+  const auto before = key.rfind('.', last - 1);
+  std::string column = key.substr(before == std::string::npos ? 0 : before + 1);
+  std::replace(column.begin(), column.end(), '.', '_');
+  return column;
 }
 
 // The checks of a [sweep] that need no run: the key, its values, the table.
@@ -752,19 +765,30 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
     names.push_back("failed");
     result_units.push_back("1");
   }
-  // The swept values as numbers in SI, if they all are and share one dimension (else the tables keep the text).
+  // The swept values as numbers in SI, in the dimension the case reads the key in (a bare number is SI
+  // in it: a thickness of 1e-6 is metres), if they all are numbers (else the tables keep the text).
   std::vector<double> numeric;
-  std::optional<units::Dimension> swept_dimension;
-  for (const auto& v : values) try {
-      const auto q = units::parse_quantity(v);
-      if (swept_dimension && !(*swept_dimension == q.dimension)) throw std::invalid_argument("mixed dimensions");
-      swept_dimension = q.dimension;
-      numeric.push_back(q.value);
-    } catch (const std::exception&) {
-      numeric.clear();
-      break;
-    }
+  std::optional<units::Dimension> swept_dimension = runs.front().cfg.dimension_of(key);
+  if (swept_dimension) {
+    for (std::size_t k = 0; k < values.size(); ++k) try {
+        numeric.push_back(runs[k].cfg.number(key, Range::any().or_infinite(), *swept_dimension));
+      } catch (const std::exception&) {
+        numeric.clear();
+        break;
+      }
+  } else {  // a key no number getter read (an integer, a choice): its values as written
+    for (const auto& v : values) try {
+        const auto q = units::parse_quantity(v);
+        if (swept_dimension && !(*swept_dimension == q.dimension)) throw std::invalid_argument("mixed dimensions");
+        swept_dimension = q.dimension;
+        numeric.push_back(q.value);
+      } catch (const std::exception&) {
+        numeric.clear();
+        break;
+      }
+  }
   const bool numeric_values = numeric.size() == values.size();
+  const std::string column = swept_column(key);
   std::vector<std::pair<std::string, std::filesystem::path>> tables;  // label, file
   for (std::size_t first = 0; first < runs.size(); first += values.size()) {
     std::vector<std::vector<double>> columns(names.size());
@@ -784,16 +808,19 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
     const auto table = sweep.output_dir / (label.empty() ? base : std::filesystem::path(base.stem().string() + "_" + label +
                                                                                         base.extension().string()));
     std::vector<std::string> comments{
-        fmt::format("sweep of case '{}' over {} (SI units; nan: not reached)", sweep.case_name, key)};
+        fmt::format("sweep of case '{}' over {} (column {}); SI units unless a column's name says otherwise; nan: "
+                    "not reached",
+                    sweep.case_name, key,
+                    numeric_values ? csv_column_name(column, swept_dimension->to_string()) : column)};
     if (!label.empty()) comments.push_back(fmt::format("series: {} = {}", series_key, run_series[first]));
     if (any_failed) comments.push_back("failed = 1: the run failed (summary.json lists why); its figures are nan");
     if (numeric_values) {
-      std::vector<std::string> header{key}, header_units{swept_dimension->to_string()};
+      std::vector<std::string> header{column}, header_units{swept_dimension->to_string()};
       header.insert(header.end(), names.begin(), names.end());
       header_units.insert(header_units.end(), result_units.begin(), result_units.end());
       write_csv(table, header, spans, header_units, comments);
     } else {
-      write_csv(table, key, values, names, spans, result_units, comments);
+      write_csv(table, column, values, names, spans, result_units, comments);
     }
     sweep.files.push_back(table);
     tables.push_back({label.empty() ? "model" : label, table});
@@ -812,6 +839,8 @@ void publish_sweep(SweepPlan& plan, Config& probe, const std::vector<std::string
     sweep.runs.push_back(runs[k].summary);
     view.folders.push_back(runs[k].summary.output_dir);
     view.labels.push_back(label_of(key, run_value[k]) + (series_key.empty() ? "" : " " + label_of(series_key, run_series[k])));
+    view.values.push_back(run_value[k]);
+    view.series_values.push_back(series_key.empty() ? std::string() : run_series[k]);
   }
   if (any_failed)
     log::warn("{}: no sweep plots (some runs failed)", sweep.output_dir.string());

@@ -1,7 +1,7 @@
 // The analytic 2D wear map of N micro-contacts (thesis ch. 3, Fig. 3.7) over
 // [wearmap.analytic2d]: the regions plastic, separated (d_r ≥ d*, 3.25) and
 // combined (d_a ≤ d_r²/d*, 3.27) over (d_r/d*, d_a/d*). Outputs:
-// wearmap_analytic2d.h5 (+ .xdmf), .csv and .png (gnuplot, with the lines).
+// wearmap_analytic2d.h5 (+ .xdmf), .csv and the figure (.png, .pdf, with the lines).
 //
 //   [wearmap.analytic2d]
 //   dr_over_dstar = [0.0, 3.0]   # real contact size d_r/d*
@@ -22,21 +22,19 @@ namespace {
 namespace fs = std::filesystem;
 namespace oi = coupling::okabe_ito;
 
-std::optional<fs::path> plot_2d(const wear::WearMap& map, const fs::path& csv, const fs::path& png) {
+coupling::Figure figure_2d(const wear::WearMap& map, const std::string& csv) {
   // Fig. 3.7: d_r = d* (3.25) and d_a = d_r²/d* (3.27) where d_a ≥ d_r, and d_a = d_r (a single contact).
   // Fills: neutral greys for the inaccessible (d_a < d_r) and plastic regions, the wear regions tinted
   // halfway to white, so that the lines, drawn in the full colours, show over them.
   constexpr double fill = 0.5;
-  const std::string script =
-      heat_map_script(map, "2D wear map of N micro-contacts (thesis Fig. 3.7)", csv,
-                      {"#BBBBBB", "#F7F7F7", oi::tint(oi::sky_blue, fill), oi::tint(oi::orange, fill)}) +
-      fmt::format(", \\\n  '+' using (1):(1 + $0/999*({} - 1)) with lines lw 2 dt 2 lc rgb 'black' "
-                  "title 'd_r = d* (3.25)'",
-                  map.y.max) +
-      fmt::format(", \\\n  (x >= 1 ? x*x : 1/0) with lines lw 2 dt 2 lc rgb '{}' title 'd_a = d_r^2/d* (3.27)', \\\n",
-                  oi::blue) +
-      "  x with lines lw 1 lc rgb 'black' title 'd_a = d_r (one contact)'\n";
-  return coupling::render_plot(script, png, 1000, 760);
+  return heat_map_figure(map, "2D wear map of N micro-contacts (thesis Fig. 3.7)", csv,
+                         {"#BBBBBB", "#F7F7F7", oi::tint(oi::sky_blue, fill), oi::tint(oi::orange, fill)},
+                         fmt::format(", \\\n  \"+\" using (1):(1 + $0/999*(given_number(6) - 1)) with lines lw 2 dt 2 lc rgb "
+                                     "\"black\" title \"d_r = d* (3.25)\""
+                                     ", \\\n  (x >= 1 ? x*x : NaN) with lines lw 2 dt 2 lc rgb \"{}\" title "
+                                     "\"d_a = d_r^2/d* (3.27)\", \\\n"
+                                     "  x with lines lw 1 lc rgb \"black\" title \"d_a = d_r (one contact)\"",
+                                     oi::blue));
 }
 
 class WearmapAnalytic2d final : public Study {
@@ -73,8 +71,7 @@ class WearmapAnalytic2d final : public Study {
 
   void run(const Config& cfg, RunContext& context) override {
     const auto map = wear::analytic_map_2d(x_, y_);
-    publish_analytic_map(cfg, context, map,
-                         [&](const fs::path& csv, const fs::path& png) { return plot_2d(map, csv, png); });
+    publish_analytic_map(cfg, context, map, [&](const std::string& csv) { return figure_2d(map, csv); });
   }
 
  private:

@@ -2,7 +2,7 @@
 // Fig. 4.6) over [wearmap.analytic3d]: the regions plastic, one separated,
 // two separated and combined from R ≥ 1 of (4.48) over (d/l, d*/l), at the
 // interaction constant C_inter of (4.49). Outputs: wearmap_analytic3d.h5
-// (+ .xdmf), .csv and .png (gnuplot, with the lines R = 1).
+// (+ .xdmf), .csv and the figure (.png, .pdf, with the lines R = 1).
 //
 //   [wearmap.analytic3d]
 //   interaction = "max"          # ν = 0.5, θ = 0 (C_inter = 2/3); "min": θ = π/2 (1/3); or nu and theta
@@ -27,32 +27,31 @@ namespace {
 namespace fs = std::filesystem;
 namespace oi = coupling::okabe_ito;
 
-std::optional<fs::path> plot_3d(const wear::WearMap& map, double c_inter, const fs::path& csv, const fs::path& png) {
+coupling::Figure figure_3d(const wear::WearMap& map, double c_inter, const std::string& csv) {
   // Fig. 4.6: the lines R = 1 of (4.48) at this C_inter (solid) and at the other bound (dashed), and d = d*,
-  // each case's line in the full colour of the region it bounds (filled tinted halfway to white).
+  // each case's line in the full colour of the region it bounds (filled tinted halfway to white). The
+  // constants C_inter are texts 7 (the case's) and 8 (the other bound).
   constexpr double fill = 0.5;
   const double other = c_inter > 0.5 ? wear::min_interaction_constant : wear::max_interaction_constant;
   std::string lines;
   const char* colours[] = {oi::blue, oi::bluish_green, oi::vermillion};
-  for (const double c : {c_inter, other})
+  for (const int c : {7, 8})
     for (std::size_t k = 0; k < wear::particle_cases.size(); ++k) {
       const auto d = wear::particle_cases[k];
       const std::string c_case = d == wear::ParticleCase::OneSeparated   ? "1"
                                  : d == wear::ParticleCase::TwoSeparated ? "0.5"
                                                                          : "(x/(1+x))**2";
-      lines += fmt::format(", \\\n  ({:g} + 3*pi/8*{:.17g}*x)*x*{} with lines lw 2 dt {} lc rgb '{}' "
-                           "title '{}, C_{{inter}} = {:.3g}'",
-                           wear::count_constant(d), c, c_case, c == c_inter ? 1 : 2, colours[k], spaced(wear::name(d)),
-                           c);
+      lines += fmt::format(", \\\n  ({:g} + 3*pi/8*given_number({})*x)*x*{} with lines lw 2 dt {} lc rgb \"{}\" "
+                           "title sprintf(\"{}, C_{{inter}} = %.3g\", given_number({}))",
+                           wear::count_constant(d), c, c_case, c == 7 ? 1 : 2, colours[k], spaced(wear::name(d)), c);
     }
-  const std::string title =
-      fmt::format("3D wear map of two micro-contacts, R ≥ 1 (4.48) at C_{{inter}} = {:.4g} (thesis Fig. 4.6)", c_inter);
-  const std::string script =
-      heat_map_script(map, title, csv,
-                      {"#F7F7F7", oi::tint(oi::sky_blue, fill), oi::tint(oi::bluish_green, fill),
-                       oi::tint(oi::orange, fill)}) +
-      lines + ", \\\n  x with lines lw 1 dt 3 lc rgb 'black' title 'd = d*'\n";
-  return coupling::render_plot(script, png, 1000, 760);
+  auto f = heat_map_figure(
+      map, fmt::format("3D wear map of two micro-contacts, R ≥ 1 (4.48) at C_{{inter}} = {:.4g} (thesis Fig. 4.6)", c_inter),
+      csv, {"#F7F7F7", oi::tint(oi::sky_blue, fill), oi::tint(oi::bluish_green, fill), oi::tint(oi::orange, fill)},
+      lines + ", \\\n  x with lines lw 1 dt 3 lc rgb \"black\" title \"d = d*\"");
+  f.add("C_inter", c_inter);
+  f.add("C_inter, the other bound", other);
+  return f;
 }
 
 class WearmapAnalytic3d final : public Study {
@@ -118,8 +117,7 @@ class WearmapAnalytic3d final : public Study {
     for (const auto d : wear::particle_cases)
       context.report(fmt::format("least_d_{}", wear::name(d)), 1.0 / wear::boundary_dstar_over_l(d, 1.0, c_inter_),
                      "1", fmt::format("least d/d* of two adjacent contacts (d = l) for {} (4.48)", wear::name(d)));
-    publish_analytic_map(cfg, context, map,
-                         [&](const fs::path& csv, const fs::path& png) { return plot_3d(map, c_inter_, csv, png); });
+    publish_analytic_map(cfg, context, map, [&](const std::string& csv) { return figure_3d(map, c_inter_, csv); });
   }
 
  private:

@@ -57,51 +57,83 @@ const char* const kViridis = "set palette defined (0 '#440154', 1 '#482878', 2 '
 const char* const kCurveColours[] = {oi::blue, oi::vermillion, oi::bluish_green, oi::reddish_purple,
                                      oi::orange, oi::sky_blue, oi::black};
 
-// Fig. 5.6: one map (column `col` of the pixel CSV) over (p̃_N, d*/L), invalid pixels crossed.
-std::string map_script(const fs::path& csv, int col, const std::string& title, bool log_scale,
-                       const std::vector<double>& loads, const std::vector<double>& dstars) {
+// The PNG and PDF loop around a figure's commands.
+std::string both_formats(const std::string& body) {
+  return "do for [FORMAT in \"png pdf\"] {\n"
+         "if (FORMAT eq \"png\") { set terminal pngcairo size 1000,760 font \"sans,11\" } "
+         "else { set terminal pdfcairo size 7in,5.32in font \"sans,9\" }\n"
+         "set output name.\".\".FORMAT\n" +
+         body + "unset output\n}\n";
+}
+
+// Fig. 5.6: one map (column `col` of the pixel CSV `csv`, a file name) over (p̃_N, d*/L), invalid pixels
+// crossed. Texts: 1 title, 2 table, 3 column, 4 log scale (1/0), 5-8 x and y ranges, 9 the pixels' size.
+coupling::Figure map_figure(const std::string& name, const std::string& csv, int col, const std::string& title,
+                            bool log_scale, const std::vector<double>& loads, const std::vector<double>& dstars) {
   const std::size_t nl = loads.size(), nd = dstars.size();
   const double ps = 60.0 / static_cast<double>(std::max(nl, nd));
   const double dx = nl > 1 ? 0.5 * (loads.back() - loads.front()) / double(nl - 1) : 0.5 * loads.front();
   const double fy = nd > 1 ? std::pow(dstars.back() / dstars.front(), 0.5 / double(nd - 1)) : 1.5;
-  // One header line, then a row per pixel (skip 1).
-  return fmt::format(
-      "set datafile separator ','\nset title '{}' noenhanced\nset xlabel 'normalized load p̃_N (5.1)' noenhanced\n"
-      "set ylabel 'd*/L (4.35), crossed: invalid' noenhanced\nset logscale y\nset xrange [{}:{}]\n"
-      "set yrange [{}:{}]\n{}{}set key off\n"
-      "plot '{}' skip 1 using 1:2:({}) with points pt 5 ps {:.3g} lc palette, \\\n"
-      "  '' skip 1 using 1:($9 > 0.5 ? NaN : $2) with points pt 2 ps {:.3g} lc rgb 'black'\n",
-      title, loads.front() - dx, loads.back() + dx, dstars.front() / fy, dstars.back() * fy,
-      log_scale ? "set logscale cb\nset format cb '10^{%L}'\n" : "", kViridis, csv.string(),
-      log_scale ? fmt::format("${} > 0 ? ${} : NaN", col, col) : fmt::format("${}", col), ps, 0.6 * ps);
+  coupling::Figure f{name, "", {}, {csv}};
+  f.add("title", title);
+  f.add("table", csv);
+  f.add("column", col);
+  f.add("log scale", log_scale ? 1.0 : 0.0);
+  f.add("x min", loads.front() - dx);
+  f.add("x max", loads.back() + dx);
+  f.add("y min", dstars.front() / fy);
+  f.add("y max", dstars.back() * fy);
+  f.add("pixel size", ps);
+  f.script = both_formats(
+      std::string("col = int(given_number(3))\nlog_scale = int(given_number(4))\nps = given_number(9)\n"
+                  "set title given_text(1) noenhanced\nset xlabel \"normalized load p̃_N (5.1)\" noenhanced\n"
+                  "set ylabel \"d*/L (4.35), crossed: invalid\" noenhanced\nset logscale y\n"
+                  "set xrange [given_number(5):given_number(6)]\nset yrange [given_number(7):given_number(8)]\n"
+                  "if (log_scale) { set logscale cb; set format cb \"10^{%L}\" }\n") +
+      kViridis +
+      "set key off\n"
+      "plot given_text(2) using 1:2:(log_scale ? (column(col) > 0 ? column(col) : NaN) : column(col)) with points pt 5 "
+      "ps ps lc palette, \\\n"
+      "  given_text(2) using 1:(column(9) > 0.5 ? NaN : column(2)) with points pt 2 ps 0.6*ps lc rgb \"black\"\n");
+  return f;
 }
 
 // Fig. 5.7: curves against p̃_N at every `step`-th d*, mean ± sd, invalid
 // points cut; the number of particles also smoothed (dashed, §5.2; a count,
-// drawn from 0 up: the filter's undershoot below 0 is not drawn).
-std::string curves_script(const fs::path& csv, const std::vector<double>& dstars, bool volume) {
+// drawn from 0 up: the filter's undershoot below 0 is not drawn). Texts: 1
+// table, 2 volume (1/0), 3 the number of curves m, then per curve its first
+// column and its d*/L.
+coupling::Figure curves_figure(const std::string& name, const std::string& csv, const std::vector<double>& dstars,
+                               bool volume) {
   const std::size_t nd = dstars.size(), step = std::max<std::size_t>(1, nd / 5);
-  const int off = volume ? 4 : 2;  // columns per d*: count, sd, volume, sd, valid, smoothed count
-  std::string plots;
-  for (std::size_t d = 0, c = 0; d < nd; d += step, ++c) {
-    const int base = static_cast<int>(6 * d);
-    const char* colour = kCurveColours[c % std::size(kCurveColours)];
-    plots += fmt::format("{}'{}' skip 1 using 1:(column({}) > 0.5 ? column({}) : NaN):(column({})) with yerrorlines "
-                         "lw 1.5 pt 7 ps 0.8 lc rgb '{}' title 'd*/L = {:.3g}'",
-                         plots.empty() ? "" : ", ", csv.string(), 6 + base, off + base, off + 1 + base, colour,
-                         dstars[d]);
-    if (!volume)
-      plots += fmt::format(", '' skip 1 using 1:(column({}) > 0.5 ? max(0, column({})) : NaN) with lines dt 2 lw 1.5 "
-                           "lc rgb '{}' notitle",
-                           6 + base, 7 + base, colour);
+  coupling::Figure f{name, "", {}, {csv}};
+  f.add("table", csv);
+  f.add("volume", volume ? 1.0 : 0.0);
+  const std::size_t m_index = f.add("curves", 0.0);
+  std::size_t m = 0;
+  for (std::size_t d = 0; d < nd; d += step, ++m) {
+    f.add("first column", static_cast<double>(6 * d));
+    f.add("d*/L", dstars[d]);
   }
-  return fmt::format(
-      "set datafile separator ','\nmax(a, b) = a > b ? a : b\nset title '{}'\n"
-      "set xlabel 'normalized load p̃_N (5.1)' noenhanced\nset ylabel '{}'\n{}set grid\n"
-      "set offsets graph 0.03, graph 0.03, 0, 0\nset key top left noenhanced\nplot {}\n",
-      volume ? "Wear volume (Fig. 5.7b)" : "Number of particles (Fig. 5.7a; dashed: Savitzky-Golay, 3/11)",
-      volume ? "wear volume V / L^3" : "number of particles",
-      volume ? "set logscale y\nset format y '10^{%L}'\n" : "set yrange [0:*]\n", plots);
+  f.texts[m_index - 1].second = fmt::format("{}", m);
+  std::string colours;
+  for (const char* c : kCurveColours) colours += (colours.empty() ? "" : " ") + std::string(c);
+  // Columns per d*: count, sd, volume, sd, valid, smoothed count (after p_N_tilde).
+  f.script = both_formats(
+      "colours = \"" + colours + "\"\ncolour(c) = word(colours, (c - 1) % words(colours) + 1)\n" +
+      "file = given_text(1)\nvolume = int(given_number(2))\nm = int(given_number(3))\nbase(c) = int(given_number(3 + 2*c - 1))\n"
+      "dstar(c) = given_number(3 + 2*c)\noff = volume ? 4 : 2\nmax(a, b) = a > b ? a : b\n"
+      "set title (volume ? \"Wear volume (Fig. 5.7b)\" : \"Number of particles (Fig. 5.7a; dashed: Savitzky-Golay, "
+      "3/11)\")\n"
+      "set xlabel \"normalized load p̃_N (5.1)\" noenhanced\n"
+      "set ylabel (volume ? \"wear volume V / L^3\" : \"number of particles\")\n"
+      "if (volume) { set logscale y; set format y \"10^{%L}\" } else { set yrange [0:*] }\n"
+      "set grid\nset offsets graph 0.03, graph 0.03, 0, 0\nset key top left noenhanced Left reverse opaque\n"
+      "plot for [c=1:m] file using 1:(column(6 + base(c)) > 0.5 ? column(off + base(c)) : NaN):(column(off + 1 + "
+      "base(c))) with yerrorlines lw 1.5 pt 7 ps 0.8 lc rgb colour(c) title sprintf(\"d*/L = %.3g\", dstar(c)), \\\n"
+      "  for [c=1:(volume ? 0 : m)] file using 1:(column(6 + base(c)) > 0.5 ? max(0, column(7 + base(c))) : NaN) "
+      "with lines dt 2 lw 1.5 lc rgb colour(c) notitle\n");
+  return f;
 }
 
 // The naive baseline on a few pixels (first seed, loads spread over the axis, middle d*), against the fast
@@ -429,6 +461,7 @@ void WearmapRough::run(const Config& cfg, RunContext& context) {
       RealField f(g);
       for (std::size_t k = 0; k < v.size(); ++k) f[k] = v[k];
       w.write_field(path, f);
+      w.set_attribute(path, "axes", "rows: p_N_tilde (/axes/p_N_tilde), columns: dstar_over_L (/axes/dstar_over_L)");
     };
     field(cm, "/maps/count_mean"), field(cs, "/maps/count_sd"), field(vm, "/maps/volume_mean");
     field(vs, "/maps/volume_sd"), field(valid, "/maps/valid");
@@ -479,18 +512,13 @@ void WearmapRough::run(const Config& cfg, RunContext& context) {
   }
   for (const auto& f : {h5, xmf, csv, pcsv, ccsv, kcsv}) context.add_file(f);
   // Fig. 5.6 maps and Fig. 5.7 curves (column 3: count, 5: volume).
-  const std::pair<std::string, std::string> plots[] = {
-      {map_script(OutputSet::readable(csv), 3, "Number of particles (Fig. 5.6a)", false, spec.loads,
-                  spec.critical_diameters),
-       "count"},
-      {map_script(OutputSet::readable(csv), 5, "Wear volume / L^3 (Fig. 5.6b)", true, spec.loads,
-                  spec.critical_diameters),
-       "volume"},
-      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, false), "curves_count"},
-      {curves_script(OutputSet::readable(ccsv), spec.critical_diameters, true), "curves_volume"}};
-  for (const auto& [script, name] : plots)
-    if (auto p = coupling::render_plot(script, out / ("wearmap_rough_" + name + ".png"), 1000, 760))
-      context.add_file(*p);
+  const std::string pixels_csv = csv.filename().string(), curves_csv = ccsv.filename().string();
+  context.add_figure(map_figure("wearmap_rough_count", pixels_csv, 3, "Number of particles (Fig. 5.6a)", false,
+                                spec.loads, spec.critical_diameters));
+  context.add_figure(map_figure("wearmap_rough_volume", pixels_csv, 5, "Wear volume / L^3 (Fig. 5.6b)", true,
+                                spec.loads, spec.critical_diameters));
+  context.add_figure(curves_figure("wearmap_rough_curves_count", curves_csv, spec.critical_diameters, false));
+  context.add_figure(curves_figure("wearmap_rough_curves_volume", curves_csv, spec.critical_diameters, true));
 
   std::size_t invalid = 0;
   double max_count = 0.0;

@@ -33,7 +33,8 @@ TEST(PinOnDiscCli, TheFrictionTableCarriesItsMovingAverageAndTheDiscItsGrooves) 
   EXPECT_THAT(j["results"]["mu_final"]["description"].get<std::string>(), HasSubstr("last 5 %"));
   const std::string csv = slurp(work / "pod" / "friction.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "distance_m,friction,friction_moving_average,pin_wear_m3,disc_wear_m3,contact_fraction,layer_share,grooves")
+            "distance_m,friction,friction_moving_average,pin_wear_m3,disc_wear_m3,contact_fraction,layer_share,grooves,"
+            "pin_specific_wear_rate_mm3_per_N_per_m,disc_specific_wear_rate_mm3_per_N_per_m")
       << "one header line, then rows (pandas.read_csv reads it as is)";
   const auto notes = nlohmann::json::parse(slurp(work / "pod" / "friction.csv.json"));
   EXPECT_EQ(notes["rows"].get<std::size_t>(), static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')) - 1);

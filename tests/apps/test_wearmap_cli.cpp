@@ -262,3 +262,23 @@ TEST(WearmapCli, SidecarsLetParaViewOpenTheMapFields) {
     expect_xdmf_describes(xmf, h5, {12, 12}, layers);
   }
 }
+
+// The three kinds, run one after the other without --out (as the README runs
+// them), each into a folder of its own: no map replaces another's.
+TEST(WearmapCli, EachKindHasItsOwnDefaultFolderSoNoneReplacesAnother) {
+  const fs::path dir = work / "defaults";
+  fs::create_directories(dir);
+  for (const std::string& cmd :
+       {"wearmap analytic2d --n 11 -q", "wearmap analytic3d --n 11 -q",
+        "wearmap rough --n 32 --ql 2 --seeds 1 --n-loads 2 --n-dstar 2 -q"}) {
+    const auto r = run_cli(cmd, dir);
+    ASSERT_EQ(r.status, 0) << cmd << ": " << r.err;
+  }
+  for (const char* kind : {"analytic2d", "analytic3d", "rough"}) {
+    const fs::path folder = dir / "out" / ("wearmap-" + std::string(kind));
+    EXPECT_TRUE(fs::exists(folder / ("wearmap_" + std::string(kind) + ".h5"))) << folder;
+    EXPECT_TRUE(fs::exists(folder / ("wearmap_" + std::string(kind) + ".csv"))) << folder;
+    EXPECT_TRUE(fs::exists(folder / "summary.json")) << folder;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out" / "wearmap"));
+}

@@ -1,89 +1,112 @@
-// Legends and titles of the sweep figures: a run folder's name as a reader
-// would write it; a signal while gnuplot draws stops the run.
+// The figures' words: legends and titles name a run's parameters as a
+// reader writes them, and no name, path or value reaches a figure's script:
+// a kind's script is the same text whatever the run.
 #include <gtest/gtest.h>
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
 #include <filesystem>
-#include <thread>
+#include <fstream>
 
 #include "scratch_dir.hpp"
-#include "wearscale/core/errors.hpp"
-#include "wearscale/core/interrupt.hpp"
 #include "wearscale/coupling/plots.hpp"
 
-using wearscale::coupling::legend_label;
+using wearscale::Config;
+using wearscale::coupling::parameter_words;
 
-TEST(Plots, LegendsNameTheOxideThicknessInMicrometres) {
-  EXPECT_EQ(legend_label("thickness=5e-07"), "h = 0.5 µm");
-  EXPECT_EQ(legend_label("thickness=3e-06"), "h = 3 µm");
-  EXPECT_EQ(legend_label("thickness=0"), "h = 0 (no oxide)");
-  EXPECT_EQ(legend_label("thickness=inf"), "h = ∞ (bulk oxide)");
+namespace {
+Config oxide_case(const std::string& thickness = "\"1 um\"") {
+  return Config::from_string("[materials]\npin = \"SiO2\"\ndisc = \"Si\"\nlayer = { material = \"SiO2\", thickness = " +
+                             thickness + " }\n[scale.macro]\npin_radius = \"3 mm\"\nnormal_load = \"1 N\"\n"
+                             "velocity = \"8 mm/s\"\n");
+}
+const Config oxide = oxide_case();
+}  // namespace
+
+TEST(Plots, LegendsNameTheOxideLayerAndItsThicknessInMicrometres) {
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "5e-07"), "SiO2 layer 0.5 µm");
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "3e-06"), "SiO2 layer 3 µm");
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "1 um"), "SiO2 layer 1 µm");
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "0"), "no SiO2 layer");
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "inf"), "bulk SiO2");
 }
 
-TEST(Plots, OtherLegendsKeepTheirKeyAndValue) {
-  EXPECT_EQ(legend_label("slope=0.02 layer_test=disc"), "slope = 0.02, layer_test = disc");
-  EXPECT_EQ(legend_label("pin-on-disc-si-oxide"), "pin-on-disc-si-oxide");
-  EXPECT_EQ(legend_label("thickness=thick"), "thickness = thick") << "not a number: as it is";
+TEST(Plots, LegendsNameThePinOnDiscKeysInWordsWithTheirUnits) {
+  EXPECT_EQ(parameter_words(oxide, "scale.macro.normal_load", "2"), "load 2 N");
+  EXPECT_EQ(parameter_words(oxide, "scale.macro.velocity", "0.016"), "speed 16 mm/s");
+  EXPECT_EQ(parameter_words(oxide, "scale.macro.pin_radius", "1.5 mm"), "pin radius 1.5 mm");
+  EXPECT_EQ(parameter_words(oxide, "scale.macro.nonplanarity.slope", "0.02"), "disc tilt 0.02");
 }
 
-// The sweep figures' titles state the parameters the case sets, in the units a
-// reader would write, and leave a swept key to the legends.
-TEST(Plots, SweepTitlesStateTheLoadTheVelocityThePinAndTheSweptKey) {
-  const auto c = wearscale::Config::from_string(
-      "[materials]\npin = \"SiO2\"\ndisc = \"Si\"\n"
-      "[scale.macro]\npin_radius = \"3 mm\"\nnormal_load = \"1 N\"\nvelocity = \"8 mm/s\"\n");
-  EXPECT_EQ(wearscale::coupling::sweep_title(c, "oxide-thickness-sweep", "materials.layer.thickness"),
-            "oxide-thickness-sweep\nSiO2 pin on Si disc, R = 3 mm, F_N = 1 N, v = 8 mm/s; "
-            "swept: materials.layer.thickness");
-  EXPECT_EQ(wearscale::coupling::sweep_title(c, "loads", "scale.macro.normal_load", "scale.macro.velocity"),
-            "loads\nSiO2 pin on Si disc, R = 3 mm; swept: scale.macro.normal_load, series: scale.macro.velocity");
-  EXPECT_EQ(wearscale::coupling::sweep_title(wearscale::Config::from_string(""), "bare", "k"), "bare\nswept: k")
+TEST(Plots, OtherKeysKeepTheirLastPartAndValue) {
+  EXPECT_EQ(parameter_words(oxide, "scale.macro.nonplanarity.layer_test", "tilted"), "layer test tilted");
+  EXPECT_EQ(parameter_words(oxide, "wearmap.rough.hurst", "0.8"), "hurst 0.8");
+  EXPECT_EQ(parameter_words(oxide, "materials.layer.thickness", "thick"), "thickness thick") << "not a number: as it is";
+}
+
+TEST(Plots, LengthsAreWrittenInTheUnitAReaderUses) {
+  using wearscale::coupling::length_words;
+  EXPECT_EQ(length_words(5e-7), "0.5 µm");
+  EXPECT_EQ(length_words(3e-3), "3 mm");
+  EXPECT_EQ(length_words(2e-8), "20 nm");
+  EXPECT_EQ(length_words(0.5), "500 mm");
+  EXPECT_EQ(length_words(2.0), "2 m");
+  EXPECT_EQ(length_words(0.0), "0");
+}
+
+// Each run's figure is titled by its parameters, so that the six runs of the
+// oxide sweep are told apart; a sweep's figures leave the swept key to the legends.
+TEST(Plots, ARunsTitleNamesItsParametersInWords) {
+  EXPECT_EQ(wearscale::coupling::run_title(oxide, "oxide"),
+            "oxide\nSiO2 pin on Si disc, SiO2 layer 1 µm, pin radius 3 mm, load 1 N, speed 8 mm/s");
+  EXPECT_EQ(wearscale::coupling::run_title(oxide_case("inf"), "oxide"),
+            "oxide\nSiO2 pin on Si disc, bulk SiO2, pin radius 3 mm, load 1 N, speed 8 mm/s");
+  // A name of 70 000 characters is cut to 150 (and an ellipsis): the parameters still fit in the figure's title.
+  std::string cut(150, 'x');
+  cut.append("…\nSiO2 pin on Si disc, SiO2 layer 1 µm, pin radius 3 mm, load 1 N, speed 8 mm/s");
+  EXPECT_EQ(wearscale::coupling::run_title(oxide, std::string(70000, 'x')), cut);
+}
+
+TEST(Plots, SweepTitlesStateTheFixedParametersAndWhatIsSweptInWords) {
+  EXPECT_EQ(wearscale::coupling::sweep_title(oxide, "oxide-thickness-sweep", "materials.layer.thickness"),
+            "oxide-thickness-sweep\nSiO2 pin on Si disc, pin radius 3 mm, load 1 N, speed 8 mm/s; "
+            "swept: SiO2 layer thickness");
+  EXPECT_EQ(wearscale::coupling::sweep_title(oxide, "loads", "scale.macro.normal_load", "scale.macro.velocity"),
+            "loads\nSiO2 pin on Si disc, SiO2 layer 1 µm, pin radius 3 mm; swept: load; series: speed");
+  EXPECT_EQ(wearscale::coupling::sweep_title(Config::from_string(""), "bare", "a.k"), "bare\nswept: k")
       << "nothing set, nothing stated";
 }
 
-// Ctrl-C reaches the whole foreground process group: gnuplot, which answers
-// SIGINT by exiting with status 1, and the run, which must stop rather than
-// go on without the plot (and be taken as complete by a resume). SIGTERM to
-// the group (a scheduler, mpirun) likewise. The drawing process is a child in
-// a process group of its own; it says by its exit status what render_plot did.
-TEST(Plots, ASignalToTheProcessGroupWhileGnuplotDrawsStopsTheRunWithoutThePlot) {
-  if (!wearscale::coupling::plotting_available()) GTEST_SKIP() << "gnuplot is not installed";
-  const ScratchDir scratch("wearscale_plot_signal_");
-  for (const int signal : {SIGINT, SIGTERM}) {
-    const auto dir = scratch.file(signal == SIGINT ? "int" : "term");
-    std::filesystem::create_directories(dir);
-    const auto ready = dir / "drawing", png = dir / "slow.png";
-    // About 9 s of drawing on a 2-vCPU host; the signal comes as it begins.
-    // gnuplot says it has started by a file of its own (`set print`, no shell:
-    // a shell it waited for would keep SIGINT from it), then draws.
-    const std::string script = "set print '" + ready.string() + "'\nprint 'drawing'\nset print\nset samples 1000\n"
-                               "plot for [i=1:300] sin(x*i) notitle\n";
-    const pid_t child = ::fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      ::setpgid(0, 0);
-      wearscale::install_interrupt_handlers();
-      int outcome = 3;
-      try {
-        outcome = wearscale::coupling::render_plot(script, png) ? 0 : 1;
-      } catch (const wearscale::Interrupted&) {
-        outcome = 2;
-      } catch (...) {
-      }
-      ::_exit(outcome);
-    }
-    for (int wait = 0; wait < 600 && !std::filesystem::exists(ready); ++wait)
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    ASSERT_TRUE(std::filesystem::exists(ready)) << "gnuplot did not start";
-    ASSERT_EQ(::kill(-child, signal), 0);
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFEXITED(status)) << "signal " << signal << ": the drawing process itself was killed";
-    EXPECT_EQ(WEXITSTATUS(status), 2) << "signal " << signal << ": 0 drawn, 1 left out as if gnuplot had failed, 3 another error";
-    EXPECT_FALSE(std::filesystem::exists(png)) << "signal " << signal;
+// The security of the figures by construction: whatever the titles, legends
+// and file names (a user's, hostile or not), the script of a kind is one
+// text; they reach it only through its texts file.
+TEST(Plots, AFiguresScriptIsTheSameTextWhateverItsTitlesLegendsAndFiles) {
+  using namespace wearscale::coupling;
+  const ScratchDir scratch("wearscale_plot_script_");
+  const auto hostile = scratch.file("x'; system('touch PWNED'); print('");
+  const auto plain = scratch.file("plain");
+  for (const auto& d : {hostile, plain}) {
+    std::filesystem::create_directories(d / "run `id` $(id)");
+    std::ofstream(d / "run `id` $(id)" / "friction.csv") << "distance_m,pin_wear_m3,disc_wear_m3\n0.0,0.0,0.0\n";
+    std::ofstream(d / "run `id` $(id)" / "disc_profile.csv") << "x_m,worn_depth_m\n0.0,0.0\n";
   }
+  const std::string evil = "\"'; system(\"touch PWNED\") @ARG0 `id` $(id) \\\n#";
+  const auto a = friction_figure("f", evil, {{evil, hostile / "run `id` $(id)" / "friction.csv"}}, hostile);
+  const auto b = friction_figure("f", "title", {{"label", plain / "run `id` $(id)" / "friction.csv"}}, plain);
+  EXPECT_EQ(figure_script(a), figure_script(b));
+  EXPECT_EQ(figure_script(a).find("PWNED"), std::string::npos);
+  EXPECT_EQ(figure_script(a).find("`id`"), std::string::npos);
+  const auto c = disc_profiles_figure("d", evil, {{evil, hostile / "run `id` $(id)" / "disc_profile.csv"}}, 1e-6, hostile);
+  const auto d = disc_profiles_figure("d", "t", {{"l", plain / "run `id` $(id)" / "disc_profile.csv"}}, 0.0, plain);
+  EXPECT_EQ(figure_script(c), figure_script(d));
+  EXPECT_EQ(a.data.front(), std::filesystem::path("run `id` $(id)") / "friction.csv")
+      << "data named relative to the figure's folder";
+}
+
+// The disc's profiles are drawn against the x of disc_profile.csv (in mm):
+// the same x as run.h5's fields and final_surfaces.xdmf (docs/fields.md).
+TEST(Plots, TheDiscProfilesAreDrawnAgainstTheTablesX) {
+  const ScratchDir scratch("wearscale_plot_profile_");
+  std::ofstream(scratch.file("disc_profile.csv")) << "x_m,worn_depth_m,through_layer\n0.0,0.0,0.0\n";
+  const auto f = wearscale::coupling::disc_profiles_figure("disc_profiles", "t", {{"l", scratch.file("disc_profile.csv")}},
+                                                           0.0, scratch.path());
+  EXPECT_NE(f.script.find("using (column(\"x_m\")*1e3):(-column(\"worn_depth_m\")*1e6)"), std::string::npos);
 }

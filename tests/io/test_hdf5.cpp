@@ -68,6 +68,95 @@ TEST(HDF5, SeriesTableFieldAndAttributesReadBack) {
   fs::remove_all(path.parent_path());
 }
 
+// What h5py users expect (h5py's norms): text attributes are variable-length
+// UTF-8 strings (h5py reads a str, so attrs['unit'] == 'Pa'), a scalar is a
+// dataset of shape (), and a field says what its axes are and what it is.
+TEST(HDF5, TextIsVariableLengthUtf8ScalarsHaveShapeNoneAndFieldsNameTheirAxes) {
+  const auto path = scratch("h5py_norms.h5");
+  RealField p(Grid2D(4, 2, 2e-3, 1e-3));
+  {
+    H5Writer w(path);
+    w.write_field("/fields/pressure", p, "Pa", "contact pressure", {-1e-3, -0.5e-3});
+    w.write_scalar("/results/mu_mean", 0.5, "1");
+    w.set_attribute("/", "note", "µm³ ∞");
+    w.commit();
+  }
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  for (const auto& [object, name] : std::vector<std::pair<std::string, std::string>>{
+           {"/fields/pressure", "unit"}, {"/fields/pressure", "axes"}, {"/fields/pressure", "description"},
+           {"/", "note"}, {"/", "wearscale_version"}}) {
+    const hid_t attr = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(attr, 0) << object << " " << name;
+    const hid_t type = H5Aget_type(attr), space = H5Aget_space(attr);
+    EXPECT_GT(H5Tis_variable_str(type), 0) << object << " " << name;
+    EXPECT_EQ(H5Tget_cset(type), H5T_CSET_UTF8) << object << " " << name;
+    EXPECT_EQ(H5Sget_simple_extent_type(space), H5S_SCALAR) << object << " " << name;
+    H5Sclose(space), H5Tclose(type), H5Aclose(attr);
+  }
+  H5Fclose(file);
+  H5Reader r(path);
+  EXPECT_TRUE(r.shape("/results/mu_mean").empty()) << "shape (), not (1,)";
+  EXPECT_EQ(r.read_scalar("/results/mu_mean"), 0.5);
+  EXPECT_EQ(r.string_attribute("/fields/pressure", "axes"), "x,y");
+  EXPECT_EQ(r.string_attribute("/fields/pressure", "description"), "contact pressure");
+  EXPECT_EQ(r.number_attribute("/fields/pressure", "x0"), -1e-3);
+  EXPECT_EQ(r.number_attribute("/fields/pressure", "y0"), -0.5e-3);
+  EXPECT_EQ(r.string_attribute("/", "note"), "µm³ ∞");
+  fs::remove_all(path.parent_path());
+}
+
+// An attribute may take at most 64 KiB of its object's header: a resolved
+// case of megabytes (a long name, a sweep of thousands of values) would not
+// fit as a fixed-length string. Variable-length text lives in the file's heap,
+// whatever its length.
+TEST(HDF5, ATextAttributeOfMegabytesIsWrittenAndReadBack) {
+  const auto path = scratch("long_attribute.h5");
+  std::string text(3 << 20, 'x');
+  for (std::size_t k = 0; k < text.size(); k += 97) text[k] = '\n';
+  {
+    H5Writer w(path);
+    w.set_attribute("/", "case_toml", text);
+    w.set_attribute("/", "name", std::string(70000, 'y'));
+    w.commit();
+  }
+  H5Reader r(path);
+  EXPECT_EQ(r.string_attribute("/", "case_toml"), text);
+  EXPECT_EQ(r.string_attribute("/", "name"), std::string(70000, 'y'));
+  fs::remove_all(path.parent_path());
+}
+
+// h5py, as a user reads a file: str attributes, () scalars, a field's axes.
+TEST(HDF5, H5pyReadsTextAsStrAndScalarsAsShapeNone) {
+  const std::string python = WEARSCALE_TEST_PYTHON;
+  if (std::system((python + " -c 'import h5py' >/dev/null 2>&1").c_str()) != 0)
+    GTEST_SKIP() << "h5py is not installed (Debian: python3-h5py)";
+  const auto path = scratch("h5py.h5");
+  RealField p(Grid2D(4, 2, 2e-3, 1e-3));
+  {
+    H5Writer w(path);
+    w.write_field("/fields/pressure", p, "Pa", "contact pressure");
+    w.write_scalar("/results/mu_mean", 0.5, "1");
+    w.set_attribute("/", "case_toml", std::string(70000, 'x'));
+    w.commit();
+  }
+  const std::string check =
+      "import h5py, sys\n"
+      "f = h5py.File(sys.argv[1], 'r')\n"
+      "assert f['/fields/pressure'].attrs['unit'] == 'Pa', repr(f['/fields/pressure'].attrs['unit'])\n"
+      "assert f['/results/mu_mean'].attrs['unit'] == '1'\n"
+      "assert f['/results/mu_mean'].shape == (), f['/results/mu_mean'].shape\n"
+      "assert f['/results/mu_mean'][()] == 0.5\n"
+      "assert f['/fields/pressure'].attrs['axes'] == 'x,y'\n"
+      "assert f['/fields/pressure'].attrs['description'] == 'contact pressure'\n"
+      "assert f.attrs['case_toml'] == 'x' * 70000\n"
+      "assert isinstance(f.attrs['wearscale_version'], str)\n";
+  const auto script = scratch("check.py");
+  std::ofstream(script) << check;
+  EXPECT_EQ(std::system((python + " '" + script.string() + "' '" + path.string() + "'").c_str()), 0);
+  fs::remove_all(path.parent_path());
+}
+
 // Whatever writes it (a run, a contact study, a wear map, a generated
 // surface), a file says which wearscale made it, from which revision and when.
 TEST(HDF5, EveryFileCarriesTheVersionTheRevisionAndItsCreationTime) {

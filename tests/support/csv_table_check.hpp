@@ -42,13 +42,16 @@ inline std::vector<std::string> split_row(const std::string& line) {
   return cells;
 }
 
-// "rad/m" → "rad_per_m", "m^3" → "m3", "J/m^2" → "J_per_m2".
+// "rad/m" → "rad_per_m", "m^3" → "m3", "J/m^2" → "J_per_m2", "mm^3/(N·m)" → "mm3_per_N_per_m"
+// (every factor after the '/' divides).
 inline std::string unit_word(std::string unit) {
   std::string out;
+  bool denominator = false;
   for (std::size_t i = 0; i < unit.size(); ++i) {
-    if (unit[i] == '^') continue;
-    if (unit[i] == '/') out += "_per_";
-    else if (unit[i] == ' ' || unit[i] == '*') out += "_";
+    const bool dot = unit.compare(i, 2, "·") == 0;
+    if (unit[i] == '^' || unit[i] == '(' || unit[i] == ')') continue;
+    if (unit[i] == '/') out += "_per_", denominator = true;
+    else if (unit[i] == ' ' || unit[i] == '*' || dot) out += denominator ? "_per_" : "_", i += dot ? 1 : 0;
     else out += unit[i];
   }
   return out;

@@ -1,6 +1,7 @@
 // macro/bem-pin-on-disc: the pin-on-disc wear model of §9.3.2 on the BEM,
 // driven by the interface laws of the nanoscale (one per interface the pin
 // meets: the oxide layer and the substrate beneath it).
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,7 @@
 #include "wearscale/io/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
+#include "wearscale/tribometer/specific_wear_rate.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
 #include "wearscale/tribometer/state_bounds.hpp"
 
@@ -146,7 +148,7 @@ class MacroPinOnDisc final : public Scale {
     // before the checkpoint come back; the run then goes on from there.
     std::vector<tribometer::PinOnDiscSample> samples;
     std::vector<Snapshot> snapshots;
-    XdmfSidecar series(model.grid());  // the snapshots in ParaView, the sliding distance as time
+    XdmfSidecar series(model.grid(), origin(model.grid()));  // the snapshots in ParaView, the sliding distance as time
     std::size_t n = 0;
     long adaptive_steps = 0;
     double next_step = 0.0;
@@ -228,7 +230,7 @@ class MacroPinOnDisc final : public Scale {
     report(ctx, model, samples);
     write_fields(ctx, model.grid(), snapshot(model, "/macro/final"));
     write_disc(ctx, model);
-    XdmfSidecar(model.grid())
+    XdmfSidecar(model.grid(), origin(model.grid()))
         .add(ctx.h5(), snapshot_fields("/macro/final"))
         .write(ctx.output_dir() / "final_surfaces.xdmf", ctx.h5().final_path());
     ctx.add_file(ctx.output_dir() / "final_surfaces.xdmf");
@@ -241,6 +243,9 @@ class MacroPinOnDisc final : public Scale {
 
  private:
   static constexpr const char* kOwner = "macro/bem-pin-on-disc";
+
+  // An oxide of finite thickness on a substrate: grooves (bands worn through it) can form.
+  bool layered() const { return std::isfinite(s_.layer_thickness) && s_.layer_thickness > 0.0; }
 
   // Surfaces and pressure at one distance (fields_every, and the final state).
   struct Snapshot {
@@ -259,15 +264,26 @@ class MacroPinOnDisc final : public Scale {
     return {{group + "/pin", "pin"}, {group + "/disc", "disc"}, {group + "/pressure", "pressure"}};
   }
 
+  // Every output's x and y (fields, sidecars, disc_profile.csv, the figures):
+  // 0 on the pin's axis, the window spanning [-lx/2, lx/2) × [-ly/2, ly/2).
+  static std::array<double, 2> origin(const Grid2D& g) { return {-0.5 * g.lx, -0.5 * g.ly}; }
+
   // The snapshot's fields and its distance attribute; a step of `series` if given.
   static void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap, XdmfSidecar* series = nullptr) {
     RealField pin(g), disc(g), pressure(g);
     std::copy(snap.pin.begin(), snap.pin.end(), pin.begin());
     std::copy(snap.pressure.begin(), snap.pressure.end(), pressure.begin());
     std::copy(snap.disc.begin(), snap.disc.end(), disc.begin());  // the disc under the pin's window
-    ctx.h5().write_field(snap.group + "/pin", pin, "m");
-    ctx.h5().write_field(snap.group + "/disc", disc, "m");
-    ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa");
+    ctx.h5().write_field(snap.group + "/pin", pin, "m",
+                         "pin surface profile, measured from the plane of its unworn summit (at x = y = 0); x "
+                         "across the track, y along the sliding",
+                         origin(g));
+    ctx.h5().write_field(snap.group + "/disc", disc, "m",
+                         "disc surface height under the pin's window (0 unworn, negative where worn); x across the "
+                         "track, y along the sliding",
+                         origin(g));
+    ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa",
+                         "contact pressure between pin and disc; x across the track, y along the sliding", origin(g));
     ctx.h5().set_attribute(snap.group, "distance", snap.distance);
     ctx.h5().set_attribute(snap.group, "distance_unit", "m");
     if (series != nullptr) series->add_step(ctx.h5(), snap.distance, snapshot_fields(snap.group));
@@ -281,22 +297,26 @@ class MacroPinOnDisc final : public Scale {
     std::vector<double> x(g.nx), depth(g.nx), through(g.nx);
     for (std::size_t i = 0; i < g.nx; ++i) {
       x[i] = g.x(i) - 0.5 * g.lx;
-      depth[i] = -profile[i];
-      through[i] = std::isfinite(s_.layer_thickness) && depth[i] > s_.layer_thickness ? 1.0 : 0.0;
+      depth[i] = 0.0 - profile[i];  // an unworn cell 0, not -0
+      through[i] = !layered() ? std::nan("") : depth[i] > s_.layer_thickness ? 1.0 : 0.0;
     }
     ctx.h5().write_table("/macro/final/disc_profile", {"x", "worn_depth", "through_layer"}, {x, depth, through},
                          {"m", "m", "1"});
     const auto csv = ctx.output_dir() / "disc_profile.csv";
     write_csv(csv, {"x", "worn_depth", "through_layer"}, {x, depth, through}, {"m", "m", "1"},
-              {"macro/bem-pin-on-disc: final worn depth of the disc across the track (mean along it); "
-               "through_layer = 1 where the oxide is worn through (a groove)"});
+              {"macro/bem-pin-on-disc: final worn depth of the disc across the track (mean along it), x = 0 on the "
+               "pin's axis; through_layer = 1 where the oxide is worn through (a groove), nan without an oxide on "
+               "a substrate (h = 0 or bulk)"});
     ctx.add_file(csv);
     if (s_.track == tribometer::Track::Resolved) {
       const std::size_t cells = s_.track_cells();
       const Grid2D strip(g.nx, cells, g.lx, static_cast<double>(cells) * g.dx());
       RealField disc(strip);
       std::copy(model.disc_profile().begin(), model.disc_profile().end(), disc.begin());
-      ctx.h5().write_field("/macro/final/disc_track", disc, "m");
+      ctx.h5().write_field("/macro/final/disc_track", disc, "m",
+                           "disc surface height along the whole track (resolved), 0 unworn, negative where worn; x "
+                           "across the track, y along it from where the pin started",
+                           {-0.5 * g.lx, 0.0});
     }
   }
 
@@ -377,8 +397,10 @@ class MacroPinOnDisc final : public Scale {
       "layer_contact", "substrate_contact", "max_pressure",      "iterations", "grooves"};
 
   void report(RunContext& ctx, const tribometer::PinOnDisc& model, const std::vector<tribometer::PinOnDiscSample>& x) {
-    std::vector<double> s, mu, integral, v_pin, v_disc, area, on_layer, iterations, grooves;
+    std::vector<double> s, mu, integral, v_pin, v_disc, area, on_layer, iterations, grooves, k_pin, k_disc;
     for (const auto& e : x) {
+      k_pin.push_back(tribometer::specific_wear_rate(e.pin_wear, s_.normal_load, e.distance));
+      k_disc.push_back(tribometer::specific_wear_rate(e.disc_wear, s_.normal_load, e.distance));
       s.push_back(e.distance);
       mu.push_back(e.friction);
       integral.push_back(e.friction_integral);
@@ -387,25 +409,34 @@ class MacroPinOnDisc final : public Scale {
       area.push_back(e.contact_fraction);
       on_layer.push_back(e.layer_contact);
       iterations.push_back(e.iterations);
-      grooves.push_back(e.grooves);
+      // Grooves are bands worn through an oxide into the substrate: none to count without both (h = 0 or bulk).
+      grooves.push_back(layered() ? static_cast<double>(e.grooves) : std::nan(""));
     }
     // Every average of μ is over sliding distance, from the integral ∫μ ds the
     // integrator carries (samples of an adaptive run are not evenly spaced).
     const tribometer::FrictionAverage average(s, integral);
     const auto smoothed = average.centred_moving_average(moving_window_);
+    const std::string k_unit = tribometer::specific_wear_rate_unit;
     ctx.h5().write_table("/macro/series",
                          {"distance", "friction", "friction_moving_average", "friction_integral", "pin_wear",
-                          "disc_wear", "contact_fraction", "layer_share", "grooves", "bem_iterations"},
-                         {s, mu, smoothed, integral, v_pin, v_disc, area, on_layer, grooves, iterations},
-                         {"m", "1", "1", "m", "m^3", "m^3", "1", "1", "1", "1"});
+                          "disc_wear", "contact_fraction", "layer_share", "grooves", "bem_iterations",
+                          "pin_specific_wear_rate", "disc_specific_wear_rate"},
+                         {s, mu, smoothed, integral, v_pin, v_disc, area, on_layer, grooves, iterations, k_pin, k_disc},
+                         {"m", "1", "1", "m", "m^3", "m^3", "1", "1", "1", "1", k_unit, k_unit});
     const auto csv = ctx.output_dir() / "friction.csv";
     write_csv(csv,
               {"distance", "friction", "friction_moving_average", "pin_wear", "disc_wear", "contact_fraction",
-               "layer_share", "grooves"},
-              {s, mu, smoothed, v_pin, v_disc, area, on_layer, grooves}, {"m", "1", "1", "m^3", "m^3", "1", "1", "1"},
+               "layer_share", "grooves", "pin_specific_wear_rate", "disc_specific_wear_rate"},
+              {s, mu, smoothed, v_pin, v_disc, area, on_layer, grooves, k_pin, k_disc},
+              {"m", "1", "1", "m^3", "m^3", "1", "1", "1", k_unit, k_unit},
               {"macro/bem-pin-on-disc (§9.3.2): friction and wear volumes against sliding distance",
                fmt::format("friction_moving_average: centred moving mean over {:g} m of sliding (Fig. 9.23)",
-                           moving_window_)});
+                           moving_window_),
+               "grooves: bands across the track worn through the oxide, nan without an oxide on a substrate (h = 0 "
+               "or bulk)",
+               fmt::format("pin/disc_specific_wear_rate: k = V/(F_N s) (Archard) at F_N = {:g} N, in mm^3/(N·m); nan "
+                           "at s = 0",
+                           s_.normal_load)});
     ctx.add_file(csv);
 
     const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
@@ -421,6 +452,10 @@ class MacroPinOnDisc final : public Scale {
                "friction coefficient averaged over " + initial_w.description);
     ctx.report("pin_wear", v_pin.back(), "m^3", "worn volume of the pin");
     ctx.report("disc_wear", v_disc.back(), "m^3", "worn volume of the disc (whole track)");
+    ctx.report("pin_specific_wear_rate", k_pin.back(), k_unit,
+               "specific wear rate of the pin, k = V/(F_N s) (Archard), in mm³/(N·m)");
+    ctx.report("disc_specific_wear_rate", k_disc.back(), k_unit,
+               "specific wear rate of the disc, k = V/(F_N s) (Archard), in mm³/(N·m)");
     ctx.report("contact_solves", model.contact_solves(), "1", "BEM contact solves");
     ctx.report("contact_iterations", static_cast<double>(model.contact_iterations()), "1",
                "BEM iterations of all the contact solves");
@@ -430,7 +465,7 @@ class MacroPinOnDisc final : public Scale {
                  s_.step_bounded() ? "explicit time step, bounded to one cell of sliding on the resolved track"
                                    : "explicit time step");
     ctx.report("distance", s.back(), "m", "sliding distance covered");
-    if (std::isfinite(s_.layer_thickness) && s_.layer_thickness > 0.0) {
+    if (layered()) {
       ctx.report("grooves", x.back().grooves, "1",
                  "grooves at the end: separate bands across the track where the oxide is worn through");
       ctx.report("grooves_max", *std::max_element(grooves.begin(), grooves.end()), "1",

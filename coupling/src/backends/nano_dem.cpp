@@ -593,16 +593,15 @@ class NanoDem final : public Scale {
                            fit.shear_strength, fit.shear_strength_rms, fit.steady_strength, fit.p_crit,
                            fit.p_crit_source, fit.p_crit_rms, fit.mu0)});
     ctx.add_file(csv);
-    if (auto png = plot_junction_strength(csv, ctx.output_dir() / ("junction_" + i.tag() + ".png"),
-                                          fmt::format("{} junctions (§7.1.1) and the fitted model (7.9)-(7.10)\n"
-                                                      "{}, L = {:.3g} nm, d0 = {:.3g} nm, v = {:.3g} m/s, "
-                                                      "slid {:.3g} L",
-                                                      i.pair(), amorphous(i) ? "amorphous (§6.2.2)" : "HCP lattice",
-                                                      runs.empty() ? 0.0 : std::get<1>(runs.front()).length * 1e9,
-                                                      base_.cell.d0 * 1e9, base_.velocity, base_.sliding_distance),
-                                          ratios_, fit.shear_strength, fit.p_crit,
-                                          runs.empty() ? 0.0 : std::get<1>(runs.front()).length))
-      ctx.add_file(*png);
+    ctx.add_figure(junction_strength_figure(
+        "junction_" + i.tag(),
+        fmt::format("{} junctions (§7.1.1) and the fitted model (7.9)-(7.10)\n{}, L = {:.3g} nm, d0 = {:.3g} nm, v = "
+                    "{:.3g} m/s, slid {:.3g} L",
+                    i.pair(), amorphous(i) ? "amorphous (§6.2.2)" : "HCP lattice",
+                    runs.empty() ? 0.0 : std::get<1>(runs.front()).length * 1e9, base_.cell.d0 * 1e9, base_.velocity,
+                    base_.sliding_distance),
+        csv, ratios_, fit.shear_strength, fit.p_crit, runs.empty() ? 0.0 : std::get<1>(runs.front()).length,
+        ctx.output_dir()));
   }
 
   Provenance provenance_;

@@ -1,12 +1,13 @@
 #pragma once
 // What a scale sees of the run it is part of: the output folder, the run's
-// HDF5 file, its checkpoints, and the table of headline results.
+// HDF5 file, its checkpoints, the table of headline results and its figures.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "wearscale/coupling/figure.hpp"
 #include "wearscale/io/checkpoint.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 
@@ -31,6 +32,10 @@ class RunContext {
   void report(const std::string& name, double value, const std::string& unit, const std::string& description);
   /// A file the run wrote besides run.h5 (CSV, XDMF, PNG), listed in the summary.
   void add_file(const std::filesystem::path& file) { files_.push_back(file); }
+  /// A figure of the run (in its folder), drawn with the run's others by draw_figures().
+  void add_figure(Figure figure) { figures_.push_back(std::move(figure)); }
+  /// Draws the figures added so far, with one gnuplot (figure.hpp), and lists their files.
+  void draw_figures();
 
   /// A field of the summary besides the headline figures, e.g. a DEM study's
   /// verdict: shown at the top level of summary.json.
@@ -48,6 +53,7 @@ class RunContext {
   nlohmann::json results_ = nlohmann::json::object();
   nlohmann::json notes_ = nlohmann::json::object();
   std::vector<std::filesystem::path> files_;
+  std::vector<Figure> figures_;
   bool show_progress_ = true;
   Checkpointer* checkpoints_ = nullptr;
   Checkpointer no_checkpoints_ = Checkpointer::disabled();

@@ -87,6 +87,10 @@ class Config {
   std::filesystem::path path(std::string_view key) const;
   std::vector<double> numbers(std::string_view key, const Range& range = {},
                               units::Dimension dim = units::dimensionless) const;
+  /// The physical dimension a number getter (number(), number_or() when
+  /// present, numbers()) read `key` in, once one has: what its values mean
+  /// in SI (a sweep table's unit for a swept key); nullopt before.
+  std::optional<units::Dimension> dimension_of(std::string_view key) const;
   /// The elements of an array as override text: numbers in full precision,
   /// strings as written ("inf", "1 um"). For sweeps over any key.
   std::vector<std::string> values_as_text(std::string_view key) const;

@@ -12,13 +12,16 @@
 namespace wearscale {
 
 /// The header name of a column `name` in `unit` (SI: "Pa", "m^3", "rad/m",
-/// "J/m^2", "kg·m^-1"; "1" for a dimensionless one): "p_N" in "Pa" → "p_N_Pa",
-/// "q" in "rad/m" → "q_rad_per_m", "friction" in "1" → "friction".
+/// "J/m^2", "kg·m^-1", "mm^3/(N·m)"; "1" for a dimensionless one): "p_N" in "Pa" → "p_N_Pa",
+/// "q" in "rad/m" → "q_rad_per_m", "k" in "mm^3/(N·m)" → "k_mm3_per_N_per_m",
+/// "friction" in "1" → "friction".
 /// std::invalid_argument for an empty unit or one it cannot spell.
 std::string csv_column_name(const std::string& name, const std::string& unit);
 
 /// Writes columns of equal length under one header row, nothing else (so
-/// `pandas.read_csv(path)` reads it as is), and beside it `<path>.json` with
+/// `pandas.read_csv(path)` reads it as is, every numeric column as float64:
+/// each number is written as pandas writes a float, "0.0", "3126.0",
+/// "1.5e-06", "nan", "inf", never "-0"), and beside it `<path>.json` with
 /// the column names, their units, the row count, `notes` (source, method,
 /// provenance) and the wearscale version. `units` is one per column, as
 /// H5Writer::write_table takes them: a column cannot be written without one.

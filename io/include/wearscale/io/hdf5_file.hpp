@@ -22,6 +22,7 @@
 // a user gives therefore runs through H5Reader::guarded, which performs the
 // read in a child process first and refuses the file as damaged if that
 // child crashes or hangs; a few milliseconds per file.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -63,10 +64,17 @@ class H5Writer {
   void write_table(const std::string& group, const std::vector<std::string>& names,
                    const std::vector<std::span<const double>>& columns,
                    const std::vector<std::string>& units = {});
-  /// A 2D field (nx × ny, row-major) with its grid size as attributes lx, ly.
-  void write_field(const std::string& path, const RealField& field, std::string_view unit = {});
+  /// A 2D field f(x_i, y_j), nx × ny, row-major (the first index runs along x,
+  /// as h5py reads f[i, j]), with its attributes: `unit`, `lx`, `ly` (its size),
+  /// `x0`, `y0` (where node (0, 0) sits: x_i = x0 + i·lx/nx, y_j = y0 + j·ly/ny),
+  /// `axes` = "x,y" (what each index runs along) and `description`.
+  void write_field(const std::string& path, const RealField& field, std::string_view unit = {},
+                   std::string_view description = {}, std::array<double, 2> origin = {0.0, 0.0});
+  /// A scalar dataset (shape ()).
   void write_scalar(const std::string& path, double value, std::string_view unit = {});
-  /// String attribute on a group or dataset ("/" is the file).
+  /// String attribute on a group or dataset ("/" is the file): a scalar of
+  /// variable length, UTF-8 (h5py reads a str), of any length (its text is
+  /// kept in the file's heap, not in the object's 64 KiB header).
   void set_attribute(const std::string& object, const std::string& name, std::string_view value);
   void set_attribute(const std::string& object, const std::string& name, double value);
   /// A 64-bit integer attribute (counts, steps: read back exactly).
@@ -81,7 +89,8 @@ class H5Writer {
   /// allocated in the file, unfilled. Returns its byte offset: value (i, j)
   /// goes at offset + 8 (i·ny + j), a little-endian double, written in place
   /// (write_in_place on partial()) once finish_layout() has run.
-  std::uint64_t reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit = {});
+  std::uint64_t reserve_field(const std::string& path, const Grid2D& grid, std::string_view unit = {},
+                              std::string_view description = {}, std::array<double, 2> origin = {0.0, 0.0});
   /// Ends the HDF5 part of an H5Storage::Disk file: its whole size reserved on
   /// disk first (so neither HDF5's closing writes nor the values written in
   /// place later can meet a full disk), then closed. OutputError naming the

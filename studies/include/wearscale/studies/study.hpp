@@ -107,6 +107,7 @@ class Study {
     bool numeric_values = false;      ///< the swept values are all numbers
     std::vector<std::filesystem::path> folders;
     std::vector<std::string> labels;
+    std::vector<std::string> values, series_values;  ///< each run's value of key (and of series_key) as written
     std::vector<std::pair<std::string, std::filesystem::path>> tables;  ///< label, sweep table
     std::vector<std::string> result_names;
     std::string case_name;
