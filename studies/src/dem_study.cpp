@@ -20,6 +20,7 @@
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -169,7 +170,7 @@ struct SlidingDumps {
   }
   void write(const SlidingCell& cell) {
     const auto worn = cell.worn_flags();
-    writer.write(cell.simulation(), {{"worn", worn}});
+    writer.write(cell.engine(), {{"worn", worn}});
   }
   long cell_record_every = 1;
 };
@@ -320,7 +321,7 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   const auto hooks = study_checkpoints(checkpoints, "dem/junction", &dump);
   const auto r = run_sheared_junction(
       spec,
-      [&](const Simulation& sim, const JunctionSample&, long step, long planned) {
+      [&](const Engine& sim, const JunctionSample&, long step, long planned) {
         if (!bar) bar = progress_bar("sheared junction", planned, hooks);
         if (dump.frames() == 0) dump.write(sim);
         bar->update(static_cast<double>(step));
@@ -603,7 +604,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   long step0 = 0, logged = 0;
   auto last_line = std::chrono::steady_clock::now();
   const auto r = run_oxide_asperity(
-      spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
+      spec, [&](const Engine& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
         if (!bar) {
           bar = progress_bar("oxidized asperity", planned, hooks);
           log::info("oxide asperity: {} particles, Δt = {:.3g} s, {} steps", sim.particles().size(), sim.time_step(), planned);
