@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <ctime>
 #include <string_view>
 #include <fmt/format.h>
@@ -21,6 +22,9 @@
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
 #include "wearscale/dem/engine.hpp"
+#ifdef WEARSCALE_DEM_LAMMPS
+#include "wearscale/dem/lammps_engine.hpp"
+#endif
 #include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -52,6 +56,37 @@ void read_contact_law(const Config& root, std::string& law, double& friction) {
   if (law == "hooke") friction = c.number_or("friction", 0.5, Range::non_negative());
 }
 
+// [dem] engine: which engine integrates the study (engine.hpp): wearscale's
+// own, or LAMMPS (solvers/dem/lammps, in a build with liblammps-dev).
+std::string read_engine(const Config& root) {
+  const Config c = root.section("dem");
+  const std::string engine = c.choice_or("engine", "wearscale", {"wearscale", "lammps"});
+#ifdef WEARSCALE_DEM_LAMMPS
+  if (engine == "lammps") register_lammps_engine();
+#else
+  if (engine == "lammps")
+    throw c.error("engine", "this build has no LAMMPS engine (it is built when CMake finds Debian's liblammps-dev, "
+                  "option WEARSCALE_DEM_LAMMPS)", "wearscale");
+#endif
+  return engine;
+}
+
+// While one lives on rank 0 of an mpirun job, the LAMMPS engines the study
+// makes span every rank (the others serve them: DemStudy::run_other_rank).
+class EngineRanks {
+ public:
+  explicit EngineRanks([[maybe_unused]] const std::string& engine) {
+#ifdef WEARSCALE_DEM_LAMMPS
+    if (engine == "lammps") served_.emplace();
+#endif
+  }
+
+ private:
+#ifdef WEARSCALE_DEM_LAMMPS
+  std::optional<LammpsServedRun> served_;
+#endif
+};
+
 // The studies that measure the cohesive law itself refuse another one.
 void require_cohesive_law(const Config& root, const char* study) {
   std::string law;
@@ -66,6 +101,7 @@ void require_cohesive_law(const Config& root, const char* study) {
 void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cell) {
   cell.material = dem_material(root);
   read_contact_law(root, cell.law, cell.friction);
+  cell.engine = read_engine(root);
   cell.d0 = c.number("d0", Range::positive(), units::length);
   cell.largest = c.number_or("largest", 1.25 * cell.d0, Range::at_least(cell.d0), units::length);
   cell.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
@@ -218,6 +254,7 @@ nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
   PatchTestSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "patch test");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.patch_test");
   const bool unitless = spec.material.name == "table-6.4";
   spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
@@ -296,6 +333,7 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   ShearedJunctionSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "junction study");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.junction");
   spec.diameter = c.number("diameter", Range::positive(), units::length);
   spec.d0 = c.number("d0", Range::positive(), units::length);
@@ -550,6 +588,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   require_cohesive_law(root, "oxide-asperity study");
   OxideAsperitySpec spec;
   spec.oxide = dem_material(root, "SiO2");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.oxide_asperity");
   spec.substrate = substrate_material(root, c, spec.oxide.scaling_exponent);
   spec.interface = interface_material(c, spec.oxide, spec.substrate);
@@ -713,6 +752,20 @@ void require_elastic_bounds(const nlohmann::json& results) {
 class DemStudy : public Study {
  public:
   std::string default_case_name() const override { return "dem"; }
+  // [dem] engine = "lammps": under mpirun one run over every rank (LAMMPS'
+  // domain decomposition), rank 0 writing the outputs and checkpoints.
+  std::vector<std::string> prepare(Config& inputs) override {
+    engine_ = read_engine(inputs);
+    return {};
+  }
+  bool distributed() const override { return engine_ == "lammps"; }
+  bool resumes_distributed() const override { return engine_ == "lammps"; }
+  bool calls_mpi() const override { return engine_ == "lammps"; }
+  void run_other_rank(const Config&) override {
+#ifdef WEARSCALE_DEM_LAMMPS
+    serve_lammps_engines();
+#endif
+  }
   std::string default_output_dir() const override {
     std::string leaf = name().substr(name().find('/') + 1);
     std::replace(leaf.begin(), leaf.end(), '_', '-');
@@ -720,6 +773,7 @@ class DemStudy : public Study {
   }
 
  protected:
+  std::string engine_ = "wearscale";
   // The driver's outputs (files, verdict) into the context; a sheared study's force history plotted.
   static void finish(const nlohmann::json& outputs, RunContext& context, const std::string& history) {
     for (const auto& f : outputs["files"]) context.add_file(f.get<std::string>());
@@ -741,7 +795,9 @@ class DemStudy : public Study {
             {"dem.scaling_exponent", "number", "[0, 1]", "1", "0.5", "size-scaling exponent s of (6.57)", ""},
             {"dem.law", "choice", fmt::format("{}", fmt::join(contact_law_names(), " | ")), "", "cohesive",
              "contact law between the particles (contact_law.hpp)", ""},
-            {"dem.friction", "number", "≥ 0", "1", "0.5", "Coulomb μ of the hooke law", ""}};
+            {"dem.friction", "number", "≥ 0", "1", "0.5", "Coulomb μ of the hooke law", ""},
+            {"dem.engine", "choice", std::string(engine_choices), "", "wearscale",
+             "the engine that integrates the particles (LAMMPS: over every rank under mpirun)", ""}};
   }
   // The sliding cell of the wear studies (read_sliding_cell, and the dumps).
   static Schema sliding_keys(const std::string& table, const std::string& slide_default) {
@@ -792,6 +848,7 @@ class PatchTestStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     const auto outputs = run_patch_test_study(inputs, context);
     require_elastic_bounds(context.results());
     finish(outputs, context, "");
@@ -827,6 +884,7 @@ class JunctionStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_junction_study(inputs, context), context, "junction");
   }
 };
@@ -856,6 +914,7 @@ class RoughShearStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_rough_shear_study(inputs, context), context, "rough_shear");
   }
 };
@@ -887,6 +946,7 @@ class TrappedParticlesStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_trapped_particles_study(inputs, context), context, "trapped_particles");
   }
 };
@@ -942,6 +1002,7 @@ class OxideAsperityStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_oxide_asperity_study(inputs, context), context, "oxide_asperity");
   }
 };

@@ -86,7 +86,9 @@ TEST_F(PairStyles, CohesiveForceAndTorqueEqualTheInHouseLawInEveryBranch) {
     house->compute_forces();
     lmp->compute_forces();
     expect_same_forces(*house, *lmp, 1e-12, "gap " + std::to_string(gap));
-    if (gap < pair.delta_f) EXPECT_GT(std::fabs(house->particles().force[0].x), 0.0) << gap;
+    if (gap < pair.delta_f) {
+      EXPECT_GT(std::fabs(house->particles().force[0].x), 0.0) << gap;
+    }
   }
 }
 

@@ -20,11 +20,21 @@ FixWearscaleVerlet::FixWearscaleVerlet(LAMMPS* instance, int narg, char** arg) :
   if (!(skin_ > 0.0)) error->all(FLERR, std::string("Illegal fix wearscale/verlet command: SKIN > 0"));
   time_integrate = 1;
   nevery = 1;
+  restart_peratom = 1;
+  maxexchange = 7;
+  grow_arrays(atom->nmax);
+  atom->add_callback(LAMMPS_NS::Atom::GROW);
+  atom->add_callback(LAMMPS_NS::Atom::RESTART);
+}
+
+FixWearscaleVerlet::~FixWearscaleVerlet() {
+  atom->delete_callback(id, LAMMPS_NS::Atom::GROW);
+  atom->delete_callback(id, LAMMPS_NS::Atom::RESTART);
 }
 
 int FixWearscaleVerlet::setmask() {
   return FixConst::INITIAL_INTEGRATE | FixConst::POST_INTEGRATE | FixConst::POST_FORCE | FixConst::FINAL_INTEGRATE |
-         FixConst::END_OF_STEP;
+         FixConst::END_OF_STEP | FixConst::POST_RUN;
 }
 
 void FixWearscaleVerlet::init() {
@@ -125,7 +135,63 @@ RunFailure FixWearscaleVerlet::agree_on_failure() {
   return {worst, static_cast<long long>(mine[0]), mine[1], static_cast<long long>(mine[2])};
 }
 
-void FixWearscaleVerlet::setup(int vflag) { post_force(vflag); }
+// The run's first forces: those of the last step, kept (their damping is in
+// them), or computed now.
+void FixWearscaleVerlet::setup(int vflag) {
+  bool kept = continue_forces;
+  for (int i = 0; i < atom->nlocal && kept; ++i) kept = kept_[static_cast<std::size_t>(i)][6] != 0.0;
+  int local = kept ? 1 : 0, all = 0;
+  MPI_Allreduce(&local, &all, 1, MPI_INT, MPI_MIN, world);
+  if (all == 0) {
+    post_force(vflag);
+    return;
+  }
+  for (int i = 0; i < atom->nlocal; ++i)
+    for (int a = 0; a < 3; ++a) {
+      atom->f[i][a] = kept_[static_cast<std::size_t>(i)][static_cast<std::size_t>(a)];
+      atom->torque[i][a] = kept_[static_cast<std::size_t>(i)][3 + static_cast<std::size_t>(a)];
+    }
+  sum_wall_forces();
+}
+
+void FixWearscaleVerlet::post_run() {
+  for (int i = 0; i < atom->nlocal; ++i) {
+    auto& k = kept_[static_cast<std::size_t>(i)];
+    for (int a = 0; a < 3; ++a) {
+      k[static_cast<std::size_t>(a)] = atom->f[i][a];
+      k[3 + static_cast<std::size_t>(a)] = atom->torque[i][a];
+    }
+    k[6] = 1.0;
+  }
+}
+
+void FixWearscaleVerlet::grow_arrays(int nmax) { kept_.resize(static_cast<std::size_t>(nmax)); }
+
+void FixWearscaleVerlet::copy_arrays(int i, int j, int) {
+  kept_[static_cast<std::size_t>(j)] = kept_[static_cast<std::size_t>(i)];
+}
+
+int FixWearscaleVerlet::pack_exchange(int i, double* buf) {
+  std::copy(kept_[static_cast<std::size_t>(i)].begin(), kept_[static_cast<std::size_t>(i)].end(), buf);
+  return 7;
+}
+
+int FixWearscaleVerlet::unpack_exchange(int nlocal, double* buf) {
+  std::copy(buf, buf + 7, kept_[static_cast<std::size_t>(nlocal)].begin());
+  return 7;
+}
+
+int FixWearscaleVerlet::pack_restart(int i, double* buf) {
+  buf[0] = 8.0;
+  return 1 + pack_exchange(i, buf + 1);
+}
+
+void FixWearscaleVerlet::unpack_restart(int nlocal, int nth) {
+  double** extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k) m += static_cast<int>(extra[nlocal][m]);
+  unpack_exchange(nlocal, &extra[nlocal][m + 1]);
+}
 
 // Global damping on the mobile particles, then the net force on each wall.
 void FixWearscaleVerlet::post_force(int) {

@@ -69,7 +69,7 @@ LammpsSystem::LammpsSystem(MPI_Comm comm, SystemConfig config, const AtomTable& 
   command("atom_style sphere");
   command("atom_modify map array");
   command("dimension 3");
-  command("newton off");
+  command("newton on");
   const Box& box = config_.box;
   command(fmt::format("boundary {} {} {}", box.periodic[0] ? "p" : "s", box.periodic[1] ? "p" : "s",
                       box.periodic[2] ? "p" : "s"));
@@ -186,13 +186,17 @@ void LammpsSystem::set_wall_velocity(int wall, int axis, double velocity) {
 
 RunFailure LammpsSystem::run(long steps, const std::function<void()>& each_step) {
   verlet_->each_step = each_step;
+  verlet_->continue_forces = true;
   command(fmt::format("run {}", steps));
   verlet_->each_step = {};
   lmp_->timer->reset_timeout();  // a failure forced one
   return verlet_->agree_on_failure();
 }
 
-void LammpsSystem::compute_forces() { command("run 0 post no"); }
+void LammpsSystem::compute_forces() {
+  verlet_->continue_forces = false;  // afresh, at the current velocities (Simulation::compute_forces)
+  command("run 0 post no");
+}
 
 const std::vector<WallSlot>& LammpsSystem::walls() const { return verlet_->walls; }
 long LammpsSystem::steps() const { return verlet_->steps; }
@@ -327,7 +331,7 @@ void LammpsSystem::restore(int root, const std::string& bytes) {
   delete lmp_;
   lmp_ = nullptr;
   open();
-  command("newton off");  // read_restart keeps the script's newton_pair
+  command("newton on");  // read_restart keeps the script's newton_pair
   command("atom_modify map array");
   command("read_restart " + path);
   if (rank_ == root) {

@@ -27,6 +27,7 @@ PairWearscale::PairWearscale(LAMMPS* instance) : Pair(instance) {
   single_enable = 0;
   restartinfo = 0;              // the engine sets the style and its coefficients again after a restart
   no_virial_fdotr_compute = 1;  // no global virial: the per-atom one is the engine's
+  comm_reverse = 6;             // the ghosts' virials, when kept
   finitecutflag = 1;
   beyond_contact = 1;
 }
@@ -42,8 +43,8 @@ PairWearscale::~PairWearscale() {
 void PairWearscale::init_style() {
   if (atom->sphere_flag == 0) error->all(FLERR, std::string("Pair style ") + force->pair_style + " requires atom style sphere");
   if (comm->ghost_velocity == 0) error->all(FLERR, std::string("Pair style ") + force->pair_style + " requires ghost atoms store velocity");
-  if (force->newton_pair != 0)
-    error->all(FLERR, std::string("Pair style ") + force->pair_style + " runs with newton_pair off (each rank computes its atoms' pairs)");
+  if (force->newton_pair == 0)
+    error->all(FLERR, std::string("Pair style ") + force->pair_style + " runs with newton_pair on (each pair once)");
   neighbor->request(this, instance_me);
   const int at = modify->find_fix(history_fix_id);
   if (at < 0) {
@@ -79,7 +80,6 @@ void PairWearscale::store_histories(FixWearscaleHistory& fix) const {
   auto& contacts = fix.contacts();
   double** x = atom->x;
   const tagint* tag = atom->tag;
-  const int nlocal = atom->nlocal;
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ++ii) {
     const int i = list->ilist[ii];
@@ -92,10 +92,10 @@ void PairWearscale::store_histories(FixWearscaleHistory& fix) const {
       const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       auto& ci = contacts[static_cast<std::size_t>(i)];
       ci.insert(ci.end(), {static_cast<double>(tag[j]), d[0], d[1], d[2], h[0], h[1], h[2]});
-      if (j < nlocal) {  // seen from j: the opposite separation and sliding distance
-        auto& cj = contacts[static_cast<std::size_t>(j)];
-        cj.insert(cj.end(), {static_cast<double>(tag[i]), -d[0], -d[1], -d[2], -h[0], -h[1], -h[2]});
-      }
+      // Seen from j: the opposite separation and sliding distance (a ghost's
+      // go to its owner, FixWearscaleHistory::store).
+      auto& cj = contacts[static_cast<std::size_t>(j)];
+      cj.insert(cj.end(), {static_cast<double>(tag[i]), -d[0], -d[1], -d[2], -h[0], -h[1], -h[2]});
     }
   }
 }
@@ -151,6 +151,19 @@ void PairWearscale::load_histories(const FixWearscaleHistory& fix, bool setup) {
   }
   loaded_ = true;
   prepare_pairs();
+}
+
+int PairWearscale::pack_reverse_comm(int n, int first, double* buf) {
+  int m = 0;
+  for (int i = first; i < first + n; ++i)
+    for (int c = 0; c < 6; ++c) buf[m++] = virial_[6 * static_cast<std::size_t>(i) + static_cast<std::size_t>(c)];
+  return m;
+}
+
+void PairWearscale::unpack_reverse_comm(int n, int* atoms, double* buf) {
+  int m = 0;
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 6; ++c) virial_[6 * static_cast<std::size_t>(atoms[k]) + static_cast<std::size_t>(c)] += buf[m++];
 }
 
 }  // namespace wearscale::dem::lammps

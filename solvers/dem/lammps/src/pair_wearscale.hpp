@@ -6,9 +6,10 @@
 // the pair loop with the law's force inlined (pair_wearscale_loop.hpp), and
 // the per-atom virial W_i = ½ Σ_j (x_j − x_i) ⊗ f_ij the patch tests measure.
 //
-// Newton's third law is off for these styles (the engine sets `newton off`):
-// a pair across two ranks is computed on both, each rank applying the force
-// to its own atom, so no history and no virial travels back to an owner.
+// Newton's third law is on (LAMMPS' default): each pair is computed once, on
+// one rank, the force and torque on a ghost atom travel back to its owner
+// with LAMMPS' reverse communication, and so do the per-atom virials (here)
+// and the histories stored under a ghost (FixWearscaleHistory).
 #include <vector>
 
 #include "pair.h"
@@ -41,10 +42,13 @@ class PairWearscale : public LAMMPS_NS::Pair {
   void init_style() override;
   double init_one(int i, int j) override;
   double memory_usage() override;
+  int pack_reverse_comm(int n, int first, double* buf) override;
+  void unpack_reverse_comm(int n, int* list, double* buf) override;
 
   /// Keep the per-atom virial (virial()) at every force evaluation.
   void set_track_virial(bool on) { track_virial_ = on; }
-  /// The per-atom virial of the local atoms, 6 a row (xx yy zz xy xz yz).
+  /// The per-atom virial of the local atoms (their ghosts' shares added), 6 a
+  /// row (xx yy zz xy xz yz).
   const std::vector<double>& virial() const { return virial_; }
   /// Carry a stored history over a rebuild only to pairs touching then (LAMMPS'
   /// own transfer for granular styles without beyond_contact); else every one.
@@ -54,8 +58,9 @@ class PairWearscale : public LAMMPS_NS::Pair {
   // The history's carry-over, called by FixWearscaleHistory.
   /// Whether the histories in hand belong to the list in hand.
   bool loaded() const { return loaded_; }
-  /// Each listed pair with a history: under i (and j when local), keyed by
-  /// the partner's tag and the separation (which periodic image it is).
+  /// Each listed pair with a history: under i and under j (a ghost's records
+  /// then go to its owner), keyed by the partner's tag and the separation
+  /// (which periodic image it is).
   void store_histories(FixWearscaleHistory& fix) const;
   /// The new list's pairs take the histories stored for them; `setup`: the
   /// rebuild at the start of a run, which carries every one.
@@ -77,7 +82,7 @@ class PairWearscale : public LAMMPS_NS::Pair {
 
   std::vector<double> history_;   // 3 per list entry; row ii's entries from first_[ii]
   std::vector<long long> first_;  // inum + 1 row offsets
-  std::vector<double> virial_;    // 6 per local atom
+  std::vector<double> virial_;    // 6 per local and ghost atom
   FixWearscaleHistory* fix_ = nullptr;
   bool track_virial_ = false;
   bool touching_only_ = false;

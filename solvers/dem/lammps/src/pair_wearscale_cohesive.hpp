@@ -10,7 +10,7 @@
 // neighbour rebuilds, per periodic image (what (6.4) defines); `touching`
 // only that of pairs touching at the rebuild, as LAMMPS' fix neigh/history
 // does for a granular style without beyond_contact (the thesis' runs).
-// Needs atom_style sphere, comm_modify vel yes and newton_pair off.
+// Needs atom_style sphere, comm_modify vel yes and newton_pair on (the default).
 #include <vector>
 
 #include "pair_wearscale.hpp"

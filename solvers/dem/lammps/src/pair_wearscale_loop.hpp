@@ -1,12 +1,13 @@
 #pragma once
 // The pair loop of wearscale's LAMMPS pair styles (pair_wearscale.hpp), a
 // template on the law so that its pair force is inlined: over the half list,
-// the force on i and −force on j (when j is this rank's), the torques
-// r n × F_T on both, the history of each entry carried and updated, and the
-// per-atom virial when kept.
+// the force on i and −force on j (a ghost's goes to its owner with LAMMPS'
+// reverse communication), the torques r n × F_T on both, the history of
+// each entry carried and updated, and the per-atom virial when kept.
 #include <algorithm>
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "neigh_list.h"
 #include "pair_wearscale.hpp"
@@ -38,10 +39,10 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
   double** torque = atom->torque;
   const double* radius = atom->radius;
   const double* rmass = atom->rmass;
-  const int nlocal = atom->nlocal;
+  const int all = atom->nlocal + atom->nghost;
   const bool advance = update->setupflag == 0;  // setup: the histories stay (wearscale's compute_forces)
   const double dt = update->dt;
-  if (track_virial_) virial_.assign(6 * static_cast<std::size_t>(nlocal), 0.0);
+  if (track_virial_) virial_.assign(6 * static_cast<std::size_t>(all), 0.0);
   double* vir = virial_.data();
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ++ii) {
@@ -65,16 +66,14 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
       fi += r.force;
       ti += ri * arm;
       if (track_virial_) detail::add_outer(vir + 6 * static_cast<std::size_t>(i), s.d, r.force);
-      if (j < nlocal) {
-        f[j][0] -= r.force.x;
-        f[j][1] -= r.force.y;
-        f[j][2] -= r.force.z;
-        const Vec3 tj = rj * arm;
-        torque[j][0] += tj.x;
-        torque[j][1] += tj.y;
-        torque[j][2] += tj.z;
-        if (track_virial_) detail::add_outer(vir + 6 * static_cast<std::size_t>(j), s.d, r.force);
-      }
+      f[j][0] -= r.force.x;
+      f[j][1] -= r.force.y;
+      f[j][2] -= r.force.z;
+      const Vec3 tj = rj * arm;
+      torque[j][0] += tj.x;
+      torque[j][1] += tj.y;
+      torque[j][2] += tj.z;
+      if (track_virial_) detail::add_outer(vir + 6 * static_cast<std::size_t>(j), s.d, r.force);
     }
     f[i][0] += fi.x;
     f[i][1] += fi.y;
@@ -83,6 +82,7 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
     torque[i][1] += ti.y;
     torque[i][2] += ti.z;
   }
+  if (track_virial_) comm->reverse_comm_pair(this);  // the ghosts' shares to their owners
 }
 
 }  // namespace wearscale::dem::lammps
