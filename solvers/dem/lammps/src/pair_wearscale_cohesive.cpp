@@ -11,6 +11,7 @@
 #include "neigh_list.h"
 #include "pair_wearscale_loop.hpp"
 #include "utils.h"
+#include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/coulomb_cap.hpp"
 
 namespace wearscale::dem::lammps {
@@ -19,52 +20,62 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// The cohesive force of §6.1 on one pair, (6.2)-(6.5), with the pair's
-// parameters p: term by term what wearscale's CohesiveLaw computes.
+// The cohesive force of §6.1 on one pair, (6.2)-(6.5): term by term what
+// wearscale's CohesiveLaw computes, as straight-line arithmetic (every branch
+// of (6.3) and of the cap computed, the one that applies selected) so that
+// the batched loop vectorises; its switches and the layout of the pairs'
+// parameters are fixed per loop.
+template <bool Uniform, bool Cohesion, bool Tangential>
 struct CohesiveContact {
-  bool cohesion, tangential;
-  PairResult operator()(const CohesivePair& p, const PairKinematics& s, const double* hist, double* updated, double dt,
-                        bool advance) const {
+  CohesivePair uniform;        // Uniform: every pair's parameters
+  const CohesivePair* pairs;   // else per list entry
+
+  PairResult contact(const PairKinematics& s, const double* hist, double* updated, double dt, bool advance,
+                     long long k) const {
+    const CohesivePair p = Uniform ? uniform : pairs[k];
     PairResult out;
     const double r2 = dot(s.d, s.d);
     const double contact = s.ri + s.rj;
-    const double range = cohesion ? contact + p.delta_f : contact;
+    const double range = Cohesion ? contact + p.delta_f : contact;
     const bool in_range = !(r2 >= range * range);
     const double r = std::sqrt(r2);
     const Vec3 n = s.d * (1.0 / r);
     const double delta_n = r - contact;
     // (6.3): Hookean to δ_e, linear softening to δ_f, nothing beyond; without
     // cohesion, repulsion only. Positive f_n pulls i toward j.
-    double f_n = 0.0;
-    if (!cohesion)
-      f_n = p.k_n * std::min(delta_n, 0.0);
-    else if (delta_n <= p.delta_e)
-      f_n = p.k_n * delta_n;
-    else if (delta_n <= p.delta_f)
-      f_n = -p.k_n * p.delta_e / (p.delta_f - p.delta_e) * (delta_n - p.delta_f);
+    const double softening = -p.k_n * p.delta_e / (p.delta_f - p.delta_e) * (delta_n - p.delta_f);
+    const double hookean = p.k_n * delta_n;
+    const double cohesive_f_n = delta_n <= p.delta_e ? hookean : (delta_n <= p.delta_f ? softening : 0.0);
+    const double repulsive_f_n = p.k_n * std::min(delta_n, 0.0);
+    const double f_n = Cohesion ? cohesive_f_n : repulsive_f_n;
     const Vec3 vrel = s.v + cross(s.w, n);
     const double v_n = dot(vrel, n);
     const Vec3 f_normal = (f_n - p.c_n * v_n) * n;  // (6.2), normal part
-    const bool with_tangential = tangential && p.k_t > 0.0;
-    Vec3 f_t{};
+    // The sliding distance integrates the contact's tangential velocity and
+    // is turned into the tangent plane; spring and damping together are
+    // capped by F'_m,T (6.4)-(6.5), the spring stretched back to match.
+    const bool with_tangential = Tangential && p.k_t > 0.0;
+    const Vec3 v_t = vrel - v_n * n;
     Vec3 xi{hist[0], hist[1], hist[2]};
-    if (with_tangential) {
-      // The sliding distance integrates the contact's tangential velocity
-      // and is turned into the tangent plane; spring and damping together
-      // are capped by F'_m,T (6.4)-(6.5), the spring stretched back to match.
-      const Vec3 v_t = vrel - v_n * n;
-      if (advance) xi += v_t * dt;
-      const bool sliding = dot(xi, xi) != 0.0;
-      if (advance) xi -= dot(xi, n) * n;
-      f_t = -(p.k_t * xi + p.c_t * v_t);
-      const double cap = std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.5)
-      cap_tangential(f_t, xi, v_t * (p.c_t / p.k_t), cap, sliding);
-    }
+    if (advance) xi += v_t * dt;
+    const bool sliding = dot(xi, xi) != 0.0;
+    if (advance) xi -= dot(xi, n) * n;
+    Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
+    const double cap = std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.5)
+    cap_tangential(f_t, xi, v_t * (p.c_t / p.k_t), cap, sliding);
+    // Out of reach: no force, the history cleared; it moves only in a step.
     const bool store = with_tangential && advance;
-    for (int c = 0; c < 3; ++c) updated[c] = in_range ? (store ? xi[c] : hist[c]) : 0.0;
-    out.force = f_normal + f_t;
-    out.tangential = f_t;
-    out.normal = n;
+    updated[0] = select(in_range, select(store, xi.x, hist[0]), 0.0);
+    updated[1] = select(in_range, select(store, xi.y, hist[1]), 0.0);
+    updated[2] = select(in_range, select(store, xi.z, hist[2]), 0.0);
+    const Vec3 total = f_normal + f_t;
+    out.force.x = with_tangential ? total.x : f_normal.x;
+    out.force.y = with_tangential ? total.y : f_normal.y;
+    out.force.z = with_tangential ? total.z : f_normal.z;
+    out.tangential.x = with_tangential ? f_t.x : 0.0;
+    out.tangential.y = with_tangential ? f_t.y : 0.0;
+    out.tangential.z = with_tangential ? f_t.z : 0.0;
+    out.normal = {n.x, n.y, n.z};  // by components: a whole-struct copy stops the vectoriser
     out.active = in_range;
     return out;
   }
@@ -180,17 +191,21 @@ void PairWearscaleCohesive::prepare_pairs() {
 }
 
 void PairWearscaleCohesive::compute(int eflag, int vflag) {
-  struct Law {
-    CohesiveContact contact_of;
-    bool uniform;
-    const CohesivePair* uniform_pair;
-    const CohesivePair* pairs;
-    PairResult contact(const PairKinematics& s, const double* hist, double* updated, double dt, bool advance,
-                       long long k) const {
-      return contact_of(uniform ? *uniform_pair : pairs[k], s, hist, updated, dt, advance);
-    }
+  // The switches and the parameters' layout, once per evaluation.
+  auto run = [&]<bool Cohesion, bool Tangential>() {
+    if (uniform_)
+      loop(CohesiveContact<true, Cohesion, Tangential>{uniform_pair_, pairs_.data()}, eflag, vflag);
+    else
+      loop(CohesiveContact<false, Cohesion, Tangential>{uniform_pair_, pairs_.data()}, eflag, vflag);
   };
-  loop(Law{{cohesion_, tangential_}, uniform_, &uniform_pair_, pairs_.data()}, eflag, vflag);
+  if (cohesion_ && tangential_)
+    run.template operator()<true, true>();
+  else if (cohesion_)
+    run.template operator()<true, false>();
+  else if (tangential_)
+    run.template operator()<false, true>();
+  else
+    run.template operator()<false, false>();
 }
 
 }  // namespace wearscale::dem::lammps

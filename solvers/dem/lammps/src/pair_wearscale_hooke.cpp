@@ -66,10 +66,14 @@ void PairWearscaleHooke::compute(int eflag, int vflag) {
       const double damp_t = meff * gamma_t;
       Vec3 fs = -(k_t * shear + damp_t * vtr);
       cap_tangential(fs, shear, vtr * (damp_t / k_t), friction * std::fabs(ccel * r), sheared);  // Coulomb cap
-      for (int c = 0; c < 3; ++c) updated[c] = touching ? shear[c] : 0.0;  // apart: no force, no history
-      out.force = del * ccel + fs;
-      out.tangential = fs;
-      out.normal = s.d * rinv;
+      // Apart: no force, no history. By components (a whole-struct copy stops the vectoriser).
+      updated[0] = touching ? shear.x : 0.0;
+      updated[1] = touching ? shear.y : 0.0;
+      updated[2] = touching ? shear.z : 0.0;
+      const Vec3 total = del * ccel + fs, n = s.d * rinv;
+      out.force = {total.x, total.y, total.z};
+      out.tangential = {fs.x, fs.y, fs.z};
+      out.normal = {n.x, n.y, n.z};
       out.active = touching;
       return out;
     }

@@ -4,7 +4,14 @@
 // the force on i and −force on j (a ghost's goes to its owner with LAMMPS'
 // reverse communication), the torques r n × F_T on both, the history of
 // each entry carried and updated, and the per-atom virial when kept.
+//
+// As wearscale's own loop (dem/pair_loop.hpp) it runs in batches: the
+// entries' kinematics gathered as structure of arrays, the law's force over
+// the batch in one loop the compiler vectorises (the law's contact() is
+// straight-line arithmetic, compiled also for AVX2 and AVX-512 and picked at
+// load time), then the sums in list order.
 #include <algorithm>
+#include <cstdint>
 
 #include "atom.h"
 #include "comm.h"
@@ -12,10 +19,12 @@
 #include "neigh_list.h"
 #include "pair_wearscale.hpp"
 #include "update.h"
+#include "wearscale/dem/pair_loop.hpp"
 
 namespace wearscale::dem::lammps {
 
 namespace detail {
+
 inline void add_outer(double* w, const Vec3& d, const Vec3& f) {
   // ½ (d ⊗ f), symmetrised: the pair's share of the virial of each particle.
   w[0] += 0.5 * d.x * f.x;
@@ -25,6 +34,41 @@ inline void add_outer(double* w, const Vec3& d, const Vec3& f) {
   w[4] += 0.25 * (d.x * f.z + d.z * f.x);
   w[5] += 0.25 * (d.y * f.z + d.z * f.y);
 }
+
+inline constexpr std::size_t batch_entries = 128;
+
+// One batch of consecutive list entries as structure of arrays.
+struct alignas(64) EntryBatch {
+  double dx[batch_entries], dy[batch_entries], dz[batch_entries];
+  double vx[batch_entries], vy[batch_entries], vz[batch_entries];
+  double wx[batch_entries], wy[batch_entries], wz[batch_entries];
+  double ri[batch_entries], rj[batch_entries], mi[batch_entries], mj[batch_entries];
+  double fx[batch_entries], fy[batch_entries], fz[batch_entries];
+  double ax[batch_entries], ay[batch_entries], az[batch_entries];
+  std::uint64_t active[batch_entries];  // as wide as a double: the vectoriser sizes the loop by it
+  double before[3 * batch_entries], after[3 * batch_entries];
+  int i[batch_entries], j[batch_entries];
+};
+
+// The law on the batch's `m` entries (from list entry k0), one lane an entry.
+template <class Law, bool Advance>
+WEARSCALE_PAIR_KERNEL void entry_forces(const Law& law, EntryBatch& b, std::size_t m, long long k0, double dt) {
+WEARSCALE_INDEPENDENT_LANES
+  for (std::size_t l = 0; l < m; ++l) {
+    const PairKinematics s{{b.dx[l], b.dy[l], b.dz[l]}, {b.vx[l], b.vy[l], b.vz[l]}, {b.wx[l], b.wy[l], b.wz[l]},
+                           b.ri[l], b.rj[l], b.mi[l], b.mj[l]};
+    const PairResult r = law.contact(s, b.before + 3 * l, b.after + 3 * l, dt, Advance, k0 + static_cast<long long>(l));
+    const Vec3 arm = cross(r.normal, r.tangential);
+    b.fx[l] = r.force.x;
+    b.fy[l] = r.force.y;
+    b.fz[l] = r.force.z;
+    b.ax[l] = arm.x;
+    b.ay[l] = arm.y;
+    b.az[l] = arm.z;
+    b.active[l] = r.active ? 1u : 0u;
+  }
+}
+
 }  // namespace detail
 
 template <class Law>
@@ -42,47 +86,84 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
   const int all = atom->nlocal + atom->nghost;
   const bool advance = update->setupflag == 0;  // setup: the histories stay (wearscale's compute_forces)
   const double dt = update->dt;
-  if (track_virial_) virial_.assign(6 * static_cast<std::size_t>(all), 0.0);
+  const bool virial = track_virial_;
+  if (virial) virial_.assign(6 * static_cast<std::size_t>(all), 0.0);
   double* vir = virial_.data();
+  double* history = history_.data();
+  auto batch = std::make_unique<detail::EntryBatch>();
+  detail::EntryBatch& b = *batch;
   const int inum = list->inum;
+
+  // The batch's forces and torques into the atoms, in list order; its
+  // updated histories back into the entries from k0 on.
+  auto flush = [&](std::size_t m, long long k0) {
+    if (m == 0) return;
+    if (advance)
+      detail::entry_forces<Law, true>(law, b, m, k0, dt);
+    else
+      detail::entry_forces<Law, false>(law, b, m, k0, dt);
+    std::copy_n(b.after, 3 * m, history + 3 * k0);
+    for (std::size_t l = 0; l < m; ++l) {
+      if (b.active[l] == 0) continue;
+      const int i = b.i[l], j = b.j[l];
+      const Vec3 fij{b.fx[l], b.fy[l], b.fz[l]}, arm{b.ax[l], b.ay[l], b.az[l]};
+      f[i][0] += fij.x;
+      f[i][1] += fij.y;
+      f[i][2] += fij.z;
+      f[j][0] -= fij.x;
+      f[j][1] -= fij.y;
+      f[j][2] -= fij.z;
+      const Vec3 ti = b.ri[l] * arm, tj = b.rj[l] * arm;
+      torque[i][0] += ti.x;
+      torque[i][1] += ti.y;
+      torque[i][2] += ti.z;
+      torque[j][0] += tj.x;
+      torque[j][1] += tj.y;
+      torque[j][2] += tj.z;
+      if (virial) {
+        const Vec3 d{b.dx[l], b.dy[l], b.dz[l]};
+        detail::add_outer(vir + 6 * static_cast<std::size_t>(i), d, fij);
+        detail::add_outer(vir + 6 * static_cast<std::size_t>(j), d, fij);
+      }
+    }
+  };
+
+  std::size_t m = 0;
+  long long k0 = 0;
   for (int ii = 0; ii < inum; ++ii) {
     const int i = list->ilist[ii];
     const int* jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
-    const Vec3 xi{x[i][0], x[i][1], x[i][2]}, vi{v[i][0], v[i][1], v[i][2]}, wi{omega[i][0], omega[i][1], omega[i][2]};
-    const double ri = radius[i], mi = rmass[i];
-    Vec3 fi{}, ti{};
-    double* history = &history_[3 * static_cast<std::size_t>(first_[static_cast<std::size_t>(ii)])];
-    for (int jj = 0; jj < jnum; ++jj, history += 3) {
+    long long k = first_[static_cast<std::size_t>(ii)];
+    for (int jj = 0; jj < jnum; ++jj, ++k) {
+      if (m == detail::batch_entries) {
+        flush(m, k0);
+        m = 0;
+      }
+      if (m == 0) k0 = k;
       const int j = jlist[jj] & NEIGHMASK;
-      const double rj = radius[j];
-      const PairKinematics s{Vec3{x[j][0], x[j][1], x[j][2]} - xi, vi - Vec3{v[j][0], v[j][1], v[j][2]},
-                             ri * wi + rj * Vec3{omega[j][0], omega[j][1], omega[j][2]}, ri, rj, mi, rmass[j]};
-      double updated[3];
-      const PairResult r = law.contact(s, history, updated, dt, advance, first_[static_cast<std::size_t>(ii)] + jj);
-      std::copy(updated, updated + 3, history);
-      if (!r.active) continue;
-      const Vec3 arm = cross(r.normal, r.tangential);
-      fi += r.force;
-      ti += ri * arm;
-      if (track_virial_) detail::add_outer(vir + 6 * static_cast<std::size_t>(i), s.d, r.force);
-      f[j][0] -= r.force.x;
-      f[j][1] -= r.force.y;
-      f[j][2] -= r.force.z;
-      const Vec3 tj = rj * arm;
-      torque[j][0] += tj.x;
-      torque[j][1] += tj.y;
-      torque[j][2] += tj.z;
-      if (track_virial_) detail::add_outer(vir + 6 * static_cast<std::size_t>(j), s.d, r.force);
+      b.i[m] = i;
+      b.j[m] = j;
+      b.dx[m] = x[j][0] - x[i][0];
+      b.dy[m] = x[j][1] - x[i][1];
+      b.dz[m] = x[j][2] - x[i][2];
+      b.vx[m] = v[i][0] - v[j][0];
+      b.vy[m] = v[i][1] - v[j][1];
+      b.vz[m] = v[i][2] - v[j][2];
+      const double ri = radius[i], rj = radius[j];
+      b.wx[m] = ri * omega[i][0] + rj * omega[j][0];
+      b.wy[m] = ri * omega[i][1] + rj * omega[j][1];
+      b.wz[m] = ri * omega[i][2] + rj * omega[j][2];
+      b.ri[m] = ri;
+      b.rj[m] = rj;
+      b.mi[m] = rmass[i];
+      b.mj[m] = rmass[j];
+      std::copy_n(history + 3 * k, 3, b.before + 3 * m);
+      ++m;
     }
-    f[i][0] += fi.x;
-    f[i][1] += fi.y;
-    f[i][2] += fi.z;
-    torque[i][0] += ti.x;
-    torque[i][1] += ti.y;
-    torque[i][2] += ti.z;
   }
-  if (track_virial_) comm->reverse_comm_pair(this);  // the ghosts' shares to their owners
+  flush(m, k0);
+  if (virial) comm->reverse_comm_pair(this);  // the ghosts' shares to their owners
 }
 
 }  // namespace wearscale::dem::lammps
