@@ -13,6 +13,7 @@
 
 #define LAMMPS_LIB_MPI 1
 #include "atom.h"
+#include "comm.h"
 #include "fix_wearscale_history.hpp"
 #include "force.h"
 #include "group.h"
@@ -328,9 +329,14 @@ void LammpsSystem::restore(int root, const std::string& bytes) {
     if (rank_ == root) throw OutputError(fmt::format("the LAMMPS engine could not write its restart file {}", path));
     return;
   }
+  // The ranks' grid of the system as set up (LAMMPS chose it from the box
+  // then, as in the run that saved the state): chosen again from the box of
+  // the restart file, it could split another axis.
+  const int grid[3] = {lmp_->comm->procgrid[0], lmp_->comm->procgrid[1], lmp_->comm->procgrid[2]};
   delete lmp_;
   lmp_ = nullptr;
   open();
+  command(fmt::format("processors {} {} {}", grid[0], grid[1], grid[2]));
   command("newton on");  // read_restart keeps the script's newton_pair
   command("atom_modify map array");
   command("read_restart " + path);
