@@ -315,21 +315,24 @@ std::vector<TaskResult> dispatch(Share& share, const std::function<std::string(s
     ++done;
     if (results[static_cast<std::size_t>(id)].status == TaskResult::Status::NotRun) stopping = true;
   };
-  // Rank 0's own share, on a thread with the rank's OpenMP threads.
+  // Rank 0's own share, on a thread with the rank's OpenMP threads (unless
+  // the tasks call MPI themselves: then the other ranks compute them all).
   std::exception_ptr local_error;
-  bool local_finished = false;
+  bool local_finished = !options.root_computes;
   const int threads = omp_get_max_threads();
-  std::thread local([&] {
-    omp_set_num_threads(threads);
-    try {
-      for (long long id = take(); id >= 0; id = take())
-        store(id, run_one(static_cast<std::size_t>(id), task, share.logs[static_cast<std::size_t>(id)]));
-    } catch (...) {
-      local_error = std::current_exception();
-    }
-    std::lock_guard guard(mutex);
-    local_finished = true;
-  });
+  std::thread local;
+  if (options.root_computes)
+    local = std::thread([&] {
+      omp_set_num_threads(threads);
+      try {
+        for (long long id = take(); id >= 0; id = take())
+          store(id, run_one(static_cast<std::size_t>(id), task, share.logs[static_cast<std::size_t>(id)]));
+      } catch (...) {
+        local_error = std::current_exception();
+      }
+      std::lock_guard guard(mutex);
+      local_finished = true;
+    });
   Progress progress = options.show_progress ? Progress(options.label, static_cast<double>(count), "tasks")
                                             : Progress::silent(static_cast<double>(count));
   int workers = world_size() - 1;
@@ -373,7 +376,7 @@ std::vector<TaskResult> dispatch(Share& share, const std::function<std::string(s
     idle_wait = flag != 0 ? 100 : std::min(2 * idle_wait, 1000);
     if (flag == 0) std::this_thread::sleep_for(std::chrono::microseconds(idle_wait));
   }
-  local.join();
+  if (local.joinable()) local.join();
   progress.finish();
   if (local_error) std::rethrow_exception(local_error);
   return results;

@@ -12,6 +12,7 @@
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
 #include "wearscale/dem/sheared_junction.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/trapped_particles.hpp"
 
@@ -64,7 +65,7 @@ struct FinalState {
   std::vector<Vec3> position, velocity;
   std::vector<double> radius;
   std::vector<std::int16_t> wall;
-  void take(const Simulation& sim) {
+  void take(const Engine& sim) {
     const auto& p = sim.particles();
     position = p.position;
     velocity = p.velocity;
@@ -73,7 +74,7 @@ struct FinalState {
   }
   /// An observer of a sliding cell that keeps its last state.
   auto observer() {
-    return [this](const SlidingCell& c, const SlidingSample&, long, long) { take(c.simulation()); };
+    return [this](const SlidingCell& c, const SlidingSample&, long, long) { take(c.engine()); };
   }
   void put(py::dict& d) const {
     d["position"] = vectors(position);
@@ -105,7 +106,7 @@ py::dict sheared_junction(const std::string& material, double diameter, double d
   ShearedJunctionResult r;
   {
     py::gil_scoped_release release;
-    r = run_sheared_junction(spec, [&](const Simulation& sim, const JunctionSample&, long, long) { final_state.take(sim); });
+    r = run_sheared_junction(spec, [&](const Engine& sim, const JunctionSample&, long, long) { final_state.take(sim); });
   }
   py::dict d;
   d["particles"] = r.particles;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <ctime>
 #include <string_view>
 #include <fmt/format.h>
@@ -20,6 +21,10 @@
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/dem/contact_law.hpp"
 #include "wearscale/dem/dump_writer.hpp"
+#include "wearscale/dem/engine.hpp"
+#ifdef WEARSCALE_DEM_LAMMPS
+#include "wearscale/dem/lammps_engine.hpp"
+#endif
 #include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -51,6 +56,37 @@ void read_contact_law(const Config& root, std::string& law, double& friction) {
   if (law == "hooke") friction = c.number_or("friction", 0.5, Range::non_negative());
 }
 
+// [dem] engine: which engine integrates the study (engine.hpp): wearscale's
+// own, or LAMMPS (solvers/dem/lammps, in a build with liblammps-dev).
+std::string read_engine(const Config& root) {
+  const Config c = root.section("dem");
+  const std::string engine = c.choice_or("engine", "wearscale", {"wearscale", "lammps"});
+#ifdef WEARSCALE_DEM_LAMMPS
+  if (engine == "lammps") register_lammps_engine();
+#else
+  if (engine == "lammps")
+    throw c.error("engine", "this build has no LAMMPS engine (it is built when CMake finds Debian's liblammps-dev, "
+                  "option WEARSCALE_DEM_LAMMPS)", "wearscale");
+#endif
+  return engine;
+}
+
+// While one lives on rank 0 of an mpirun job, the LAMMPS engines the study
+// makes span every rank (the others serve them: DemStudy::run_other_rank).
+class EngineRanks {
+ public:
+  explicit EngineRanks([[maybe_unused]] const std::string& engine) {
+#ifdef WEARSCALE_DEM_LAMMPS
+    if (engine == "lammps") served_.emplace();
+#endif
+  }
+
+ private:
+#ifdef WEARSCALE_DEM_LAMMPS
+  std::optional<LammpsServedRun> served_;
+#endif
+};
+
 // The studies that measure the cohesive law itself refuse another one.
 void require_cohesive_law(const Config& root, const char* study) {
   std::string law;
@@ -69,6 +105,7 @@ void read_sliding_cell(const Config& root, const Config& c, SlidingCellSpec& cel
   // rebuilds for touching pairs only, as LAMMPS did in the thesis' runs.
   cell.history_of_touching_pairs_only =
       root.section("dem").choice_or("history", "kept", {"kept", "touching"}) == "touching";
+  cell.engine = read_engine(root);
   cell.d0 = c.number("d0", Range::positive(), units::length);
   cell.largest = c.number_or("largest", 1.25 * cell.d0, Range::at_least(cell.d0), units::length);
   cell.velocity = c.number_or("velocity", 10.0, Range::open(0.0, 1000.0), units::velocity);
@@ -173,7 +210,7 @@ struct SlidingDumps {
   }
   void write(const SlidingCell& cell) {
     const auto worn = cell.worn_flags();
-    writer.write(cell.simulation(), {{"worn", worn}});
+    writer.write(cell.engine(), {{"worn", worn}});
   }
   long cell_record_every = 1;
 };
@@ -221,6 +258,7 @@ nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
   PatchTestSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "patch test");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.patch_test");
   const bool unitless = spec.material.name == "table-6.4";
   spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
@@ -300,6 +338,7 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   ShearedJunctionSpec spec;
   spec.material = dem_material(root);
   require_cohesive_law(root, "junction study");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.junction");
   spec.diameter = c.number("diameter", Range::positive(), units::length);
   spec.d0 = c.number("d0", Range::positive(), units::length);
@@ -328,7 +367,7 @@ nlohmann::json run_junction_study(const Config& root, RunContext& context) {
   const auto hooks = study_checkpoints(checkpoints, "dem/junction", &dump);
   const auto r = run_sheared_junction(
       spec,
-      [&](const Simulation& sim, const JunctionSample&, long step, long planned) {
+      [&](const Engine& sim, const JunctionSample&, long step, long planned) {
         if (!bar) bar = progress_bar("sheared junction", planned, hooks);
         if (dump.frames() == 0) dump.write(sim);
         bar->update(static_cast<double>(step));
@@ -557,6 +596,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   require_cohesive_law(root, "oxide-asperity study");
   OxideAsperitySpec spec;
   spec.oxide = dem_material(root, "SiO2");
+  spec.engine = read_engine(root);
   const Config c = root.section("dem.oxide_asperity");
   spec.substrate = substrate_material(root, c, spec.oxide.scaling_exponent);
   spec.interface = interface_material(c, spec.oxide, spec.substrate);
@@ -611,7 +651,7 @@ nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context)
   long step0 = 0, logged = 0;
   auto last_line = std::chrono::steady_clock::now();
   const auto r = run_oxide_asperity(
-      spec, [&](const Simulation& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
+      spec, [&](const Engine& sim, const OxideAsperitySample& s, long step, long planned, const std::vector<double>& body) {
         if (!bar) {
           bar = progress_bar("oxidized asperity", planned, hooks);
           log::info("oxide asperity: {} particles, Δt = {:.3g} s, {} steps", sim.particles().size(), sim.time_step(), planned);
@@ -720,6 +760,20 @@ void require_elastic_bounds(const nlohmann::json& results) {
 class DemStudy : public Study {
  public:
   std::string default_case_name() const override { return "dem"; }
+  // [dem] engine = "lammps": under mpirun one run over every rank (LAMMPS'
+  // domain decomposition), rank 0 writing the outputs and checkpoints.
+  std::vector<std::string> prepare(Config& inputs) override {
+    engine_ = read_engine(inputs);
+    return {};
+  }
+  bool distributed() const override { return engine_ == "lammps"; }
+  bool resumes_distributed() const override { return engine_ == "lammps"; }
+  bool calls_mpi() const override { return engine_ == "lammps"; }
+  void run_other_rank(const Config&) override {
+#ifdef WEARSCALE_DEM_LAMMPS
+    serve_lammps_engines();
+#endif
+  }
   std::string default_output_dir() const override {
     std::string leaf = name().substr(name().find('/') + 1);
     std::replace(leaf.begin(), leaf.end(), '_', '-');
@@ -727,6 +781,7 @@ class DemStudy : public Study {
   }
 
  protected:
+  std::string engine_ = "wearscale";
   // The driver's outputs (files, verdict) into the context; a sheared study's force history plotted.
   static void finish(const nlohmann::json& outputs, RunContext& context, const std::string& history) {
     for (const auto& f : outputs["files"]) context.add_file(f.get<std::string>());
@@ -747,7 +802,9 @@ class DemStudy : public Study {
             {"dem.scaling_exponent", "number", "[0, 1]", "1", "0.5", "size-scaling exponent s of (6.57)", ""},
             {"dem.law", "choice", fmt::format("{}", fmt::join(contact_law_names(), " | ")), "", "cohesive",
              "contact law between the particles (contact_law.hpp)", ""},
-            {"dem.friction", "number", "≥ 0", "1", "0.5", "Coulomb μ of the hooke law", ""}};
+            {"dem.friction", "number", "≥ 0", "1", "0.5", "Coulomb μ of the hooke law", ""},
+            {"dem.engine", "choice", std::string(engine_choices), "", "wearscale",
+             "the engine that integrates the particles (LAMMPS: over every rank under mpirun)", ""}};
   }
   // The sliding cell of the wear studies (read_sliding_cell, and the dumps).
   static Schema sliding_keys(const std::string& table, const std::string& slide_default) {
@@ -802,6 +859,7 @@ class PatchTestStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     const auto outputs = run_patch_test_study(inputs, context);
     require_elastic_bounds(context.results());
     finish(outputs, context, "");
@@ -837,6 +895,7 @@ class JunctionStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_junction_study(inputs, context), context, "junction");
   }
 };
@@ -866,6 +925,7 @@ class RoughShearStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_rough_shear_study(inputs, context), context, "rough_shear");
   }
 };
@@ -897,6 +957,7 @@ class TrappedParticlesStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_trapped_particles_study(inputs, context), context, "trapped_particles");
   }
 };
@@ -952,6 +1013,7 @@ class OxideAsperityStudy final : public DemStudy {
     return s;
   }
   void run(const Config& inputs, RunContext& context) override {
+    const EngineRanks ranks(engine_);
     finish(run_oxide_asperity_study(inputs, context), context, "oxide_asperity");
   }
 };

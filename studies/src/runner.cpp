@@ -920,6 +920,8 @@ RunSummary run_sweep(const CaseLoader& parse, const RunOptions& options, Config&
     mpi::FarmOptions farm_options;
     farm_options.label = what;
     farm_options.stop = [] { return interrupt_requested(); };
+    farm_options.root_computes =
+        std::none_of(runs.begin(), runs.end(), [](const PreparedRun& r) { return r.study->calls_mpi(); });
     const auto outcome = mpi::farm(
         mine.size(),
         [&](std::size_t t) {
@@ -1051,17 +1053,18 @@ RunSummary run_distributed(const CaseLoader& parse, const RunOptions& options) {
     if (!run->study->distributed())
       throw InputError(fmt::format("study '{}' runs on one rank only ({} ranks started; under mpirun the contact "
                                    "study is distributed, a rough wear map's surfaces, the junction runs of a "
-                                   "nano/dem scale, the strength table's points, and the runs of any [sweep]); run it "
-                                   "without mpirun",
+                                   "nano/dem scale, the strength table's points, a DEM study with [dem] engine = "
+                                   "\"lammps\", and the runs of any [sweep]); run it without mpirun",
                                    run->summary.study, mpi::size()));
   });
   mpi::refuse_together([&] {  // the folder: rank 0's alone
     if (!mpi::is_root()) return;
     lock.emplace(OutputLock::folder(run->summary.output_dir, command));
     if (!options.resume_dir) return check_fresh_start(*run);
-    // Resumed: the tasks its ensembles had finished are taken (tasks/); a checkpoint is a single run's.
+    // Resumed: the tasks its ensembles had finished are taken (tasks/); a checkpoint is a single run's,
+    // or one of a study whose state rank 0 gathers (a DEM study on the LAMMPS engine).
     const auto checkpoint = run->summary.output_dir / "checkpoint.h5";
-    if (std::error_code ec; std::filesystem::exists(checkpoint, ec))
+    if (std::error_code ec; std::filesystem::exists(checkpoint, ec) && !run->study->resumes_distributed())
       throw InputError(fmt::format("--resume {}: {} is the checkpoint of a run made without mpirun; resume it "
                                    "without mpirun",
                                    options.resume_dir->string(), checkpoint.string()));

@@ -39,7 +39,8 @@ std::string to_message(const dem::JunctionStrengthSpec& s) {
                {"loading", {s.contact_ratio, s.pressure, s.velocity, s.time_step, s.settle_distance,
                             s.sliding_distance, s.steady_from}},
                {"record_every", s.record_every},
-               {"touching_history", s.history_of_touching_pairs_only}});
+               {"touching_history", s.history_of_touching_pairs_only},
+               {"engine", s.engine}});
 }
 
 dem::JunctionStrengthSpec spec_from_message(const std::string& message) {
@@ -58,6 +59,7 @@ dem::JunctionStrengthSpec spec_from_message(const std::string& message) {
   s.settle_distance = l.at(4), s.sliding_distance = l.at(5), s.steady_from = l.at(6);
   s.record_every = j.at("record_every");
   s.history_of_touching_pairs_only = j.at("touching_history");
+  s.engine = j.at("engine").get<std::string>();
   return s;
 }
 

@@ -32,6 +32,9 @@
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/task_farm.hpp"
+#ifdef WEARSCALE_DEM_LAMMPS
+#include "wearscale/dem/lammps_engine.hpp"
+#endif
 #include "wearscale/core/task_store.hpp"
 #include "wearscale/core/utc_time.hpp"
 #include "wearscale/core/worker_pool.hpp"
@@ -120,13 +123,14 @@ std::string run_key(const JunctionStrengthSpec& s) {
   const auto& c = s.cell;
   const std::string spec = fmt::format(
       "d0={:.17g} L={} H={} B={} gap={:.17g} wall={:.17g} D/L={:.17g} p={:.17g} v={:.17g} dt={:.17g} settle={:.17g} "
-      "slide={:.17g} steady={:.17g} every={}{}{}",
+      "slide={:.17g} steady={:.17g} every={}{}{}{}",
       c.d0, c.length, c.height, c.depth, c.gap, c.wall_thickness, s.contact_ratio, s.pressure, s.velocity, s.time_step,
       s.settle_distance, s.sliding_distance, s.steady_from, s.record_every,
       s.arrangement == dem::Arrangement::Amorphous
           ? fmt::format(" amorphous seed={} relax={:.17g}/{}", s.seed, s.relax_tolerance, s.max_relax_steps)
           : std::string(),
-      s.history_of_touching_pairs_only ? " history=touching" : "");
+      s.history_of_touching_pairs_only ? " history=touching" : "",
+      s.engine == "wearscale" ? std::string() : " engine=" + s.engine);
   return md::cache_key({cache_version, WEARSCALE_VERSION, material_text(s.top), material_text(s.bottom), spec});
 }
 
@@ -202,6 +206,17 @@ class NanoDem final : public Scale {
     // touching pairs only, as LAMMPS did in the thesis' runs (its
     // gran/cohesive/history); "kept": every contact keeps its history (6.4).
     base_.history_of_touching_pairs_only = c.choice_or("history", "kept", {"kept", "touching"}) == "touching";
+    // The engine of the junction runs (dem/engine.hpp): wearscale's own, or
+    // LAMMPS (a build with liblammps-dev), each run a LAMMPS instance on the
+    // rank the farm hands it to.
+    base_.engine = c.choice_or("engine", "wearscale", {"wearscale", "lammps"});
+#ifdef WEARSCALE_DEM_LAMMPS
+    if (base_.engine == "lammps") dem::register_lammps_engine();
+#else
+    if (base_.engine == "lammps")
+      throw c.error("engine", "this build has no LAMMPS engine (it is built when CMake finds Debian's liblammps-dev, "
+                    "option WEARSCALE_DEM_LAMMPS)", "wearscale");
+#endif
     // Interfaces with a material listed here are built amorphous (§6.2.2)
     // instead of on the HCP lattice of §7.1.1: the weakened, amorphous state
     // the thesis suggests for Si (§9.3.3).
@@ -412,6 +427,11 @@ class NanoDem final : public Scale {
     WorkerOptions workers;
     workers.workers = static_cast<unsigned>(
         std::min({jobs_, std::max(1, omp_get_max_threads()), static_cast<int>(specs.size())}));
+#ifdef WEARSCALE_DEM_LAMMPS
+    // LAMMPS instances side by side need MPI on every thread (a process of
+    // its own initialises it so); under mpirun, one after the other.
+    if (base_.engine == "lammps" && !dem::lammps_engines_on_threads()) workers.workers = 1;
+#endif
     workers.omp_threads = 1;
     run_on_workers(specs.size(), workers, [&](std::size_t k) {
       auto claim = JunctionRuns::instance().claim(keys[k]);
@@ -474,6 +494,7 @@ class NanoDem final : public Scale {
     options.label = "nano/dem " + pair + " junctions";
     options.stop = [] { return interrupt_requested(); };
     options.name = [&](std::size_t k) { return junction_name(pair, specs[k]); };
+    options.root_computes = base_.engine != "lammps";  // a LAMMPS instance runs on a rank's main thread
     const auto outcome = mpi::farm_described(kJunctionTask, descriptions, options);
     nlohmann::json tasks = ctx.notes().contains("tasks") ? ctx.notes()["tasks"] : nlohmann::json::array();
     for (std::size_t k = 0; k < specs.size(); ++k) {

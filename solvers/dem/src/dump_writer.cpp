@@ -155,6 +155,10 @@ void DumpWriter::write(const Simulation& sim, const std::vector<DumpColumn>& ext
   write(sim.step_count(), sim.time(), sim.particles(), sim.box(), extra);
 }
 
+void DumpWriter::write(const Engine& engine, const std::vector<DumpColumn>& extra) {
+  write(engine.step_count(), engine.time(), engine.particles(), engine.box(), extra);
+}
+
 void DumpWriter::commit() {
   if (committed_) return;
   const int closed = std::fclose(file_);

@@ -6,6 +6,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
 #include "wearscale/dem/shapes.hpp"
@@ -152,7 +153,7 @@ std::string JunctionStrengthResult::verdict() const {
   return "sheared";
 }
 
-double contact_ratio_at(const Simulation& sim, double z_mid, double d0) {
+double contact_ratio_at(const Engine& sim, double z_mid, double d0) {
   const auto& p = sim.particles();
   const double lo = sim.box().lo.x, length = sim.box().length().x;
   const auto bins = static_cast<long>(std::ceil(16.0 * length / d0));
@@ -216,8 +217,9 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   const double dt = spec.time_step * law.critical_time_step(particles);
   double wall_mass = 0.0;
   for (std::size_t i : top) wall_mass += particles.mass[i];
-  Simulation sim(std::move(particles), box, std::move(law),
-                 NeighborSettings{0.1 * d0, 0, true, spec.history_of_touching_pairs_only});
+  const auto engine = make_engine(spec.engine, {std::move(particles), box, std::make_unique<CohesiveLaw>(std::move(law)),
+                                                NeighborSettings{0.1 * d0, 0, true, spec.history_of_touching_pairs_only}});
+  Engine& sim = *engine;
   sim.set_time_step(dt);
   const double area = length * depth;  // A0 = L B  (7.1)
   // The pressed wall's normal motion is damped critically on the cell's
@@ -292,12 +294,12 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec, c
   while (step < planned) {
     if (step == settle_steps) {
       out.loaded_contact_ratio = contact_ratio_at(sim, mid_plane(), d0);
-      sim.wall(top_wall).velocity.x = spec.velocity;  // start sliding
+      sim.set_wall_velocity(top_wall, 0, spec.velocity);  // start sliding
     }
     const long chunk = std::min({spec.record_every, planned - step, step < settle_steps ? settle_steps - step : planned});
     sum_t = sum_n = 0.0;
     summed = 0;
-    sim.run(chunk, accumulate, Simulation::StopInside::No);
+    sim.run(chunk, accumulate);
     step += chunk;
     JunctionSample s;
     s.time = sim.time();

@@ -8,6 +8,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/cell_order.hpp"
 #include "wearscale/dem/clusters.hpp"
 #include "wearscale/dem/cohesive_law.hpp"
@@ -214,8 +215,10 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   const BondCriterion bond = BondCriterion::cohesive(law, max_radius);
   NeighborSettings neighbors{0.1 * d0, 0, true};
   neighbors.renumber_every = spec.renumber_every;
-  Simulation sim(std::move(p), box, law, neighbors);
-  const double dt = spec.time_step * sim.law().critical_time_step(sim.particles());
+  const double dt = spec.time_step * law.critical_time_step(p);
+  const double c_c = law.critical_damping(p);  // (6.64)
+  const auto engine = make_engine(spec.engine, {std::move(p), box, std::make_unique<CohesiveLaw>(law), neighbors});
+  Engine& sim = *engine;
   sim.set_time_step(dt);
   out.time_step = dt;
   const double area = size_x * size_y;
@@ -227,7 +230,6 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
   if (settle == 0) refuse("settle distance", spec.settle_distance, "> 0 (the layer bonds to the Si while at rest)");
   out.steps = planned;
   out.substrate_top = si_top;
-  const double c_c = sim.law_as<CohesiveLaw>().critical_damping(sim.particles());  // (6.64)
   sim.set_global_damping(spec.settle_damping * c_c);
 
   const Particles& q = sim.particles();
@@ -379,14 +381,14 @@ OxideAsperityResult run_oxide_asperity(const OxideAsperitySpec& spec, const Oxid
       sum_t += 0.5 * (sim.wall(bottom_wall).force.x - sim.wall(top_wall).force.x);
       sum_n += 0.5 * (sim.wall(top_wall).force.z - sim.wall(bottom_wall).force.z);
       ++summed;
-    }, Simulation::StopInside::No);
+    });
     step += chunk;
     const double sliding = sim.wall(top_wall).displacement.x;
     if (step == settle) {
       // Loaded and at rest: undamped sliding from here; the reference surface
       // (away from the body's footprint) and the body's first window.
       sim.set_global_damping(0.0);
-      sim.wall(top_wall).velocity.x = spec.velocity;
+      sim.set_wall_velocity(top_wall, 0, spec.velocity);
       const auto& bins = profile.measure(q, in_body, si_top);
       double sum = 0.0;
       int count = 0;

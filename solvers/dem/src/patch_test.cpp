@@ -7,6 +7,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/bonds.hpp"
 #include "wearscale/dem/hcp_lattice.hpp"
 #include "wearscale/dem/simulation.hpp"
@@ -93,7 +94,7 @@ Sample build(const PatchTestSpec& spec) {
 }
 
 struct Loading {
-  Simulation sim;
+  std::unique_ptr<Engine> sim;
   std::vector<std::size_t> inner;  // mobile particles in the middle half: the measured region
   std::vector<double> y0;          // initial load-axis coordinate of every particle
   double inner_volume = 0.0;
@@ -108,9 +109,10 @@ Loading prepare(const PatchTestSpec& spec, Sample s, WallMotion top_motion, doub
   const double damping = damping_fraction * law.critical_damping(s.particles);
   const Vec3 length = s.box.length();
   const double area = length.x * length.z;
-  Loading l{Simulation(std::move(s.particles), s.box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true}),
+  Loading l{make_engine(spec.engine, {std::move(s.particles), s.box, std::make_unique<CohesiveLaw>(std::move(law)),
+                                      NeighborSettings{0.1 * spec.d0, 0, true}}),
             {}, {}, 0.0, area, s.height, 1};
-  auto& sim = l.sim;
+  auto& sim = *l.sim;
   sim.set_time_step(dt);
   sim.set_global_damping(damping);
   sim.set_track_virial(true);
@@ -139,11 +141,11 @@ Loading prepare(const PatchTestSpec& spec, Sample s, WallMotion top_motion, doub
 // over the mobile particles (least squares, GSL).
 double axial_strain(const Loading& l) {
   std::vector<double> y, u;
-  const auto& p = l.sim.particles();
+  const auto& p = l.sim->particles();
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.wall[i] != no_wall) continue;
     y.push_back(l.y0[i]);
-    const double periods = p.image[i][load_axis] * l.sim.box().length()[load_axis];
+    const double periods = p.image[i][load_axis] * l.sim->box().length()[load_axis];
     u.push_back(p.position[i][load_axis] + periods - l.y0[i]);
   }
   double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
@@ -153,7 +155,7 @@ double axial_strain(const Loading& l) {
 
 SymTensor inner_stress(const Loading& l) {
   // The region's volume follows its axial strain.
-  return virial_stress(l.sim, l.inner, l.inner_volume * (1.0 + axial_strain(l)));
+  return virial_stress(*l.sim, l.inner, l.inner_volume * (1.0 + axial_strain(l)));
 }
 
 // The three tests run one after the other; a checkpoint holds which one
@@ -161,7 +163,7 @@ SymTensor inner_stress(const Loading& l) {
 // and its loop tallies.
 enum Phase { elastic_phase = 0, tension_phase = 1, shear_phase = 2 };
 
-CheckpointState patch_state(Phase phase, const PatchTestResult& r, const Simulation& sim, std::vector<double> loop) {
+CheckpointState patch_state(Phase phase, const PatchTestResult& r, const Engine& sim, std::vector<double> loop) {
   CheckpointState st;
   sim.save_state(st);
   st.put("patch_test.phase", static_cast<double>(phase));
@@ -203,7 +205,7 @@ void check_elastic_result(const PatchTestSpec& spec, const PatchTestResult& r, c
                                      r.elastic_steps, dt));
   // The strain energy ½ σ ε V the load stored, against the kinetic energy left.
   const double stored = 0.5 * spec.load * spec.material.young * std::fabs(strain) * l.area * l.height;
-  const double kinetic = l.sim.kinetic_energy();
+  const double kinetic = l.sim->kinetic_energy();
   if (!(kinetic <= 1e-6 * stored))
     throw NumericalError("dem patch test", r.elastic_steps, "kinetic energy of the loaded sample",
                          fmt::format("{:.3g}, {:.2g} of the strain energy {:.3g}: the wall stopped but the particles "
@@ -213,9 +215,9 @@ void check_elastic_result(const PatchTestSpec& spec, const PatchTestResult& r, c
   if (!spec.amorphous) {
     // In the loaded lattice each particle still bonds to its 12 nearest
     // neighbours only: none pulled in a second neighbour.
-    const auto& p = l.sim.particles();
+    const auto& p = l.sim->particles();
     std::vector<int> bonds(p.size(), 0);
-    for (const auto& [i, j] : bonded_pairs(p, l.sim.box(), BondCriterion::cohesive(CohesiveLaw({spec.material}), 0.5 * spec.d0))) {
+    for (const auto& [i, j] : bonded_pairs(p, l.sim->box(), BondCriterion::cohesive(CohesiveLaw({spec.material}), 0.5 * spec.d0))) {
       ++bonds[i];
       ++bonds[j];
     }
@@ -229,32 +231,32 @@ void elastic_test(const PatchTestSpec& spec, PatchTestResult& r, const PatchTest
                   const RunCheckpoints& checkpoints, const CheckpointState* from) {
   const double pressure = spec.load * spec.material.young;
   auto l = prepare(spec, build(spec), WallMotion::pressed(load_axis, pressure, 1.0, +1), spec.elastic_damping);
-  r.particles = l.sim.particles().size();
+  r.particles = l.sim->particles().size();
   // Damped loading until the top wall stops: its displacement changes by
   // less than 1e-5 of itself over a check interval.
   const long chunk = 500;
   double previous = 0.0;
   long steps = 0;
   if (from != nullptr) {
-    l.sim.restore_state(*from);
+    l.sim->restore_state(*from);
     const auto& t = tallies(*from, "patch_test.loop", 2);
     steps = step_tally(*from, "patch_test.loop", t[0]);
     previous = t[1];
   }
   while (steps < spec.max_elastic_steps) {
-    l.sim.run(chunk, {}, Simulation::StopInside::No);
+    l.sim->run(chunk);
     steps += chunk;
     if (progress) progress("elastic", steps, spec.max_elastic_steps);
-    const double now = l.sim.wall(l.top).displacement[load_axis];
+    const double now = l.sim->wall(l.top).displacement[load_axis];
     if (steps >= 4 * chunk && std::fabs(now - previous) < 1e-5 * std::fabs(now)) {
       r.elastic_converged = true;
       break;
     }
     previous = now;
-    checkpoints.offer(steps, [&] { return patch_state(elastic_phase, r, l.sim, {double(steps), previous}); });
+    checkpoints.offer(steps, [&] { return patch_state(elastic_phase, r, *l.sim, {double(steps), previous}); });
   }
   r.elastic_steps = steps;
-  l.sim.compute_forces();
+  l.sim->compute_forces();
   const double strain = axial_strain(l);
   const SymTensor s = inner_stress(l);
   const double lateral = 0.5 * (s[0] + s[2]);  // σ_xx and σ_zz (equal for an isotropic sample)
@@ -283,21 +285,21 @@ double strength_test(const PatchTestSpec& spec, int direction, int component, Pa
   double peak = 0.0;
   long done = 0;
   if (from != nullptr) {
-    l.sim.restore_state(*from);
+    l.sim->restore_state(*from);
     const auto& t = tallies(*from, "patch_test.loop", 2);
     done = step_tally(*from, "patch_test.loop", t[0]);
     peak = t[1];
   }
   const long chunk = 100;
   while (done < planned) {
-    l.sim.run(chunk, {}, Simulation::StopInside::No);
+    l.sim->run(chunk);
     done += chunk;
     const double stress = inner_stress(l)[static_cast<std::size_t>(component)];
     peak = std::max(peak, stress);
     if (progress) progress(name, done, planned);
     if (peak > 0.0 && stress < 0.3 * peak) break;  // failed
     checkpoints.offer(r.elastic_steps + r.strength_steps + done,
-                      [&] { return patch_state(phase, r, l.sim, {double(done), peak}); });
+                      [&] { return patch_state(phase, r, *l.sim, {double(done), peak}); });
   }
   r.strength_steps += done;
   return peak;

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/simulation.hpp"
 
 namespace wearscale::dem {
@@ -40,9 +41,9 @@ RigidFit rigid_fit(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return out;
 }
 
-std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<std::size_t>& set) {
-  const auto& p = sim.particles();
-  const Vec3 l = sim.box().length();
+namespace {
+std::vector<Vec3> unwrapped(const Particles& p, const Box& box, const std::vector<std::size_t>& set) {
+  const Vec3 l = box.length();
   std::vector<Vec3> x;
   x.reserve(set.size());
   for (std::size_t i : set) {
@@ -51,6 +52,16 @@ std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<s
     x.push_back(xi);
   }
   return x;
+}
+
+}  // namespace
+
+std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<std::size_t>& set) {
+  return unwrapped(sim.particles(), sim.box(), set);
+}
+
+std::vector<Vec3> unwrapped_positions(const Engine& engine, const std::vector<std::size_t>& set) {
+  return unwrapped(engine.particles(), engine.box(), set);
 }
 
 }  // namespace wearscale::dem

@@ -33,7 +33,7 @@ void check(const RoughShearSpec& s) {
 // cluster is the candidate wear particle (its core, without the shell that
 // touches the surfaces).
 std::vector<std::size_t> largest_worn_cluster(const SlidingCell& cell) {
-  const auto& sim = cell.simulation();
+  const auto& sim = cell.engine();
   auto worn = cell.worn_flags();
   const BondCriterion& bond = cell.bond();
   std::vector<char> lining(worn.size(), 0);
@@ -114,7 +114,7 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
     particles.body[i] = particles.position[i].z <= z_bottom(particles.position[i].x) ? cell_bottom : cell_top;
 
   SlidingCell cell(std::move(particles), box, spec.cell);
-  out.particles = cell.simulation().particles().size();
+  out.particles = cell.engine().particles().size();
   out.time_step = cell.time_step();
   out.area = cell.area();
   const long planned = cell.planned_steps();
@@ -127,7 +127,7 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
   // The run's state: the DEM system and the measurements so far.
   auto save = [&] {
     CheckpointState st;
-    cell.simulation().save_state(st);
+    cell.engine().save_state(st);
     put_samples(st, "rough_shear.history", out.history);
     put_indices(st, "rough_shear.wear_particle", wear_particle);
     put_points(st, "rough_shear.window_positions", window_positions);
@@ -136,7 +136,7 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
   };
   if (checkpoints.from != nullptr) {
     const CheckpointState& st = *checkpoints.from;
-    cell.simulation().restore_state(st);
+    cell.engine().restore_state(st);
     const auto& t = tallies(st, "rough_shear.tallies", 3);
     done = step_tally(st, "rough_shear.tallies", t[0]);
     out.peak_tangential_force = t[1];
@@ -155,7 +155,7 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
     out.peak_tangential_force = std::max(out.peak_tangential_force, s.tangential_force);
     if (step >= window_start && !window_open && step < planned) {
       wear_particle = largest_worn_cluster(cell);
-      window_positions = unwrapped_positions(cell.simulation(), wear_particle);
+      window_positions = unwrapped_positions(cell.engine(), wear_particle);
       window_open = true;
     }
     if (observe) observe(cell, s, step, planned);
@@ -171,10 +171,10 @@ RoughShearResult run_rough_shear(const RoughShearSpec& spec, const AmorphousSamp
   }
   const auto worn = cell.worn_flags();
   for (double w : worn) out.worn += w != 0.0 ? 1u : 0u;
-  out.worn_fraction = static_cast<double>(out.worn) / static_cast<double>(cell.simulation().particles().count_mobile());
+  out.worn_fraction = static_cast<double>(out.worn) / static_cast<double>(cell.engine().particles().count_mobile());
   out.wear_particle = wear_particle.size();
   if (!wear_particle.empty()) {
-    out.wear_particle_residual = rigid_fit(window_positions, unwrapped_positions(cell.simulation(), wear_particle)).residual;
+    out.wear_particle_residual = rigid_fit(window_positions, unwrapped_positions(cell.engine(), wear_particle)).residual;
     out.regime = out.wear_particle_residual < 1.0 / 3.0 ? "rolling wear particles" : "shear band";
   } else {
     out.regime = out.worn < smallest_wear_particle ? "no wear particle" : "shear band";

@@ -7,6 +7,7 @@
 
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/amorphous_sample.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/bonds.hpp"
 #include "wearscale/dem/clusters.hpp"
 #include "wearscale/dem/rigid_fit.hpp"
@@ -106,7 +107,9 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
   double max_radius = 0.0;
   for (double r : particles.radius) max_radius = std::max(max_radius, r);
   const BondCriterion bonded = BondCriterion::cohesive(law, max_radius);
-  Simulation sim(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true});
+  const auto engine = make_engine(spec.engine, {std::move(particles), box, std::make_unique<CohesiveLaw>(std::move(law)),
+                                                NeighborSettings{0.1 * spec.d0, 0, true}});
+  Engine& sim = *engine;
   sim.set_time_step(dt);
   sim.add_wall(std::move(bottom), WallMotion::fixed());
   auto pressed = WallMotion::pressed(2, spec.pressure, size.x * size.y, +1, {spec.velocity, 0, 0});
@@ -165,7 +168,7 @@ ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, cons
   }
   while (step < planned) {
     const long chunk = std::min(spec.record_every, planned - step);
-    sim.run(chunk, {}, Simulation::StopInside::No);
+    sim.run(chunk);
     step += chunk;
     const auto s = sample_now();
     out.history.push_back(s);

@@ -69,8 +69,9 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   auto law = make_contact_law(spec.law, {{spec.material}, spec.d0, spec.friction});
   const double dt = spec.time_step * law->critical_time_step(particles);
   bond_ = BondCriterion::cohesive(CohesiveLaw({spec.material}), max_radius);
-  sim_ = std::make_unique<Simulation>(std::move(particles), box, std::move(law), NeighborSettings{0.1 * spec.d0, 0, true, spec.history_of_touching_pairs_only});
-  sim_->set_time_step(dt);
+  engine_ = make_engine(spec.engine, {std::move(particles), box, std::move(law),
+                                      NeighborSettings{0.1 * spec.d0, 0, true, spec.history_of_touching_pairs_only}});
+  engine_->set_time_step(dt);
   area_ = size.x * size.y;
   settle_ = dem::planned_steps(spec.settle_distance / (spec.velocity * dt), "the sliding cell's settling");
   slide_ = dem::planned_steps(spec.sliding_distance / (spec.velocity * dt), "the sliding cell's slide");
@@ -80,14 +81,14 @@ SlidingCell::SlidingCell(Particles particles, Box box, const SlidingCellSpec& sp
   const double stiffness = spec.material.young * area_ / (z_max - z_min);
   auto pressed = WallMotion::pressed(2, spec.pressure, area_, +1, {settle_ > 0 ? 0.0 : spec.velocity, 0.0, 0.0});
   pressed.damping = spec.wall_damping * 2.0 * std::sqrt(stiffness * wall_mass);
-  bottom_wall_ = sim_->add_wall(std::move(bottom), WallMotion::fixed());
-  top_wall_ = sim_->add_wall(std::move(top), pressed);
-  tags_ = std::make_unique<WornParticles>(sim_->particles(), sim_->box(), bond_);
+  bottom_wall_ = engine_->add_wall(std::move(bottom), WallMotion::fixed());
+  top_wall_ = engine_->add_wall(std::move(top), pressed);
+  tags_ = std::make_unique<WornParticles>(engine_->particles(), engine_->box(), bond_);
 }
 
 std::vector<double> SlidingCell::worn_flags() const {
-  const auto& p = sim_->particles();
-  const auto worn = tags_->worn(p, sim_->box());
+  const auto& p = engine_->particles();
+  const auto worn = tags_->worn(p, engine_->box());
   std::vector<double> flag(p.size(), 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) flag[i] = worn[i] && !p.frozen(i) ? 1.0 : 0.0;
   return flag;
@@ -98,25 +99,25 @@ SlidingSample SlidingCell::advance(long steps) {
   // sample between them.
   double sum_t = 0.0, sum_n = 0.0;
   long summed = 0;
-  sim_->run(steps, [&](long) {
-    sum_t += 0.5 * (sim_->wall(bottom_wall_).force.x - sim_->wall(top_wall_).force.x);
-    sum_n += 0.5 * (sim_->wall(top_wall_).force.z - sim_->wall(bottom_wall_).force.z);
+  engine_->run(steps, [&](long) {
+    sum_t += 0.5 * (engine_->wall(bottom_wall_).force.x - engine_->wall(top_wall_).force.x);
+    sum_n += 0.5 * (engine_->wall(top_wall_).force.z - engine_->wall(bottom_wall_).force.z);
     ++summed;
-  });
+  }, Engine::StopInside::Yes);
   SlidingSample s;
-  s.time = sim_->time();
-  s.sliding = sim_->wall(top_wall_).displacement.x;
+  s.time = engine_->time();
+  s.sliding = engine_->wall(top_wall_).displacement.x;
   s.tangential_force = summed > 0 ? sum_t / static_cast<double>(summed) : 0.0;
   s.normal_force = summed > 0 ? sum_n / static_cast<double>(summed) : 0.0;
-  s.kinetic_energy = sim_->kinetic_energy();
+  s.kinetic_energy = engine_->kinetic_energy();
   const auto worn = worn_flags();
-  const auto& p = sim_->particles();
+  const auto& p = engine_->particles();
   for (double w : worn) s.worn += w;
   auto surface_of = [&](int body) {
     return [&, body](std::size_t i) { return p.body[i] == body && worn[i] == 0.0; };
   };
-  s.roughness_bottom = surface_roughness(p, sim_->box(), surface_of(cell_bottom), Facing::up, spec_.d0);
-  s.roughness_top = surface_roughness(p, sim_->box(), surface_of(cell_top), Facing::down, spec_.d0);
+  s.roughness_bottom = surface_roughness(p, engine_->box(), surface_of(cell_bottom), Facing::up, spec_.d0);
+  s.roughness_top = surface_roughness(p, engine_->box(), surface_of(cell_top), Facing::down, spec_.d0);
   return s;
 }
 
@@ -126,7 +127,7 @@ void SlidingCell::run(const std::function<void(const SlidingSample&, long step, 
     const long chunk = std::min(spec_.record_every, step < settle_ ? settle_ - step : planned - step);
     const auto s = advance(chunk);
     step += chunk;
-    if (step == settle_) sim_->wall(top_wall_).velocity.x = spec_.velocity;  // start sliding
+    if (step == settle_) engine_->set_wall_velocity(top_wall_, 0, spec_.velocity);  // start sliding
     each(s, step, planned);
   }
 }

@@ -82,7 +82,7 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
   }
 
   SlidingCell cell(std::move(particles), box, spec.cell);
-  const auto& p = cell.simulation().particles();
+  const auto& p = cell.engine().particles();
   std::vector<std::vector<std::size_t>> loose(static_cast<std::size_t>(spec.count));
   for (std::size_t i = 0; i < p.size(); ++i)
     if (disc[i] >= 0 && !p.frozen(i)) loose[static_cast<std::size_t>(disc[i])].push_back(i);
@@ -110,7 +110,7 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
   // positions of every loose particle, one after the other).
   auto save = [&] {
     CheckpointState st;
-    cell.simulation().save_state(st);
+    cell.engine().save_state(st);
     put_samples(st, "trapped_particles.history", out.history);
     std::vector<Vec3> window;
     for (const auto& w : window_positions) window.insert(window.end(), w.begin(), w.end());
@@ -120,7 +120,7 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
   };
   if (checkpoints.from != nullptr) {
     const CheckpointState& st = *checkpoints.from;
-    cell.simulation().restore_state(st);
+    cell.engine().restore_state(st);
     const auto& t = tallies(st, "trapped_particles.tallies", 2);
     done = step_tally(st, "trapped_particles.tallies", t[0]);
     out.peak_tangential_force = t[1];
@@ -139,14 +139,14 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
   } else {
     out.history.push_back(cell.advance(0));
     if (window_start == 0)
-      for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.simulation(), l));
+      for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.engine(), l));
   }
   cell.run([&](const SlidingSample& s, long step, long) {
     done = step;
     out.history.push_back(s);
     out.peak_tangential_force = std::max(out.peak_tangential_force, s.tangential_force);
     if (step >= window_start && step < planned && window_positions.empty())
-      for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.simulation(), l));
+      for (const auto& l : loose) window_positions.push_back(unwrapped_positions(cell.engine(), l));
     if (observe) observe(cell, s, step, planned);
     if (step < planned) checkpoints.offer(step, save);
   }, done);
@@ -167,7 +167,7 @@ TrappedParticlesResult run_trapped_particles(const TrappedParticlesSpec& spec, c
     }
   out.band_thickness = worn_volume / (sample.relaxed_volume_fraction * out.area);
   for (std::size_t k = 0; k < loose.size(); ++k) {
-    const double r = rigid_fit(window_positions[k], unwrapped_positions(cell.simulation(), loose[k])).residual;
+    const double r = rigid_fit(window_positions[k], unwrapped_positions(cell.engine(), loose[k])).residual;
     out.loose_residual.push_back(r);
     out.mean_residual += r / static_cast<double>(loose.size());
   }

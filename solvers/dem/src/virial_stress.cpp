@@ -8,9 +8,8 @@ namespace wearscale::dem {
 
 namespace {
 template <class Indices>
-SymTensor stress_of(const Simulation& sim, const Indices& region, std::size_t count, double volume) {
-  const auto& p = sim.particles();
-  const auto& w = sim.virial();
+SymTensor stress_of(const Particles& p, const std::vector<SymTensor>& w, const Indices& region, std::size_t count,
+                    double volume) {
   if (w.size() != p.size())
     throw std::logic_error(
         "virial stress: the simulation keeps no per-particle virial for its particles; call "
@@ -54,18 +53,29 @@ struct AllIndices {
   Iterator begin() const { return {0}; }
   Iterator end() const { return {n}; }
 };
+
+template <class System>
+SymTensor region_stress(const System& sim, std::span<const std::size_t> region, double volume) {
+  for (std::size_t i : region)
+    if (i >= sim.particles().size()) throw std::out_of_range("virial stress: particle index out of range");
+  return stress_of(sim.particles(), sim.virial(), region, region.size(), volume);
+}
+
+template <class System>
+SymTensor whole_box_stress(const System& sim) {
+  const std::size_t n = sim.particles().size();
+  return stress_of(sim.particles(), sim.virial(), AllIndices{n}, n, sim.box().volume());
+}
 }  // namespace
 
 SymTensor virial_stress(const Simulation& sim, std::span<const std::size_t> region, double volume) {
-  for (std::size_t i : region)
-    if (i >= sim.particles().size()) throw std::out_of_range("virial stress: particle index out of range");
-  return stress_of(sim, region, region.size(), volume);
+  return region_stress(sim, region, volume);
 }
-
-SymTensor box_stress(const Simulation& sim) {
-  const std::size_t n = sim.particles().size();
-  return stress_of(sim, AllIndices{n}, n, sim.box().volume());
+SymTensor virial_stress(const Engine& engine, std::span<const std::size_t> region, double volume) {
+  return region_stress(engine, region, volume);
 }
+SymTensor box_stress(const Simulation& sim) { return whole_box_stress(sim); }
+SymTensor box_stress(const Engine& engine) { return whole_box_stress(engine); }
 
 double max_normal_stress(const SymTensor& s) {
   return std::max({std::fabs(s[0]), std::fabs(s[1]), std::fabs(s[2])});

@@ -51,6 +51,11 @@ struct FarmOptions {
   std::function<std::string(std::size_t)> identity;
   /// Task k in messages (e.g. "seed 3"); default "task k+1".
   std::function<std::string(std::size_t)> name;
+  /// Whether rank 0 computes tasks on a thread of its own beside handing
+  /// them out. False for tasks that make MPI calls of their own (a LAMMPS
+  /// instance on MPI_COMM_SELF): under MPI_THREAD_FUNNELED only a rank's main
+  /// thread may, so rank 0 then only hands out and the other ranks compute.
+  bool root_computes = true;
 };
 
 /// What a farm did, on every rank (rank 0's figures, shared with all).

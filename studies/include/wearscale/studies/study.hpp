@@ -88,6 +88,13 @@ class Study {
   /// same on all of them.
   virtual bool distributed() const { return false; }
   virtual void run_other_rank(const Config& /*inputs*/) {}
+  /// A distributed run that checkpoints and resumes under mpirun (its state
+  /// gathered to rank 0 by collective calls); the others are resumed without.
+  virtual bool resumes_distributed() const { return false; }
+  /// Whether a run makes MPI calls of its own on the thread that runs it (a
+  /// LAMMPS instance): the runs of a sweep under mpirun then go to the ranks'
+  /// main threads only (mpi::FarmOptions::root_computes).
+  virtual bool calls_mpi() const { return false; }
 
   /// Whether a run holds ensembles of independent tasks (a rough wear map's
   /// surfaces, nano/dem's junction runs, a strength table's points): those

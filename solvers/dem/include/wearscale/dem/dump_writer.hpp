@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/simulation.hpp"
 
 namespace wearscale::dem {
@@ -50,6 +51,7 @@ class DumpWriter {
   /// material + 1.
   void write(long step, double time, const Particles& p, const Box& box, const std::vector<DumpColumn>& extra = {});
   void write(const Simulation& sim, const std::vector<DumpColumn>& extra = {});
+  void write(const Engine& engine, const std::vector<DumpColumn>& extra = {});
 
   std::size_t frames() const { return frames_; }
   /// Where the file stands now, for a checkpoint. From now on the

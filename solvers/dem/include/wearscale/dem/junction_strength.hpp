@@ -23,7 +23,7 @@
 
 namespace wearscale::dem {
 
-class Simulation;
+class Engine;
 
 /// The periodic cell. Thesis: 37.5 × 37.5 × 2.4 nm³ with d0 = 1.5 nm, i.e.
 /// 25 rows along x, ≈ 14 double rows (√3 d0) in height, one HCP cell
@@ -69,6 +69,8 @@ struct JunctionStrengthSpec {
   /// only, as LAMMPS did in the thesis' runs (NeighborSettings); off: every
   /// contact keeps its history, as (6.4) defines it.
   bool history_of_touching_pairs_only = false;
+  /// The engine that integrates the run (engine.hpp: "wearscale", "lammps").
+  std::string engine = "wearscale";
 };
 
 struct JunctionStrengthResult {
@@ -96,7 +98,7 @@ struct JunctionStrengthResult {
 };
 
 /// Called after each sample (progress, dumps).
-using JunctionStrengthObserver = std::function<void(const Simulation&, const JunctionSample&, long step, long planned)>;
+using JunctionStrengthObserver = std::function<void(const Engine&, const JunctionSample&, long step, long planned)>;
 
 JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec,
                                              const JunctionStrengthObserver& observe = {},
@@ -104,7 +106,7 @@ JunctionStrengthResult run_junction_strength(const JunctionStrengthSpec& spec,
 
 /// The measured contact ratio: the fraction of the cell length covered by
 /// the diameters of mobile particles centred within d0/2 of `z_mid`.
-double contact_ratio_at(const Simulation& sim, double z_mid, double d0);
+double contact_ratio_at(const Engine& sim, double z_mid, double d0);
 
 /// One junction run reduced to what the fit uses.
 struct JunctionPoint {

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "wearscale/dem/cohesive_material.hpp"
@@ -26,7 +27,7 @@
 
 namespace wearscale::dem {
 
-class Simulation;
+class Engine;
 
 /// Body tags: the Si substrate, the SiO2 layer, the loose cylinder, the plate.
 inline constexpr int asperity_substrate = 0, asperity_layer = 1, asperity_body = 2, asperity_plate = 3;
@@ -63,6 +64,8 @@ struct OxideAsperitySpec {
   /// Particles renumbered along the cells every this many neighbour builds
   /// (NeighborSettings::renumber_every; 0: never).
   int renumber_every = 0;
+  /// The engine that integrates the run (engine.hpp: "wearscale", "lammps").
+  std::string engine = "wearscale";
 };
 
 /// InputError naming the quantity, its value and the allowed range.
@@ -113,7 +116,7 @@ struct OxideAsperityResult {
 /// Called after each sample: the system, the sample, the steps done and
 /// planned, and the body flag of each particle (1: in the rolling body).
 using OxideAsperityObserver =
-    std::function<void(const Simulation&, const OxideAsperitySample&, long step, long planned, const std::vector<double>& body)>;
+    std::function<void(const Engine&, const OxideAsperitySample&, long step, long planned, const std::vector<double>& body)>;
 
 /// Offers its state after every sample (run_checkpoints.hpp): a run started
 /// `from` one sets the system up as before, restores it and ends bit for bit

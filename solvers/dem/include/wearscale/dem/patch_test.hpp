@@ -42,6 +42,8 @@ struct PatchTestSpec {
   long max_elastic_steps = 40000;
   bool strengths = true;       ///< also run the tensile and shear tests
   unsigned seed = 1;           ///< amorphous sample
+  /// The engine that integrates the tests (engine.hpp: "wearscale", "lammps").
+  std::string engine = "wearscale";
 };
 
 struct PatchTestResult {

@@ -12,6 +12,7 @@
 namespace wearscale::dem {
 
 class Simulation;
+class Engine;
 
 struct RigidFit {
   double residual = 0.0;  ///< RMS misfit of the best rigid motion / RMS displacement about the centroid (0: rigid)
@@ -36,5 +37,6 @@ RigidFit rigid_fit(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 /// The positions of the particles `set` with their periodic images added
 /// back (continuous through boundary crossings).
 std::vector<Vec3> unwrapped_positions(const Simulation& sim, const std::vector<std::size_t>& set);
+std::vector<Vec3> unwrapped_positions(const Engine& engine, const std::vector<std::size_t>& set);
 
 }  // namespace wearscale::dem

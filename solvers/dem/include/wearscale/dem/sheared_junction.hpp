@@ -15,7 +15,7 @@
 
 namespace wearscale::dem {
 
-class Simulation;
+class Engine;
 
 struct ShearedJunctionSpec {
   CohesiveMaterial material;
@@ -35,6 +35,8 @@ struct ShearedJunctionSpec {
   /// this stress (in E) or after max_relax_steps.
   double relax_tolerance = 1e-4;
   long max_relax_steps = 20000;
+  /// The engine that integrates the run (engine.hpp: "wearscale", "lammps").
+  std::string engine = "wearscale";
 };
 
 /// One sample of the history.
@@ -71,8 +73,8 @@ struct ShearedJunctionResult {
   std::string verdict() const { return detached ? "detached into a rolling particle" : "deformed plastically"; }
 };
 
-/// Called every record_every steps with the simulation (dumps, progress).
-using JunctionObserver = std::function<void(const Simulation&, const JunctionSample&, long step, long planned)>;
+/// Called every record_every steps with the engine (dumps, progress).
+using JunctionObserver = std::function<void(const Engine&, const JunctionSample&, long step, long planned)>;
 
 /// `checkpoints` offers the state after every sample and resumes from one.
 ShearedJunctionResult run_sheared_junction(const ShearedJunctionSpec& spec, const JunctionObserver& observe = {},

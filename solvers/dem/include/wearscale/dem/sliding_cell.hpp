@@ -15,6 +15,7 @@
 #include "wearscale/dem/amorphous_sample.hpp"
 #include "wearscale/dem/cohesive_material.hpp"
 #include "wearscale/dem/run_checkpoints.hpp"
+#include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/worn_particles.hpp"
 
@@ -34,6 +35,8 @@ struct SlidingCellSpec {
   /// only, as LAMMPS did in the thesis' runs (NeighborSettings); by default
   /// every pair within reach keeps its history, as (6.4) defines it.
   bool history_of_touching_pairs_only = false;
+  /// The engine that integrates the cell (engine.hpp: "wearscale", "lammps").
+  std::string engine = "wearscale";
   double d0 = 0.0;                ///< mode of the particle diameters
   double largest = 0.0;           ///< d_l (0: 1.25 d0; §6.2.3 fixes it across discretizations)
   Vec3 box{};                     ///< L (sliding, periodic) × W (periodic depth) × H (normal)
@@ -95,19 +98,19 @@ class SlidingCell {
   /// Loading and sliding steps.
   long planned_steps() const { return settle_ + slide_; }
 
-  Simulation& simulation() { return *sim_; }
-  const Simulation& simulation() const { return *sim_; }
+  Engine& engine() { return *engine_; }
+  const Engine& engine() const { return *engine_; }
   /// The worn flag of each particle now (walls never worn), as 0/1.
   std::vector<double> worn_flags() const;
   const WornParticles& tags() const { return *tags_; }
   const BondCriterion& bond() const { return bond_; }
   double area() const { return area_; }  ///< A0 = L W
-  double time_step() const { return sim_->time_step(); }
+  double time_step() const { return engine_->time_step(); }
   int top_wall() const { return top_wall_; }
 
  private:
   SlidingCellSpec spec_;
-  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<Engine> engine_;
   std::unique_ptr<WornParticles> tags_;
   BondCriterion bond_;
   int bottom_wall_ = 0, top_wall_ = 1;
