@@ -11,24 +11,9 @@ import re
 import sys
 from pathlib import Path
 
-# The pages checked. Extend this list as pages are cleaned.
-PAGES = [
-    "README.md",
-    "docs/index.md",
-    "docs/api.md",
-    "docs/architecture.md",
-    "docs/bem.md",
-    "docs/dem.md",
-    "docs/install.md",
-    "docs/materials.md",
-    "docs/references.md",
-    "docs/reproduces.md",
-    "docs/studies.md",
-    "docs/testing.md",
-    "docs/topography.md",
-    "docs/results/bem.md",
-    "docs/results/dem.md",
-]
+# The pages checked: the README and every page of the manual (docs/**/*.md).
+def all_pages(root):
+    return ["README.md"] + sorted(str(p.relative_to(root)) for p in (root / "docs").rglob("*.md"))
 
 MONTHS = r"(?:Jan|Feb|Mar|Apr|May|Jun|Jul|Aug|Sep|Sept|Oct|Nov|Dec)[a-z]*\.?"
 RULES = [
@@ -60,7 +45,7 @@ def main(argv):
         print(__doc__, file=sys.stderr)
         return 2
     root = Path(argv[1])
-    pages = argv[2:] or PAGES
+    pages = argv[2:] or all_pages(root)
     found = 0
     for page in pages:
         path = root / page
