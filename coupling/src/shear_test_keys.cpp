@@ -4,33 +4,49 @@
 #include <cstdlib>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "wearscale/core/cache_folder.hpp"
+#include "wearscale/io/material_definitions.hpp"
 #include "wearscale/md/result_cache.hpp"
 
 namespace wearscale::coupling {
 
 using namespace md;
 
-ShearTestSpec read_shear_test_spec(const Config& config) {
-  const Config c = config.section("md");
-  return read_shear_test_spec(c, c.choice("material", {"Si", "SiO2"}));
+ShearTestSpec read_shear_test_spec(const Config& root) {
+  const Config c = root.section("md");
+  materials::MaterialLibrary library;
+  define_materials_from(library, root);
+  const std::string material = c.string("material");
+  if (!library.contains(material))
+    throw c.error("material", "unknown material",
+                  fmt::format("{} or a [materials.define.<name>] table with an interatomic model",
+                              fmt::join(library.names(), ", ")));
+  const auto& record = library.get(material);
+  if (!record.interatomic)
+    throw c.error("material", "the material has no interatomic model for the MD shear test",
+                  fmt::format("a [materials.define.{}.interatomic] table (pair_style, potential, elements, masses, "
+                              "structure, lattice_constant)",
+                              material));
+  return read_shear_test_spec(c, material, *record.interatomic);
 }
 
-ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material_name) {
-  const Material material = material_from_string(material_name);
-  ShearTestSpec s = preset_spec(material, c.choice_or("preset", "smoke", {"smoke", "thesis"}));
-  const units::Dimension rate = units::temperature / units::time;
+namespace {
 
-  s.pressures = c.numbers("pressures", Range::non_negative(), units::pressure);
-  // *_or getters with the preset's value as fallback: every key is "read",
-  // so a misspelt one gets a "did you mean" suggestion.
+// The protocol keys present in table `c` override `s` (the *_or getters take
+// the current value as fallback: every key is "read", so a misspelt one gets a
+// "did you mean" suggestion).
+void apply_protocol_keys(const Config& c, const std::string& material, const materials::InteratomicModel& model,
+                         ShearTestSpec& s) {
+  const units::Dimension rate = units::temperature / units::time;
   auto number = [](const Config& t, const char* key, double& v, const Range& r, units::Dimension dim) {
     v = t.number_or(key, v, r, dim);
   };
+  c.mark_used("pressures");
+  if (c.has("pressures")) s.pressures = c.numbers("pressures", Range::non_negative(), units::pressure);
   number(c, "lateral_size", s.lateral_size, Range::positive(), units::length);
   number(c, "height", s.height, Range::positive(), units::length);
-  number(c, "lattice_constant", s.lattice_constant, Range::positive(), units::length);
   number(c, "wall_thickness", s.wall_thickness, Range::positive(), units::length);
   number(c, "thermostat_thickness", s.thermostat_thickness, Range::positive(), units::length);
   number(c, "shear_velocity", s.shear_velocity, Range::positive(), units::velocity);
@@ -48,15 +64,16 @@ ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material_
   }
   s.sample_steps = c.integer_or("sample_steps", s.sample_steps, Range::closed(1, 1e7));
   s.seed = static_cast<std::uint32_t>(c.integer_or("seed", s.seed, Range::closed(1, 9e8)));
-  if (c.has("potential")) s.potential = c.path("potential");  // relative to the case file
-  number(c, "cutoff", s.cutoff, Range::non_negative(), units::length);
+  number(c, "modulus_strain", s.modulus_strain, Range::open(0.0, 1.0), units::dimensionless);
   s.lmp = c.string_or("lmp", s.lmp);
   s.ranks = static_cast<int>(c.integer_or("ranks", s.ranks, Range::closed(1, 1024)));
-  s.use_cache = c.boolean_or("cache", true);
+  s.use_cache = c.boolean_or("cache", s.use_cache);
   if (const std::string dir = c.string_or("cache_dir", ""); !dir.empty()) s.cache_dir = expand_home(dir);
   if (c.has("quench")) {
     const Config q = c.section("quench");
-    if (material != Material::SiO2) throw c.error("quench", "a melt-quench applies to SiO2 only", "md.material = \"SiO2\"");
+    if (!model.amorphous)
+      throw c.error("quench", fmt::format("a melt-quench applies to an amorphous sample; {} is a crystal", material),
+                    "an amorphous material (SiO2, or interatomic.amorphous = true)");
     auto& qs = s.quench;
     q.mark_used("temperatures");
     if (q.has("temperatures")) qs.temperatures = q.numbers("temperatures", Range::positive(), units::temperature);
@@ -68,10 +85,39 @@ ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material_
     number(q, "barostat_damp", qs.barostat_damp, Range::positive(), units::time);
     number(q, "bulk_modulus", qs.bulk_modulus, Range::positive(), units::pressure);
     number(q, "thermostat_damp", qs.thermostat_damp, Range::positive(), units::time);
+    qs.constant_volume = q.boolean_or("constant_volume", qs.constant_volume);
   }
-  if (c.has("cutoff") && material == Material::Si)
-    throw c.error("cutoff", "the Stillinger-Weber cutoff (a·sigma) comes from the potential file",
-                  "a cutoff for SiO2 (Vashishta) only");
+}
+
+}  // namespace
+
+ShearTestSpec read_shear_test_spec(const Config& c, const std::string& material,
+                                   const materials::InteratomicModel& declared) {
+  // A table named after the material holds keys for it alone ([scale.molecular.Cu] strain_end = 0.5).
+  const bool own = c.has(material) && !c.section(material).keys().empty();
+  const Config mine = c.section(material);
+  // The model's own keys a case may override here (the [md] keys of the SiO2 and Si tests).
+  materials::InteratomicModel model = declared;
+  for (const Config* t : {&c, &mine}) {
+    if (t == &mine && !own) break;
+    if (t->has("potential")) model.potential = potential_file(*t, "potential");
+    model.lattice_constant = t->number_or("lattice_constant", model.lattice_constant, Range::positive(), units::length);
+    model.cutoff = t->number_or("cutoff", model.cutoff, Range::non_negative(), units::length);
+    if (t->has("cutoff") && model.pair_style != "vashishta")
+      throw t->error("cutoff", fmt::format("{} takes its cutoff from the potential file (pair_style {})", material,
+                                           model.pair_style),
+                     "a cutoff for pair_style vashishta only");
+  }
+  ShearTestSpec s;
+  try {
+    s = preset_spec(material, model, c.choice_or("preset", "smoke", {"smoke", "thesis"}));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: [md]: {}", c.source(), e.what()));
+  }
+  s.pressures.clear();
+  apply_protocol_keys(c, material, model, s);
+  if (own) apply_protocol_keys(mine, material, model, s);
+  if (s.pressures.empty()) (void)c.numbers("pressures", Range::non_negative(), units::pressure);  // the error: missing
   // Consistency between keys (window inside the strain range, walls vs box, …).
   try {
     validate(s);

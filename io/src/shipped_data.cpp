@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 
@@ -78,14 +79,28 @@ std::filesystem::path shipped_table_path(const std::string& set, const std::stri
   return data_directory() / file;
 }
 
+std::vector<std::string> shipped_materials(const std::string& set) {
+  std::string prefix = shipped_table_path(set, "").filename().string();  // "lammps_smoke_.csv"
+  prefix.resize(prefix.size() - 4);                                      // "lammps_smoke_"
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(data_directory(), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() > prefix.size() + 4 && name.rfind(prefix, 0) == 0 && name.ends_with(".csv"))
+      out.push_back(name.substr(prefix.size(), name.size() - prefix.size() - 4));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 StrengthTable shipped_table(const std::string& set, const std::string& material) {
   const auto path = shipped_table_path(set, material);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
     throw InputError(fmt::format("no shipped '{}' strength table for material '{}' ({} does not exist; the data "
                                  "folder is $WEARSCALE_DATA, else share/wearscale/data of the installation, else "
-                                 "the source tree's materials/data); shipped tables exist for Si and SiO2",
-                                 set, material, path.string()));
+                                 "the source tree's materials/data); the '{}' set has tables for {}",
+                                 set, material, path.string(), set, fmt::join(shipped_materials(set), ", ")));
   return read_strength_table(path);
 }
 

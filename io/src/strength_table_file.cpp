@@ -20,8 +20,15 @@ namespace wearscale::materials {
 
 namespace {
 
-constexpr double kGPa = 1e9;
-const char* const kColumns[3] = {"pressure_GPa", "sigma_max_GPa", "sigma_dyn_GPa"};
+// The columns, `<name>_<unit>` as every wearscale table: written in Pa; read
+// in any of these pressure units (tables written before the SI convention
+// are in GPa).
+const char* const kNames[3] = {"pressure", "sigma_max", "sigma_dyn"};
+struct PressureUnit {
+  const char* name;
+  double pascals;
+};
+constexpr PressureUnit kUnits[] = {{"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}};
 
 std::string trim(std::string s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -87,6 +94,8 @@ StrengthTable parse_strength_table_csv(std::string_view text, const std::string&
   std::string line;
   int line_no = 0;
   int col[3] = {-1, -1, -1};
+  double scale[3] = {1.0, 1.0, 1.0};
+  std::vector<std::string> header;
   std::size_t columns = 0;
   bool header_seen = false;
   std::vector<int> row_lines;
@@ -105,14 +114,22 @@ StrengthTable parse_strength_table_csv(std::string_view text, const std::string&
     if (!header_seen) {
       header_seen = true;
       columns = cells.size();
+      header = cells;
       for (std::size_t c = 0; c < cells.size(); ++c)
         for (int k = 0; k < 3; ++k)
-          if (cells[c] == kColumns[k]) col[k] = static_cast<int>(c);
+          for (const auto& u : kUnits)
+            if (cells[c] == fmt::format("{}_{}", kNames[k], u.name)) {
+              if (col[k] >= 0)
+                throw InputError(fmt::format("{}:{}: two '{}' columns ('{}' and '{}')", file.string(), line_no,
+                                             kNames[k], cells[static_cast<std::size_t>(col[k])], cells[c]));
+              col[k] = static_cast<int>(c);
+              scale[k] = u.pascals;
+            }
       for (int k = 0; k < 3; ++k)
         if (col[k] < 0)
-          throw InputError(fmt::format("{}:{}: missing column '{}'; the header must name pressure_GPa, "
-                                       "sigma_max_GPa, sigma_dyn_GPa",
-                                       file.string(), line_no, kColumns[k]));
+          throw InputError(fmt::format("{}:{}: missing column '{}_Pa'; the header must name pressure_Pa, "
+                                       "sigma_max_Pa, sigma_dyn_Pa (or the same in kPa, MPa, GPa)",
+                                       file.string(), line_no, kNames[k]));
       continue;
     }
     if (cells.size() != columns)
@@ -128,11 +145,12 @@ StrengthTable parse_strength_table_csv(std::string_view text, const std::string&
         used = 0;
       }
       if (used == 0 || used != cell.size())
-        throw InputError(fmt::format("{}:{}: column {} = '{}' is not a number", file.string(), line_no, kColumns[k], cell));
+        throw InputError(fmt::format("{}:{}: column {} = '{}' is not a number", file.string(), line_no,
+                                     header[static_cast<std::size_t>(col[k])], cell));
     }
-    t.pressure.push_back(v[0] * kGPa);
-    t.sigma_max.push_back(v[1] * kGPa);
-    t.sigma_dyn.push_back(v[2] * kGPa);
+    t.pressure.push_back(v[0] * scale[0]);
+    t.sigma_max.push_back(v[1] * scale[1]);
+    t.sigma_dyn.push_back(v[2] * scale[2]);
     row_lines.push_back(line_no);
   }
   if (!header_seen) throw InputError(fmt::format("{}: empty strength table (no header line)", file.string()));
@@ -215,17 +233,12 @@ void write_strength_table(const std::filesystem::path& file, const StrengthTable
     w.commit();
     return;
   }
-  // One header line (pressure_GPa, sigma_max_GPa, sigma_dyn_GPa) and rows;
+  // One header line (pressure_Pa, sigma_max_Pa, sigma_dyn_Pa) and rows in SI;
   // the provenance in the sidecar <file>.csv.json, as every wearscale table.
-  std::vector<double> p, smax, sdyn;
-  for (std::size_t r = 0; r < table.pressure.size(); ++r) {
-    p.push_back(table.pressure[r] / kGPa);
-    smax.push_back(table.sigma_max[r] / kGPa);
-    sdyn.push_back(table.sigma_dyn[r] / kGPa);
-  }
   std::vector<std::string> notes;
   for (const auto& [k, v] : provenance) notes.push_back(fmt::format("{}: {}", k, v));
-  write_csv(file, {"pressure", "sigma_max", "sigma_dyn"}, {p, smax, sdyn}, {"GPa", "GPa", "GPa"}, notes);
+  write_csv(file, {"pressure", "sigma_max", "sigma_dyn"}, {table.pressure, table.sigma_max, table.sigma_dyn},
+            {"Pa", "Pa", "Pa"}, notes);
 }
 
 }  // namespace wearscale::materials

@@ -18,6 +18,7 @@ Material silicon() {
   m.surface_energy = 1.2;
   m.tensile_strength = 21e9;
   m.shear_strength = 11e9;
+  m.interatomic = silicon_model();
   m.source = "thesis Table 2.1 (crystalline Si, direction-averaged)";
   return m;
 }
@@ -32,6 +33,7 @@ Material silica() {
   m.tensile_strength = 16e9;  // Luo et al. (2016)
   m.shear_strength = 9e9;
   m.restitution = 0.9;
+  m.interatomic = silica_model();
   m.source = "thesis Table 2.1 and Table 6.5 (amorphous SiO2)";
   return m;
 }

@@ -64,7 +64,9 @@ class PipelineStudy final : public Study {
     return "the multiscale model of a case: its [scale.<kind>] backends in the order their quantities need";
   }
   Schema schema() const override {
-    return {{"scale.<kind>.backend", "string", "see `wearscale backends`", "", "", "the backend of a scale", ""}};
+    Schema schema = {{"scale.<kind>.backend", "string", "see `wearscale backends`", "", "", "the backend of a scale", ""}};
+    for (auto& k : material_schema()) schema.push_back(std::move(k));
+    return schema;
   }
   std::string default_case_name() const override { return ""; }  // a case names itself
 

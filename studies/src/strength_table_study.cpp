@@ -1,5 +1,7 @@
-// The strength-table study ([md]): shear strengths σ_max(p), σ_dyn(p) of Si or
-// SiO2 from the MD shear test of §9.3.1 run with LAMMPS at each pressure
+// The strength-table study ([md]): shear strengths σ_max(p), σ_dyn(p) of a
+// material with an interatomic model (Si, SiO2, or one the case defines in
+// [materials.define.<name>.interatomic]) from the MD shear test of §9.3.1,
+// after the elastic check of its sample, run with LAMMPS at each pressure
 // (md::run_shear_study; identical inputs are read from the result cache),
 // written as a strength table (materials/ format, .csv or .h5) into the
 // output folder, with each point's strengths as headline figures. Under
@@ -10,11 +12,13 @@
 //   [case]
 //   study = "strength-table"        # `wearscale strength-table` names it itself
 //   [md]
-//   material = "Si"                 # or "SiO2"
+//   material = "Si"                 # "SiO2", or a [materials.define.<name>] name
 //   pressures = ["0 GPa", "10 GPa"] # at least two
 //   preset = "smoke"                # or "thesis"; every other [md] key overrides it
 //   [output]
 //   file = "si.csv"                 # the table's name in the output folder
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
@@ -33,8 +37,9 @@ class StrengthTableStudy final : public Study {
  public:
   std::string name() const override { return "strength-table"; }
   std::string summary() const override {
-    return "shear strengths σ_max(p), σ_dyn(p) of Si or SiO2 from the MD shear test of §9.3.1 (LAMMPS), written as a "
-           "strength table";
+    return "shear strengths σ_max(p), σ_dyn(p) of a material with an interatomic model (Si, SiO2, or "
+           "[materials.define.<name>.interatomic]) from the MD shear test of §9.3.1 (LAMMPS), written as a strength "
+           "table";
   }
   std::string default_case_name() const override { return "strength-table"; }
   Schema schema() const override;
@@ -45,7 +50,7 @@ class StrengthTableStudy final : public Study {
     if (spec_.pressures.size() < 2)
       throw cfg.error("md.pressures", "a strength table needs at least two pressures", "two or more pressures");
     file_ = output_file_name(cfg, "output.file",
-                             fmt::format("lammps_{}_{}.csv", spec_.preset, md::to_string(spec_.material)),
+                             fmt::format("lammps_{}_{}.csv", spec_.preset, spec_.material),
                              {".csv", ".h5"});
     cfg.reject_unknown_keys();
     return {};
@@ -69,6 +74,24 @@ class StrengthTableStudy final : public Study {
       context.report(fmt::format("sigma_max_{}", i), table.sigma_max[i], "Pa", "maximum shear strength σ_max " + at);
       context.report(fmt::format("sigma_dyn_{}", i), table.sigma_dyn[i], "Pa", "dynamic shear strength σ_dyn " + at);
     }
+    if (study.elastic) {
+      const auto& e = *study.elastic;
+      const bool iso = e.isotropic;
+      context.report("sample_young", iso ? e.sample.young : e.sample.young_z, "Pa",
+                     iso ? "Young's modulus of the sample at 0 K (isotropic)" : "Young's modulus E_z of the sample at 0 K");
+      context.report("reference_young", iso ? e.reference.young : e.reference.young_z, "Pa",
+                     "the same of the reference: " + e.reference_source);
+      context.report("sample_poisson", iso ? e.sample.poisson : e.sample.poisson_zx, "1",
+                     iso ? "Poisson's ratio of the sample at 0 K (isotropic)" : "Poisson's ratio ν_zx of the sample at 0 K");
+      context.report("reference_poisson", iso ? e.reference.poisson : e.reference.poisson_zx, "1",
+                     "the same of the reference");
+      context.report("sample_shear_modulus", e.sample.shear_xz, "Pa", "shear modulus G_xz of the sample at 0 K");
+    }
+    for (std::size_t i = 0; i < study.points.size(); ++i)
+      if (std::isfinite(study.points[i].shear_modulus))
+        context.report(fmt::format("shear_modulus_{}", i), study.points[i].shear_modulus, "Pa",
+                     fmt::format("elastic shear modulus from the start of the shear curve at p = {:g} GPa",
+                                 study.points[i].pressure / 1e9));
     context.note("material", table.material);
     context.note("backend", "lammps");
     context.note("preset", spec_.preset);
@@ -76,11 +99,11 @@ class StrengthTableStudy final : public Study {
     context.note("lammps_version", study.lammps_version);
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& p : study.points)
-      rows.push_back({{"pressure_GPa", p.pressure / 1e9},
-                      {"sigma_max_GPa", p.strength.sigma_max / 1e9},
-                      {"sigma_dyn_GPa", p.strength.sigma_dyn / 1e9},
+      rows.push_back({{"pressure_Pa", p.pressure},
+                      {"sigma_max_Pa", p.strength.sigma_max},
+                      {"sigma_dyn_Pa", p.strength.sigma_dyn},
                       {"strain_at_max", p.strength.strain_at_max},
-                      {"sigma_dyn_std_GPa", p.strength.sigma_dyn_std / 1e9},
+                      {"sigma_dyn_std_Pa", p.strength.sigma_dyn_std},
                       {"temperature_window_K", p.strength.temperature_window},
                       {"cached", p.run.cached},
                       {"wall_seconds", p.run.wall_seconds}});
@@ -97,9 +120,10 @@ class StrengthTableStudy final : public Study {
 
 Schema StrengthTableStudy::schema() const {
   const std::string preset = "from the preset";
-  return {
+  Schema schema = {
       {"md.backend", "choice", "lammps", "", "lammps", "molecular backend", "--backend"},
-      {"md.material", "choice", "Si | SiO2", "", "", "material of the shear test", "--material"},
+      {"md.material", "string", "Si | SiO2 | a [materials.define.<name>] with an interatomic table", "", "",
+       "material of the shear test", "--material"},
       {"md.pressures", "list", "≥ 0, increasing, at least two", "Pa", "", "normal pressures of the table",
        "--pressures", "", "GPa"},
       {"md.preset", "choice", "smoke | thesis", "", "smoke",
@@ -115,7 +139,7 @@ Schema StrengthTableStudy::schema() const {
        "the table's name in the output folder", "--table"},
       {"md.lateral_size", "number", "> 0", "m", preset, "box side x = y, rounded to whole lattice cells", ""},
       {"md.height", "number", "> 0", "m", preset, "box height", ""},
-      {"md.lattice_constant", "number", "> 0", "m", preset, "lattice constant of the sample", ""},
+      {"md.lattice_constant", "number", "> 0", "m", "the material's", "lattice constant of the sample", ""},
       {"md.wall_thickness", "number", "> 0", "m", preset, "thickness of the rigid walls", ""},
       {"md.thermostat_thickness", "number", "> 0", "m", preset, "thickness of the thermostatted layers", ""},
       {"md.shear_velocity", "number", "> 0", "m/s", preset, "imposed shear velocity", ""},
@@ -128,21 +152,29 @@ Schema StrengthTableStudy::schema() const {
        "strain range over which σ_dyn is the mean shear stress", ""},
       {"md.sample_steps", "integer", "1 … 1e7", "1", preset, "steps between thermo samples", ""},
       {"md.seed", "integer", "1 … 9e8", "1", preset, "random seed of the velocities", ""},
-      {"md.potential", "path", "", "", preset, "interatomic potential file (relative to the case file)", ""},
-      {"md.cutoff", "number", "≥ 0", "m", preset, "Vashishta cutoff (SiO2 only)", ""},
+      {"md.potential", "path", "", "", "the material's",
+       "interatomic potential file (a name in LAMMPS' potentials folder, or relative to the case file)", ""},
+      {"md.cutoff", "number", "≥ 0", "m", "the material's", "two-body cutoff r_c (pair_style vashishta only)", ""},
+      {"md.modulus_strain", "number", "(0, 1)", "1", "0.1",
+       "the elastic shear modulus is the slope of the shear curve over strains up to this", ""},
       {"md.cache", "boolean", "true | false", "", "true", "read identical runs from the result cache", ""},
       {"md.cache_dir", "string", "", "", "$WEARSCALE_CACHE/lammps, else ~/.cache/wearscale/lammps", "result cache folder",
        ""},
-      {"md.quench.temperatures", "list", "> 0", "K", preset, "SiO2 melt-quench: temperature schedule", ""},
-      {"md.quench.hold_time", "number", "> 0", "s", preset, "SiO2 melt-quench: time held at each temperature", ""},
-      {"md.quench.cooling_rate", "number", "> 0", "K/s", preset, "SiO2 melt-quench: cooling rate", ""},
-      {"md.quench.final_cooling_rate", "number", "> 0", "K/s", preset, "SiO2 melt-quench: last cooling rate", ""},
-      {"md.quench.timestep", "number", "(0, 1e-14]", "s", preset, "SiO2 melt-quench: time step", ""},
-      {"md.quench.pressure", "number", "any", "Pa", preset, "SiO2 melt-quench: barostat pressure", ""},
-      {"md.quench.barostat_damp", "number", "> 0", "s", preset, "SiO2 melt-quench: barostat damping time", ""},
-      {"md.quench.bulk_modulus", "number", "> 0", "Pa", preset, "SiO2 melt-quench: bulk modulus of the barostat", ""},
-      {"md.quench.thermostat_damp", "number", "> 0", "s", preset, "SiO2 melt-quench: thermostat damping time", ""},
+      {"md.quench.temperatures", "list", "> 0", "K", "the material's, else the thesis' SiO2 schedule",
+       "melt-quench (amorphous samples): temperature schedule", ""},
+      {"md.quench.constant_volume", "boolean", "true | false", "", "the material's",
+       "melt-quench at the crystal's volume, no barostat", ""},
+      {"md.quench.hold_time", "number", "> 0", "s", preset, "melt-quench: time held at each temperature", ""},
+      {"md.quench.cooling_rate", "number", "> 0", "K/s", preset, "melt-quench: cooling rate", ""},
+      {"md.quench.final_cooling_rate", "number", "> 0", "K/s", preset, "melt-quench: last cooling rate", ""},
+      {"md.quench.timestep", "number", "(0, 1e-14]", "s", preset, "melt-quench: time step", ""},
+      {"md.quench.pressure", "number", "any", "Pa", preset, "melt-quench: barostat pressure", ""},
+      {"md.quench.barostat_damp", "number", "> 0", "s", preset, "melt-quench: barostat damping time", ""},
+      {"md.quench.bulk_modulus", "number", "> 0", "Pa", preset, "melt-quench: bulk modulus of the barostat", ""},
+      {"md.quench.thermostat_damp", "number", "> 0", "s", preset, "melt-quench: thermostat damping time", ""},
   };
+  for (auto& k : material_schema()) schema.push_back(std::move(k));
+  return schema;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "wearscale/core/edit_distance.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/material_definitions.hpp"
 
 namespace wearscale::studies {
 
@@ -33,6 +34,16 @@ std::string help_line(const KeySpec& s) {
   if (!s.range.empty()) facts.push_back(s.range);
   if (!s.fallback.empty()) facts.push_back("default " + s.fallback);
   return fmt::format("{}{}: {}", s.doc, facts.empty() ? "" : fmt::format(" [{}]", fmt::join(facts, "; ")), s.key);
+}
+
+Schema material_schema() {
+  Schema out;
+  for (const auto& k : material_keys()) {
+    std::string range = k.allowed;
+    if (range.empty() && (k.type == "number" || k.type == "list")) range = k.range.describe();
+    out.push_back({"materials.define.<name>." + k.key, k.type, range, k.unit, k.fallback, k.doc, ""});
+  }
+  return out;
 }
 
 std::string markdown_table(const Schema& schema) {

@@ -57,7 +57,7 @@ TEST(Completion, BashCompletesCommandsFlagsAndChoices) {
   EXPECT_EQ(bash_offers(file, "dem patch-test --la"), "--lattice") << "a schema key's flag";
   EXPECT_EQ(bash_offers(file, "dem patch-test --lattice \"\""), "hcp amorphous") << "a choice key's values";
   EXPECT_EQ(bash_offers(file, "contact --friction t"), "tresca");
-  EXPECT_EQ(bash_offers(file, "strength-table --material S"), "Si SiO2") << "a CLI::IsMember option";
+  EXPECT_EQ(bash_offers(file, "strength-table --preset t"), "thesis") << "a CLI::IsMember option";
   EXPECT_EQ(bash_offers(file, "completion z"), "zsh");
   EXPECT_EQ(bash_offers(file, "-q surface generate --hu"), "--hurst") << "past a global flag";
 }

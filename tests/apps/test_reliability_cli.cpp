@@ -494,7 +494,7 @@ INSTANTIATE_TEST_SUITE_P(
                  {{"h.h5", "1 2\n3 4\n"}}, "not an HDF5 file"},
         // Strength tables.
         BadFile{"table_missing_column", with_table, {{"si.csv", "pressure_GPa,sigma_max_GPa\n0,1\n1,2\n"}},
-                 "missing column 'sigma_dyn_GPa'"},
+                 "missing column 'sigma_dyn_Pa'"},
         BadFile{"table_not_a_number", with_table, {{"si.csv", good_table_head + "0,10,1\n5,ten,1\n"}},
                  "column sigma_max_GPa = 'ten' is not a number"},
         BadFile{"table_nan", with_table, {{"si.csv", good_table_head + "0,10,1\n5,nan,1\n"}}, "NaN or infinite"},

@@ -53,7 +53,7 @@ final_cooling_rate = "13 K/ps"
 timestep = "0.0005 ps"
 )");
   const ShearTestSpec s = read_shear_test_spec(c);
-  EXPECT_DOUBLE_EQ(s.cutoff, 8e-10);
+  EXPECT_DOUBLE_EQ(s.model.cutoff, 8e-10);
   ASSERT_EQ(s.quench.temperatures.size(), 3u);
   EXPECT_NEAR(s.quench.cooling_rate, 166e12, 1e3);
   EXPECT_NEAR(s.quench.final_cooling_rate, 13e12, 1e3);
@@ -62,4 +62,69 @@ timestep = "0.0005 ps"
   EXPECT_NO_THROW(c.reject_unknown_keys());
   Config si = Config::from_string("[md]\nmaterial = \"Si\"\npressures = [0, 1e9]\n[md.quench]\nhold_time = 1\n");
   EXPECT_THROW(read_shear_test_spec(si), InputError);
+}
+
+TEST(ShearConfig, AMaterialTheCaseDefinesWithItsInteratomicModel) {
+  Config c = Config::from_string(R"(
+[materials.define.Ni]
+young = "200 GPa"
+poisson = 0.31
+density = "8.9 g/cm^3"
+surface_energy = "2.2 J/m^2"
+tensile_strength = "20 GPa"
+shear_strength = "5 GPa"
+[materials.define.Ni.interatomic]
+pair_style = "eam"
+potential = "Ni_u3.eam"
+elements = ["Ni"]
+masses = [58.6934]
+structure = "fcc"
+lattice_constant = "3.52 Å"
+[md]
+material = "Ni"
+pressures = [0, "5 GPa"]
+)", "ni.toml");
+  const ShearTestSpec s = read_shear_test_spec(c);
+  EXPECT_EQ(s.material, "Ni");
+  EXPECT_EQ(s.model.pair_style, "eam");
+  EXPECT_EQ(s.model.potential, "Ni_u3.eam") << "a bare name not beside the case: LAMMPS' potentials folder";
+  EXPECT_DOUBLE_EQ(s.model.lattice_constant, 3.52e-10);
+  EXPECT_EQ(s.lateral_cells(), 6);
+  EXPECT_NO_THROW(c.reject_unknown_keys());
+  // A material without an interatomic model, a quench for a crystal, a cutoff for eam: refused by key.
+  Config plain = Config::from_string("[materials.define.Y]\nyoung = 1\npoisson = 0.3\ndensity = 1\nsurface_energy = 1\n"
+                                     "tensile_strength = 1\nshear_strength = 1\n[md]\nmaterial = \"Y\"\npressures = [0]\n");
+  try {
+    read_shear_test_spec(plain);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("interatomic"), std::string::npos) << e.what();
+  }
+  Config q = c;
+  q.override_value("md.quench.hold_time=1e-12");
+  EXPECT_THROW(read_shear_test_spec(q), InputError);
+  Config cut = c;
+  cut.override_value("md.cutoff=8e-10");
+  EXPECT_THROW(read_shear_test_spec(cut), InputError);
+}
+
+TEST(ShearConfig, ATableNamedAfterAMaterialHoldsKeysForItAlone) {
+  Config c = Config::from_string(R"(
+[scale.molecular]
+pressures = ["0 GPa", "10 GPa"]
+strain_end = 0.6
+[scale.molecular.SiO2]
+pressures = ["0 GPa", "50 GPa"]
+strain_end = 0.8
+window = [0.6, 0.8]
+)");
+  const Config m = c.section("scale.molecular");
+  const ShearTestSpec si = read_shear_test_spec(m, "Si", materials::silicon_model());
+  const ShearTestSpec sio2 = read_shear_test_spec(m, "SiO2", materials::silica_model());
+  EXPECT_EQ(si.pressures, (std::vector<double>{0.0, 10e9}));
+  EXPECT_DOUBLE_EQ(si.strain_end, 0.6);
+  EXPECT_EQ(sio2.pressures, (std::vector<double>{0.0, 50e9}));
+  EXPECT_DOUBLE_EQ(sio2.strain_end, 0.8);
+  EXPECT_DOUBLE_EQ(sio2.window_begin, 0.6);
+  EXPECT_NO_THROW(c.reject_unknown_keys());
 }

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "h5_fixture.hpp"
 #include "wearscale/core/errors.hpp"
@@ -36,6 +37,7 @@ std::string error_of(const std::filesystem::path& p) {
   return "no InputError";
 }
 
+// The older form: a '#' provenance line and GPa columns (still read).
 const std::string kHeader = "# material: X\npressure_GPa,sigma_max_GPa,sigma_dyn_GPa\n";
 }  // namespace
 
@@ -65,8 +67,12 @@ TEST(StrengthTable, NonMonotonePressureIsRefusedWithTheLine) {
 }
 
 TEST(StrengthTable, MissingColumnIsRefused) {
-  const auto p = write("nocol.csv", "pressure_GPa,sigma_max_GPa\n0,1\n1,1\n");
-  EXPECT_THAT(error_of(p), HasSubstr("missing column 'sigma_dyn_GPa'"));
+  const auto p = write("nocol.csv", "pressure_Pa,sigma_max_Pa\n0,1\n1,1\n");
+  EXPECT_THAT(error_of(p), HasSubstr("missing column 'sigma_dyn_Pa'"));
+  EXPECT_THAT(error_of(write("twice.csv", "pressure_Pa,pressure_GPa,sigma_max_Pa,sigma_dyn_Pa\n0,0,1,1\n1,1,1,1\n")),
+              HasSubstr("two 'pressure' columns"));
+  EXPECT_THAT(error_of(write("badunit.csv", "pressure_bar,sigma_max_Pa,sigma_dyn_Pa\n0,1,1\n1,1,1\n")),
+              HasSubstr("missing column 'pressure_Pa'"));
 }
 
 TEST(StrengthTable, NaNIsRefusedWithTheLine) {
@@ -87,6 +93,38 @@ TEST(StrengthTable, RaggedRowsAndDegenerateTablesAreRefused) {
               HasSubstr("three times"));
   EXPECT_THAT(error_of(write("edge.csv", kHeader + "0,1,1\n5,1,1\n5,2,2\n")), HasSubstr("both sides"));
   EXPECT_THAT(error_of(dir / "absent.csv"), HasSubstr("no such strength table"));
+}
+
+TEST(StrengthTable, WrittenCsvIsOneHeaderInPascalsWithTheProvenanceInItsSidecar) {
+  const auto si = shipped_table("thesis", "Si");
+  const auto file = dir / "si.csv";
+  write_strength_table(file, si);
+  std::ifstream in(file);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_EQ(header, "pressure_Pa,sigma_max_Pa,sigma_dyn_Pa");
+  EXPECT_EQ(row, "0,1.06e+10,1500000000") << "SI: 10.6 GPa is 1.06e10 Pa";
+  std::ifstream side(file.string() + ".json");
+  std::stringstream ss;
+  ss << side.rdbuf();
+  EXPECT_THAT(ss.str(), HasSubstr("\"source: thesis Fig. 9.18a"));
+  EXPECT_THAT(ss.str(), HasSubstr("\"sigma_max_Pa\": \"Pa\""));
+}
+
+TEST(StrengthTable, TheOlderFormInGigapascalsWithCommentLinesStillReads) {
+  const auto old = write("old.csv", "# material: Cu\n# source: by hand\npressure_GPa,sigma_max_GPa,sigma_dyn_GPa\n"
+                                    "0,2.5,0.8\n10,3,1.2\n");
+  const auto t = read_strength_table(old);
+  EXPECT_EQ(t.material, "Cu");
+  EXPECT_EQ(t.info("source"), "by hand");
+  EXPECT_EQ(t.pressure, (std::vector<double>{0.0, 10e9}));
+  EXPECT_DOUBLE_EQ(t.sigma_max[0], 2.5e9);
+  // Mixed units per column, MPa too: each column by its own name.
+  const auto mixed = read_strength_table(write("mixed.csv", "sigma_dyn_MPa,pressure_Pa,sigma_max_GPa\n800,0,2.5\n"
+                                                            "1200,1e10,3\n"));
+  EXPECT_DOUBLE_EQ(mixed.sigma_dyn[1], 1.2e9);
+  EXPECT_DOUBLE_EQ(mixed.pressure[1], 1e10);
 }
 
 TEST(StrengthTable, WrittenTablesReadBackInCsvAndHdf5) {

@@ -26,60 +26,64 @@ long lines(const std::filesystem::path& p) {
 TEST(ResultCache, SecondIdenticalStudyDoesNotRunLmp) {
   const auto dir = md_test::temp_dir("cache-study");
   const auto counter = dir / "calls.txt";
-  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  ShearTestSpec s = preset_spec("Si", "smoke");
   s.pressures = {0.0, 10e9};
   s.lmp = md_test::fake_lmp(dir, counter).string();
   s.ranks = 1;
   s.cache_dir = dir / "cache";
   md_test::write(dir / "Si.sw", md_test::si_sw);
-  s.potential = dir / "Si.sw";
+  s.model.potential = dir / "Si.sw";
 
   const ShearStudy first = run_shear_study(s);
-  EXPECT_EQ(lines(counter), 3) << "lmp -h once, then one run per pressure";
+  EXPECT_EQ(lines(counter), 5) << "lmp -h once, the elastic constants of the ideal lattice and of the sample, then "
+                                  "one run per pressure";
   ASSERT_EQ(first.points.size(), 2u);
   EXPECT_FALSE(first.points[0].run.cached);
   EXPECT_NEAR(first.points[1].strength.sigma_max, 12e9, 1e-3);
   EXPECT_NEAR(first.points[1].strength.sigma_dyn, 2e9, 1e-3);
 
   const ShearStudy second = run_shear_study(s);
-  EXPECT_EQ(lines(counter), 3) << "nothing ran: versions and results came from the cache";
+  EXPECT_EQ(lines(counter), 5) << "nothing ran: versions and results came from the cache";
   EXPECT_TRUE(second.points[0].run.cached);
   EXPECT_TRUE(second.points[1].run.cached);
   EXPECT_EQ(second.points[1].run.folder, first.points[1].run.folder);
   EXPECT_DOUBLE_EQ(second.points[1].strength.sigma_dyn, first.points[1].strength.sigma_dyn);
 
-  // A changed input (seed) is a new key: lmp runs again, once per pressure.
+  // A changed input (seed) is a new key: lmp runs again, once per pressure
+  // (the 0 K elastic constants do not depend on the seed: cached).
   s.seed = 5;
   run_shear_study(s);
-  EXPECT_EQ(lines(counter), 5);
-  // A changed potential file is a new key too.
+  EXPECT_EQ(lines(counter), 7);
+  // A changed potential file is a new key for every run.
   md_test::write(dir / "Si.sw", std::string(md_test::si_sw) + "# edited\n");
   run_shear_study(s);
-  EXPECT_EQ(lines(counter), 7);
+  EXPECT_EQ(lines(counter), 11);
   // Caching off: always runs.
   s.use_cache = false;
   run_shear_study(s);
-  EXPECT_EQ(lines(counter), 9);
+  EXPECT_EQ(lines(counter), 15);
 }
 
 TEST(ResultCache, TableCarriesProvenance) {
   const auto dir = md_test::temp_dir("cache-table");
-  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  ShearTestSpec s = preset_spec("Si", "smoke");
   s.pressures = {0.0, 5e9};
   s.lmp = md_test::fake_lmp(dir, dir / "calls.txt").string();
   s.cache_dir = dir / "cache";
   md_test::write(dir / "Si.sw", md_test::si_sw);
-  s.potential = dir / "Si.sw";
+  s.model.potential = dir / "Si.sw";
   const materials::StrengthTable t = strength_table(run_shear_study(s));
   EXPECT_EQ(t.material, "Si");
   ASSERT_EQ(t.pressure.size(), 2u);
   EXPECT_DOUBLE_EQ(t.pressure[1], 5e9);
-  for (const char* key : {"source", "material", "lammps_version", "potential", "cutoff", "system_size", "atoms",
-                          "temperature", "thermostat", "shear_velocity", "shear_rate", "strain_window", "seeds", "date",
+  for (const char* key : {"source", "material", "lammps_version", "lammps_command", "potential", "potential_sha256",
+                          "system_size", "atoms", "elastic_check", "elastic_reference", "shear_modulus", "temperature",
+                          "thermostat", "shear_velocity", "shear_rate", "strain_window", "seeds", "date",
                           "cost_per_point"})
     EXPECT_FALSE(t.info(key).empty()) << key;
   EXPECT_EQ(t.info("lammps_version"), "1 Jan 2000 - fake");
   EXPECT_EQ(t.info("atoms"), "544");
+  EXPECT_EQ(t.info("potential_sha256").size(), 64u) << "the SHA-256 of the file the runs read, whole";
 }
 
 TEST(ResultCache, KeysAndEntries) {
@@ -108,12 +112,12 @@ TEST(ResultCache, ProcessesAndThreadsAskingTheSameRunRunItOnce) {
   const auto slow = dir / "slow-lmp";
   md_test::write(slow, "#!/bin/sh\n[ \"$1\" = \"-h\" ] || sleep 1\nexec '" + fake.string() + "' \"$@\"\n");
   std::filesystem::permissions(slow, std::filesystem::perms::owner_all);
-  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  ShearTestSpec s = preset_spec("Si", "smoke");
   s.pressures = {0.0, 10e9};
   s.lmp = slow.string();
   s.cache_dir = dir / "cache";
   md_test::write(dir / "Si.sw", md_test::si_sw);
-  s.potential = dir / "Si.sw";
+  s.model.potential = dir / "Si.sw";
   (void)lammps_version(slow, s.cache_dir);  // `lmp -h` once, before the race
 
   std::vector<pid_t> children;
@@ -144,7 +148,8 @@ TEST(ResultCache, ProcessesAndThreadsAskingTheSameRunRunItOnce) {
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "a process got no complete study";
   }
   const std::string calls = md_test::read(counter);
-  EXPECT_EQ(std::count(calls.begin(), calls.end(), '\n'), 3) << "lmp -h once, then each pressure once:\n" << calls;
+  EXPECT_EQ(std::count(calls.begin(), calls.end(), '\n'), 5)
+      << "lmp -h once, the two elastic-constant runs once, then each pressure once:\n" << calls;
   for (const auto& st : in_threads) {
     ASSERT_EQ(st.points.size(), 2u);
     EXPECT_EQ(st.points[1].run.folder, in_threads[0].points[1].run.folder);

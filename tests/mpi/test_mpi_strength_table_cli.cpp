@@ -1,6 +1,7 @@
 // `mpirun -np P wearscale strength-table --backend lammps`: the pressure
 // points over the ranks (the task farm), each point's lmp on `--ranks 2` of
-// its own (a nested `mpirun -np 2 lmp`, launched from a rank), against the
+// its own (a nested `mpirun -np 2 lmp`, launched from a rank), after the
+// sample's elastic check (one task), against the
 // same table without mpirun: the same table, the same strengths; a rerun on
 // the same cache runs nothing. And the result cache across ranks: the runs of
 // a sweep that all ask for the same LAMMPS runs at once run each once (one
@@ -60,22 +61,51 @@ fs::path fake_curve() {
   return file;
 }
 
-// A fake lmp at `file`: it answers `lmp -h` with a LAMMPS version line and
-// otherwise runs `body` (shell) in the run folder.
-void write_fake_lmp(const fs::path& file, const std::string& body) {
+// The rows of an elastic-constants deck (md/elastic_constants.hpp) for an
+// isotropic solid of E = 120 GPa, ν = 0.22 (the published reference of the
+// built-in SiO2, so that a crystal's and an amorphous sample's checks pass):
+// C11 = 137.0, C12 = 38.6, C44 = 49.2 GPa, strains ±1e-3, pressures in bar.
+fs::path fake_elastic_rows() {
+  const fs::path file = work / "fake-elastic.txt";
+  if (fs::exists(file)) return file;
+  fs::create_directories(work);
+  const double c11 = 137.0, c12 = 38.6, c44 = 49.2;
+  const double c[6][6] = {{c11, c12, c12, 0, 0, 0}, {c12, c11, c12, 0, 0, 0}, {c12, c12, c11, 0, 0, 0},
+                          {0, 0, 0, c44, 0, 0},     {0, 0, 0, 0, c44, 0},     {0, 0, 0, 0, 0, c44}};
+  std::ofstream out(file);
+  out << "0 0 0 0 0 0 0 0 0 16.293 16.293 16.293\n";
+  int k = 1;
+  for (int j = 0; j < 6; ++j)
+    for (int sign : {1, -1}) {
+      out << k++ << " " << j + 1 << " " << sign;
+      for (int i = 0; i < 6; ++i) out << " " << -sign * 1e-3 * c[i][j] * 1e4;
+      out << " 16.293 16.293 16.293\n";
+    }
+  return file;
+}
+
+// A fake lmp at `file`: it answers `lmp -h` with a LAMMPS version line, an
+// elastic-constants deck with the rows above, and otherwise runs `body`
+// (shell) in the run folder.
+void write_fake_lmp(const fs::path& file, const std::string& body, bool elastic = true) {
   fs::create_directories(file.parent_path());
   std::ofstream(file) << "#!/bin/sh\n"
                          "if [ \"$1\" = \"-h\" ]; then echo 'Large-scale Atomic/Molecular Massively Parallel "
                          "Simulator - 1 Jan 2000 - fake'; exit 0; fi\n"
+                      << (elastic ? "if grep -q elastic.txt in.lammps; then cp '" + fake_elastic_rows().string() +
+                                        "' elastic.txt; printf 'atoms 216\\ncompleted yes\\n' > sample.txt; exit 0; "
+                                        "fi\n"
+                                  : std::string())
                       << body;
   fs::permissions(file, fs::perms::owner_all);
 }
 
-// Every finished entry of a LAMMPS cache.
+// Every finished shear run of a LAMMPS cache (the elastic check's two runs,
+// which write no shear curve, are entries of their own beside them).
 std::vector<fs::path> entries(const std::string& cache) {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(work / cache / "lammps"))
-    if (fs::exists(e.path() / "COMPLETE")) out.push_back(e.path());
+    if (fs::exists(e.path() / "COMPLETE") && fs::exists(e.path() / "shear.dat")) out.push_back(e.path());
   return out;
 }
 }  // namespace
@@ -111,7 +141,8 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
   const fs::path fake = work / "slow-lmp", counter = work / "lmp-calls.txt";
   write_fake_lmp(fake, "echo run >> '" + counter.string() + "'\nsleep 1\n"
                        "cp '" + fake_curve().string() + "' shear.dat\n"
-                       "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\ncompleted yes\\n' > sample.txt\n");
+                       "printf 'atoms 544\\nlx_A 21.724\\nly_A 21.724\\nh0_A 19.0\\nh_gap_A 15.0\\ncompleted yes\\n' > "
+                       "sample.txt\n");
   std::string links;
   for (const char* name : {"lmp-a", "lmp-b", "lmp-c"}) {
     fs::remove(work / name);
@@ -134,19 +165,20 @@ TEST(MpiStrengthTableCli, RanksAskingForTheSameRunsAtOnceRunEachOnce) {
     if (e.path().filename() == "si.csv") tables.push_back(slurp(e.path()));
   ASSERT_EQ(tables.size(), 3u) << "one si.csv per run";
   for (const auto& t : tables) EXPECT_EQ(t, tables.front());
-  EXPECT_NE(tables.front().find("12"), std::string::npos) << tables.front();
+  EXPECT_NE(tables.front().find("1.2e+10"), std::string::npos) << "the curve's 12 GPa peak:\n" << tables.front();
 }
 
 TEST(MpiStrengthTableCli, AFailedPointEndsEveryRankWithStatus1NamingIt) {
   // A fake lmp that fails every run with a LAMMPS error line.
   const fs::path fake = work / "failing-lmp";
-  write_fake_lmp(fake, "echo 'ERROR: Lost atoms (fake)'; exit 1\n");
+  // (The elastic check's runs are the first to fail: the study stops there.)
+  write_fake_lmp(fake, "echo 'ERROR: Lost atoms (fake)'; exit 1\n", false);
   const auto r = run(3, "strength-table --backend lammps --material Si --pressures 0,5 -q --lmp '" + fake.string() +
                             "' --out failed",
                      "cache-failed");
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("2 of 2 LAMMPS runs failed"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("Si shear test at 5 GPa"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1 of 1 LAMMPS runs failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Si elastic constants"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("ERROR: Lost atoms (fake)"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("error:"), r.err.rfind("error:")) << "said once, by rank 0:\n" << r.err;
   EXPECT_FALSE(fs::exists(work / "failed" / "lammps_smoke_Si.csv"));
@@ -166,7 +198,7 @@ TEST(MpiStrengthTableCli, SiO2QuenchRunsOnceBeforeItsPointsOverTheRanks) {
                        "[ -f quenched.data ] || { echo 'ERROR: no quenched sample (fake)'; exit 1; }\n"
                        "echo shear >> '" + counter.string() + "'\n"
                        "cp '" + fake_curve().string() + "' shear.dat\n"
-                       "printf 'atoms 1536\\nlx_A 28\\nly_A 28\\nh0_A 25\\ncompleted yes\\n' > sample.txt\n");
+                       "printf 'atoms 1536\\nlx_A 28\\nly_A 28\\nh0_A 25\\nh_gap_A 21\\ncompleted yes\\n' > sample.txt\n");
   const std::string args = "strength-table --backend lammps --material SiO2 --pressures 0,5,10 --ranks 1 -q --lmp '" +
                            fake.string() + "'";
   const auto serial = run(0, args + " --out sio2-serial", "cache-sio2-serial");

@@ -1,8 +1,13 @@
 // molecular/lammps: shear strengths σ_max(p), σ_dyn(p) computed by a real
-// LAMMPS run of the §9.3.1 shear test for each material of the case (Si with
-// Stillinger–Weber, SiO2 with Vashishta at r_c = 8 Å), cached by input so a
-// sweep or a rerun does not recompute them.
+// LAMMPS run of the §9.3.1 shear test for each material of the case with an
+// interatomic model (built in: Si with Stillinger–Weber, SiO2 with Vashishta
+// at r_c = 8 Å; others from [materials.define.<name>.interatomic]), after the
+// sample's elastic check, cached by input so a sweep or a rerun does not
+// recompute them.
+#include <cctype>
 #include <map>
+
+#include <fmt/format.h>
 
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
@@ -13,20 +18,40 @@
 #include "wearscale/materials/strength_law.hpp"
 #include "wearscale/md/shear_study.hpp"
 #include "wearscale/coupling/shear_test_keys.hpp"
+#include "wearscale/io/strength_table_file.hpp"
 
 namespace wearscale::coupling {
 
 namespace {
 
+// A material's name as a word of a file name: letters, digits, '-' and '_' kept, anything else '_'
+// (the name is a key of the case: it must not lead out of the output folder).
+std::string file_word(const std::string& name) {
+  std::string out;
+  for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return out;
+}
+
 class MolecularLammps final : public Scale {
  public:
   explicit MolecularLammps(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const auto library = material_library(setup.root);
+    // A case may keep both backends' keys: `data`/`tables` for molecular/table
+    // and a [scale.molecular.lammps] table of this backend's keys (how its
+    // tables were computed); `--set scale.molecular.backend=...` picks one.
+    const bool both = setup.section.has("lammps");
+    const Config keys = both ? setup.section.section("lammps") : setup.section;
+    if (both) {
+      setup.section.mark_used("data");
+      setup.section.mark_used("tables");
+    }
     for (const auto& m : case_materials(setup.root, library)) {
-      if (m != "Si" && m != "SiO2")
-        throw setup.section.error("backend", "the LAMMPS shear test knows Si and SiO2 only (material '" + m + "')",
-                                  "\"table\" or \"ideal\" for other materials");
-      specs_.emplace(m, read_shear_test_spec(setup.section, m));
+      const auto& record = library.get(m);
+      if (!record.interatomic)
+        throw setup.section.error(
+            "backend", fmt::format("material '{}' has no interatomic model for the LAMMPS shear test", m),
+            fmt::format("a [materials.define.{}.interatomic] table, or backend \"table\" or \"ideal\"", m));
+      specs_.emplace(m, read_shear_test_spec(keys, m, *record.interatomic));
       register_served_shear_study(m, specs_.at(m));  // under mpirun any rank may run its points
     }
     outside_ = setup.section.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
@@ -54,7 +79,13 @@ class MolecularLammps final : public Scale {
       const auto study = md::run_shear_study(spec, farmed ? served_shear_runs(m, "molecular/lammps " + m) : md::RunMap{});
       Provenance p = provenance_;
       p.parameters["lammps_version"] = study.lammps_version;
-      publish_strength(exchange, ctx, m, materials::StrengthLaw(md::strength_table(study), outside_), std::move(p));
+      // The table as a file too (the project's CSV convention), for backend = "table" to read back.
+      materials::StrengthTable table = md::strength_table(study);
+      const auto file = ctx.output_dir() / fmt::format("strength_{}.csv", file_word(m));
+      materials::write_strength_table(file, table);
+      ctx.add_file(file);
+      table.origin = file.string();
+      publish_strength(exchange, ctx, m, materials::StrengthLaw(std::move(table), outside_), std::move(p));
     }
   }
 
@@ -68,7 +99,8 @@ class MolecularLammps final : public Scale {
 
 WEARSCALE_BACKEND(molecular_lammps) {
   registry.add({"molecular", "lammps",
-                "σ_max(p), σ_dyn(p) from live LAMMPS shear tests of Si (SW) and SiO2 (Vashishta) (§9.3.1), cached",
+                "σ_max(p), σ_dyn(p) from live LAMMPS shear tests (§9.3.1) of each material with an interatomic model "
+                "(Si: SW, SiO2: Vashishta, or [materials.define.<name>.interatomic]), cached",
                 {},
                 {"ShearStrength(<each material of [materials]>)"}},
                [](const ScaleSetup& s) { return std::make_unique<MolecularLammps>(s); });

@@ -40,6 +40,7 @@ class MolecularTable final : public Scale {
       laws_.emplace(m, materials::StrengthLaw(std::move(table), outside));
     }
     c.mark_used("tables");  // entries for materials the case does not use are allowed
+    c.mark_used("lammps");  // molecular/lammps' keys, kept beside (how the tables were computed)
   }
 
   std::vector<Key> consumes() const override { return {}; }

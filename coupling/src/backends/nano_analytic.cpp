@@ -1,6 +1,10 @@
 // nano/analytic: the junction model of §7.1.2 on the molecular strengths —
 // an InterfaceLaw (p_crit (7.5), μ0 (9.13), A/A0 (7.6), wear rate (9.21))
-// for each interface the pin meets: the disc, and its oxide layer if any.
+// for each interface the pin meets: the disc, and its oxide layer if any —
+// and the critical junction size d* (4.35) of the material that governs it,
+// with the junction's strength σ_max(p_crit) = p_crit.
+#include <map>
+
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/junction_model.hpp"
@@ -23,6 +27,7 @@ class NanoAnalytic final : public Scale {
       if (layer != counterfaces_.front()) counterfaces_.push_back(layer);
     }
     e_star_ = materials::effective_modulus(library.get(pin_), library.get(pin_));
+    for (const auto& m : case_materials(root, library)) records_.emplace(m, library.get(m));
   }
 
   std::vector<Key> consumes() const override {
@@ -48,6 +53,12 @@ class NanoAnalytic final : public Scale {
       ctx.report("mu0_" + tag, interface.mu0, "1", "steady friction coefficient of " + interface.pair + " (9.13)");
       ctx.report("steady_slope_" + tag, materials::steady_slope_rms(interface.p_crit, e_star_), "1",
                  "steady RMS slope √(2π) p_crit/E* with E* of the pin material (9.17)");
+      ctx.report("d_star_" + tag,
+                 materials::critical_size(records_.at(interface.governing), interface.p_crit,
+                                          materials::JunctionGeometry::FlatCircular),
+                 "m",
+                 "critical junction size 12πγG/((2−ν)σ²) of " + interface.governing +
+                     " at the junction strength σ_max(p_crit) = p_crit (4.35)");
       exchange.put<Quantity::InterfaceLaw>(interface.pair, interface, provenance_);
     }
   }
@@ -57,6 +68,7 @@ class NanoAnalytic final : public Scale {
   std::string pin_;
   std::vector<std::string> counterfaces_;
   double e_star_ = 0.0;
+  std::map<std::string, materials::Material> records_;
 };
 
 }  // namespace

@@ -341,6 +341,12 @@ class NanoDem final : public Scale {
                              fit.steady_strength / 1e9));
       ctx.report("steady_slope_" + tag, materials::steady_slope_rms(law.p_crit, e_star_), "1",
                  "steady RMS slope √(2π) p_crit/E* with E* of the pin material (9.17)");
+      ctx.report("d_star_" + tag,
+                 materials::critical_size(library_.get(law.governing), law.p_crit,
+                                          materials::JunctionGeometry::FlatCircular),
+                 "m",
+                 "critical junction size 12πγG/((2−ν)σ²) of " + law.governing +
+                     " at the junction strength σ = p_crit, as nano/analytic (4.35)");
       ctx.report("sigma_fit_" + tag, fit.shear_strength, "Pa",
                  fmt::format("σ of peak p_T = (A/A0) σ (7.9) over the {} DEM runs", fit.runs));
       const nlohmann::json fit_json = {

@@ -64,6 +64,25 @@ ShearCurve read_shear_curve(const std::filesystem::path& file) {
   return parse_shear_curve(ss.str(), file.string());
 }
 
+double initial_slope(const ShearCurve& c, double max_strain) {
+  double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (const auto& s : c.samples) {
+    if (!(s.strain > 0.0 && s.strain <= max_strain)) continue;
+    n += 1.0;
+    sx += s.strain;
+    sy += s.shear_stress;
+    sxx += s.strain * s.strain;
+    sxy += s.strain * s.shear_stress;
+  }
+  const double det = n * sxx - sx * sx;
+  if (n < 3.0 || !(det > 0.0))
+    throw NumericalError("LAMMPS shear test", c.samples.empty() ? 0 : c.samples.front().step, "elastic slope",
+                         fmt::format("{}: {} rows with strain in (0, {:g}]; at least 3 are needed (sample more often: "
+                                     "md.sample_steps)",
+                                     c.source, n, max_strain));
+  return (n * sxy - sx * sy) / det;
+}
+
 ShearStrength shear_strength(const ShearCurve& c, double window_begin, double window_end) {
   ShearStrength r;
   r.window_begin = window_begin;

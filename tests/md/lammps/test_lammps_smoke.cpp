@@ -18,7 +18,7 @@ TEST(LammpsSmoke, SiAtTwoPressuresGivesAPhysicalStrength) {
   static const ScratchDir dir_scratch("wearscale-md-lammps-");
   const std::filesystem::path dir = dir_scratch.path();
   std::filesystem::remove_all(dir);
-  ShearTestSpec s = preset_spec(Material::Si, "smoke");
+  ShearTestSpec s = preset_spec("Si", "smoke");
   s.pressures = {0.0, 10e9};
   s.cache_dir = dir / "cache";
   const ShearStudy study = run_shear_study(s);  // InputError (apt-get install lammps) if lmp is missing

@@ -4,7 +4,7 @@
 // md::ShearTestSpec that the md library runs (md reads no case).
 //
 //   [md]
-//   material = "Si"                 # or "SiO2"
+//   material = "Si"                 # "SiO2", or a [materials.define.<name>] with an interatomic table
 //   preset = "smoke"                # or "thesis"; the keys below override it
 //   pressures = ["0 GPa", "10 GPa"] # or Pa numbers: [0, 1e10]
 //   lateral_size = "2.2 nm"         # box x = y, rounded to whole lattice cells
@@ -15,22 +15,26 @@
 //   strain_end = 0.6
 //   window = [0.4, 0.6]             # σ_dyn = mean shear stress over this strain range
 //   seed = 1
-//   potential = "SiO.1990.vashishta"  cutoff = "8 Å"
+//   potential = "SiO.1990.vashishta"  cutoff = "8 Å"  lattice_constant = "7.16 Å"  (override the material's model)
 //   lmp = "/usr/bin/lmp"            ranks = 2
 //   cache = true                    cache_dir = "~/.cache/wearscale/lammps"
-//   [md.quench]                     # SiO2: temperatures = [5000, …, 300], hold_time,
-//                                   # cooling_rate = "166 K/ps", final_cooling_rate, timestep
+//   [md.Si]                         # keys for one material alone (a pipeline with several
+//   pressures = [...]               #   materials: [scale.molecular.<material>])
+//   [md.quench]                     # amorphous: temperatures = [5000, …, 300], hold_time,
+//                                   # cooling_rate = "166 K/ps", final_cooling_rate, timestep, constant_volume
 #include "wearscale/io/config.hpp"
 #include "wearscale/md/shear_test.hpp"
 
 namespace wearscale::coupling {
 
-/// Reads every key of the `md` section of `config` (preset first, then each
-/// key that is present overrides it) and validates the result; InputError
-/// naming the key for any bad value.
-md::ShearTestSpec read_shear_test_spec(const Config& config);
+/// Reads every key of the `md` section of the case `root` (the material's
+/// model from the built-in records or the case's [materials.define], the
+/// preset, then each key that is present overrides them) and validates the
+/// result; InputError naming the key for any bad value.
+md::ShearTestSpec read_shear_test_spec(const Config& root);
 /// The same keys read from `section` (e.g. [scale.molecular]) for a material
-/// given apart ("Si" or "SiO2").
-md::ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material);
+/// given apart with its interatomic model.
+md::ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material,
+                                       const materials::InteratomicModel& model);
 
 }  // namespace wearscale::coupling

@@ -22,11 +22,13 @@ std::filesystem::path installed_file(const std::filesystem::path& relative);
 /// empty: back to the search above.
 void set_data_directory(const std::filesystem::path& dir);
 
-/// Shipped tables by name: "thesis" (Fig. 9.18 laws) or "lammps" (computed
-/// by wearscale's LAMMPS backend, smoke preset), for "Si" or "SiO2".
-/// InputError listing what exists if there is no such table.
+/// Shipped tables by name: "thesis" (Fig. 9.18 laws, Si and SiO2) or "lammps"
+/// (computed by wearscale's LAMMPS backend: Si, SiO2 and the demonstration
+/// materials). InputError listing what exists if there is no such table.
 StrengthTable shipped_table(const std::string& set, const std::string& material);
 std::filesystem::path shipped_table_path(const std::string& set, const std::string& material);
 std::vector<std::string> shipped_sets();
+/// The materials a set has a table for, from the data folder's file names.
+std::vector<std::string> shipped_materials(const std::string& set);
 
 }  // namespace wearscale::materials

@@ -1,6 +1,11 @@
 #pragma once
-// Strength tables (materials/strength_table.hpp) in files: CSV with
-// provenance comment lines, or HDF5 (/strength/{pressure,sigma_max,sigma_dyn}).
+// Strength tables (materials/strength_table.hpp) in files: CSV in the
+// project's convention (one header line pressure_Pa,sigma_max_Pa,sigma_dyn_Pa,
+// the provenance in the sidecar <table>.csv.json), or HDF5
+// (/strength/{pressure,sigma_max,sigma_dyn}). The reader also takes the
+// older CSV form: leading "# key: value" provenance lines and columns in GPa
+// (pressure_GPa, ...), as hand-written tables and wearscale before the SI
+// convention wrote them.
 #include <filesystem>
 #include <string>
 #include <string_view>

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "wearscale/materials/interatomic_model.hpp"
 
 namespace wearscale::materials {
 
@@ -19,6 +20,7 @@ struct Material {
   double tensile_strength = 0.0;  ///< ideal tensile strength σ_m,N [Pa]
   double shear_strength = 0.0;    ///< ideal shear strength σ_m,T [Pa]
   std::optional<double> restitution;  ///< η, the DEM restitution coefficient (Table 6.5)
+  std::optional<InteratomicModel> interatomic;  ///< for the MD shear test (§9.3.1), if the material has one
   std::string source;             ///< where the numbers come from
 
   double shear_modulus() const { return young / (2.0 * (1.0 + poisson)); }  // G = E / 2(1+ν)

@@ -4,12 +4,15 @@
 // (§9.3.1, Fig. 9.17–9.18), with the provenance of its numbers.
 //
 // Read and written by io/strength_table_file.hpp. File format (CSV, UTF-8):
-//   # key: value                 provenance lines (source, material, units,
-//   # key: value                 LAMMPS version, potential, size, seeds, …)
-//   pressure_GPa,sigma_max_GPa,sigma_dyn_GPa
-//   0,10.6,1.5
+//   pressure_Pa,sigma_max_Pa,sigma_dyn_Pa
+//   0,1.06e+10,1.5e+09
 //   ...
-// Pressures strictly increasing and ≥ 0, strengths ≥ 0, all finite. An HDF5
+// with the provenance (source, material, LAMMPS version, potential and its
+// SHA-256, size, seeds, …) as "key: value" notes in <table>.csv.json; the
+// reader also takes "# key: value" lines before the header and columns in
+// kPa, MPa or GPa (pressure_GPa, …: the older form).
+// Pressures increasing (a pressure listed twice is a jump) and ≥ 0,
+// strengths ≥ 0, all finite. An HDF5
 // file holds the same columns under /strength/{pressure,sigma_max,sigma_dyn}
 // in Pa, and each provenance line as a string attribute of /strength.
 #include <filesystem>

@@ -49,6 +49,10 @@ const KeySpec* find_key(const Schema& schema, const std::string& key);
 std::vector<std::string> closest_keys(const Schema& schema, const std::string& key, std::size_t at_most = 3);
 /// The help line of a key: "doc [unit, range, default]: key".
 std::string help_line(const KeySpec& spec);
+/// The keys of a [materials.define.<name>] table (declared once in
+/// io/material_definitions.hpp), as "materials.define.<name>.<key>": for the
+/// schemas of the studies that read case-defined materials.
+Schema material_schema();
 /// A Markdown table of the schema (the key tables of docs/).
 std::string markdown_table(const Schema& schema);
 

@@ -51,6 +51,11 @@ struct ShearStrength {
   bool failed_before_window = true; ///< the peak lies before the window begins
 };
 
+/// The slope dτ/d(strain) of the curve's elastic start: least squares (with
+/// an intercept) over the rows with strain in (0, max_strain]. NumericalError
+/// if fewer than 3 rows lie there.
+double initial_slope(const ShearCurve& curve, double max_strain);
+
 /// σ_max and σ_dyn of a curve. NumericalError if the curve does not reach
 /// the end of the window (run stopped early) or the window holds no row.
 ShearStrength shear_strength(const ShearCurve& curve, double window_begin, double window_end);
