@@ -314,8 +314,8 @@ void Simulation::restore_state(const CheckpointState& in) {
   neighbors_.restore(in, "dem.list.", p, law_->history_size());
   const auto& clock = finite(in, "dem.clock", sized(in, "dem.clock", 6));
   step_ = whole<long>(in, "dem.clock", clock[0]);
-  since_build_ = whole<long>(in, "dem.clock", clock[1]);
-  if (step_ < 0 || since_build_ < 0 || since_build_ > step_ || clock[2] < 0.0 || !(clock[3] > 0.0))
+  since_build_ = whole<long>(in, "dem.clock", clock[1]);  // −1: the list is rebuilt at the next step
+  if (step_ < 0 || since_build_ < -1 || since_build_ > step_ || clock[2] < 0.0 || !(clock[3] > 0.0))
     refuse(in, "dem.clock", fmt::format("holds step {}, {} steps since the last build, time {:g}, step {:g}", step_,
                                         since_build_, clock[2], clock[3]));
   time_ = clock[2];
