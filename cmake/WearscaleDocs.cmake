@@ -3,8 +3,9 @@
 # */include/wearscale/**).
 #
 #   cmake --build build --target docs     -> build/docs/html/index.html
-#   ctest --test-dir build -L docs        -> docs.build (sphinx-build -W) and
-#                                            docs.no_journal (no dated entries)
+#   ctest --test-dir build -L docs        -> docs.build (sphinx-build -W),
+#                                            docs.no_journal (no dated entries) and
+#                                            docs.commands (the manual's commands run)
 #
 # The target exists only when doxygen, sphinx-build and the Python modules
 # myst_parser and breathe (importable by sphinx-build's own interpreter) are
@@ -81,4 +82,10 @@ if(WEARSCALE_BUILD_TESTS)
            COMMAND ${WEARSCALE_DOCS_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/no_journal.py
                    ${PROJECT_SOURCE_DIR})
   set_tests_properties(docs.no_journal PROPERTIES LABELS docs)
+  # Every wearscale command of the README and the manual still runs as written
+  # (a study's under --dry-run: its case and options checked, nothing computed).
+  add_test(NAME docs.commands
+           COMMAND ${WEARSCALE_DOCS_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/commands.py
+                   ${PROJECT_SOURCE_DIR} $<TARGET_FILE:wearscale>)
+  set_tests_properties(docs.commands PROPERTIES LABELS docs TIMEOUT 900)
 endif()

@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <random>
@@ -166,6 +167,36 @@ TEST(ReservedNames, GeneratedReservedOutputNamesAreRefusedBeforeAnyWork) {
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_THAT(r.err, HasSubstr(name));
     EXPECT_FALSE(fs::exists(dir / "out"));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Texts handed to another program (gnuplot): data, never code. The class's generator: folder and case
+// names made of gnuplot's and shells' syntax, a new set each run; no command runs and every figure is drawn.
+
+TEST(ExternalPrograms, GeneratedGnuplotCodeInFolderAndCaseNamesRunsNothingAndEveryFigureIsDrawn) {
+  auto rng = hostile_generator("gnuplot-texts");
+  for (int k = 0; k < 3; ++k) {
+    const auto dir = folder("gnuplot-" + std::to_string(k));
+    const std::string pwned = (dir / "PWNED").string();  // where a command that ran would leave its mark
+    const std::vector<std::string> parts{"'", "\"", "system('touch " + pwned + "')", "`touch " + pwned + "`",
+                                         "$(touch " + pwned + ")", "\n", "\\", ";", " ", "@", "print(", ")",
+                                         "µm", "x", "#", "{", "}", "\t"};
+    std::string out = "o", name;
+    for (int p = std::uniform_int_distribution<int>(1, 6)(rng); p > 0; --p) out += pick(rng, parts);
+    for (int p = std::uniform_int_distribution<int>(1, 6)(rng); p > 0; --p) name += pick(rng, parts);
+    std::replace(out.begin(), out.end(), '/', '_');  // a folder, not a path
+    SCOPED_TRACE("out = " + out + ", name = " + name);
+    std::string text = slurp(pin_on_disc);
+    const std::string line = "name = \"pin-on-disc-si-oxide\"";
+    ASSERT_NE(text.find(line), std::string::npos);
+    text.replace(text.find(line), line.size(), "name = " + nlohmann::json(name).dump());  // a JSON string is TOML's
+    write_file(dir / "case.toml", text);
+    const auto r = run_cli("run case.toml" + small + " --out " + shell_word(out), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(fs::exists(pwned)) << "a text ran as a command";
+    EXPECT_TRUE(fs::exists(dir / out / "friction.png"));
+    EXPECT_TRUE(fs::exists(dir / out / "friction.pdf"));
   }
 }
 

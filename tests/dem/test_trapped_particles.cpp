@@ -77,6 +77,6 @@ TEST(TrappedParticles, TheCellTakesTheHistoryTransferItIsGiven) {
   for (bool touching : {false, true}) {
     spec.cell.history_of_touching_pairs_only = touching;
     const SlidingCell cell(sample.particles, sample.box, spec.cell);
-    EXPECT_EQ(cell.simulation().neighbor_list().history_of_touching_pairs_only(), touching);
+    EXPECT_EQ(cell.engine().history_of_touching_pairs_only(), touching);
   }
 }

@@ -151,7 +151,9 @@ TEST(ShearDeck, GeneratedHostileFileNamesAreNeverLammpsCode) {
     EXPECT_TRUE(has_line(d, "pair_coeff * * " + name + " Si"));
     EXPECT_EQ(d.find("\nshell"), std::string::npos) << "no command of the name starts a line";
     f.potential = std::filesystem::path(hostile).filename().string();
-    if (!is_deck_word(f.potential)) EXPECT_THROW((void)shear_deck(s, 10e9, f), std::logic_error);
+    if (!is_deck_word(f.potential)) {
+      EXPECT_THROW((void)shear_deck(s, 10e9, f), std::logic_error);
+    }
   }
 }
 

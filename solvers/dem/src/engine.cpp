@@ -41,6 +41,9 @@ class WearscaleEngine final : public Engine {
   double time() const override { return sim_.time(); }
   const std::vector<SymTensor>& virial() const override { return sim_.virial(); }
   double kinetic_energy() const override { return sim_.kinetic_energy(); }
+  bool history_of_touching_pairs_only() const override {
+    return sim_.neighbor_list().history_of_touching_pairs_only();
+  }
   void save_state(CheckpointState& out) const override { sim_.save_state(out); }
   void restore_state(const CheckpointState& in) override { sim_.restore_state(in); }
 

@@ -271,6 +271,7 @@ class LammpsEngine final : public Engine {
     config.box = box_;
     config.law = law_config(*law_);
     config.neighbors = nb;
+    touching_only_ = nb.history_of_touching_pairs_only;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.material[i] >= config.law.types && config.law.kind == LawConfig::Kind::Cohesive)
         throw InputError(fmt::format("DEM engine 'lammps': particle {} has material {} of a table of {}", p.id[i],
@@ -405,6 +406,7 @@ class LammpsEngine final : public Engine {
   double time() const override { return system_->time(); }
   const std::vector<SymTensor>& virial() const override { return virial_; }
   double kinetic_energy() const override { return dem::kinetic_energy(mirror_); }
+  bool history_of_touching_pairs_only() const override { return touching_only_; }
 
   void save_state(CheckpointState& out) const override {
     if (served_) tell_servers(Call::Save, id_, {});
@@ -523,6 +525,7 @@ class LammpsEngine final : public Engine {
   Particles mirror_;
   Box box_;
   std::unique_ptr<ContactLaw> law_;
+  bool touching_only_ = false;
   std::vector<Wall> walls_;
   std::vector<SymTensor> virial_;
   GatheredState gathered_;

@@ -81,6 +81,9 @@ class Engine {
   virtual const std::vector<SymTensor>& virial() const = 0;
   /// Translational + rotational kinetic energy of the mobile particles.
   virtual double kinetic_energy() const = 0;
+  /// Whether tangential histories carry over neighbour rebuilds for touching
+  /// pairs only (NeighborSettings::history_of_touching_pairs_only).
+  virtual bool history_of_touching_pairs_only() const = 0;
 
   /// The dynamic state for a checkpoint (see Simulation::save_state): a run
   /// is resumed by setting the system up as before, then restore_state();
