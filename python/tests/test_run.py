@@ -85,13 +85,13 @@ def test_a_sweeps_results_and_table_are_its_csv_table(tmp_path):
     table = r.table()
     on_disk = pandas.read_csv(tmp_path / "s" / "sweep.csv")
     assert list(table.columns) == list(on_disk.columns)
-    assert table.columns[0] == "scale.macro.normal_load_N"
+    assert table.columns[0] == "macro_normal_load_N"
     assert ((table - on_disk).abs() <= 1e-9 * on_disk.abs()).all().all()  # the CSV's 10 significant digits
     assert table.attrs["units"]["contact_radius_m"] == "m"
     # a ∝ F^(1/3) (1.12)
     a = table["contact_radius_m"]
     assert a[1] / a[0] == approx(2.0, rel=1e-12) and a[2] / a[0] == approx(3.0, rel=1e-12)
-    assert r.results["contact_radius_m"] == list(a) and r.results["scale.macro.normal_load_N"] == [1.0, 8.0, 27.0]
+    assert r.results["contact_radius_m"] == list(a) and r.results["macro_normal_load_N"] == [1.0, 8.0, 27.0]
     one = r.runs[1]
     assert one.results["contact_radius_m"] == a[1] and one["value"] == "8 N"
     assert one.output_dir.parent == tmp_path / "s" and (one.output_dir / "run.h5").exists()
@@ -103,7 +103,7 @@ def test_without_pandas_a_table_is_plain_columns(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas raises ImportError
     table = r.table()
     assert isinstance(table, dict) and isinstance(table["contact_radius_m"], np.ndarray)
-    assert list(table["scale.macro.normal_load_N"]) == [1.0, 8.0, 27.0]
+    assert list(table["macro_normal_load_N"]) == [1.0, 8.0, 27.0]
     single = ws.run(HERTZ, out=tmp_path / "one").table()
     assert single["contact_radius_m"].shape == (1,)
 

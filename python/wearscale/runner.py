@@ -98,6 +98,13 @@ def _path(value, what):
                                     "os.PathLike") from None
 
 
+def _swept_name(key):
+    """A swept key's column in a sweep table, as the runner names it: its last two components joined,
+    "materials.layer.thickness" -> "layer_thickness" (the table adds the unit)."""
+    parts = key.split(".")
+    return "_".join(parts[-2:]) if len(parts) > 1 and parts[0] else key
+
+
 def _column(name, unit):
     """The key of a figure: its name with its SI unit, as the CSV tables' columns."""
     return _io.column_name(name, unit or "1")
@@ -168,7 +175,7 @@ class RunResult(dict):
                     j = json.loads(sidecar.read_text())
                 except (OSError, ValueError):
                     continue
-                if j.get("columns") and j["columns"][0].startswith(key):
+                if j.get("columns") and j["columns"][0].startswith(_swept_name(key)):
                     return j
         return None
 
@@ -178,14 +185,14 @@ class RunResult(dict):
         try:
             parsed = [_io.quantity(str(v)) for v in values]
         except ValueError:
-            return key, list(values), ""
+            return _swept_name(key), list(values), ""
         if len({u for _, u in parsed}) != 1:
-            return key, list(values), ""
+            return _swept_name(key), list(values), ""
         unit = parsed[0][1]
         if sidecar:  # the table's own name and unit of the column (a key whose values are plain numbers in SI)
             name = sidecar["columns"][0]
             return name, [v for v, _ in parsed], sidecar.get("units", {}).get(name, unit)
-        return _column(key, unit), [v for v, _ in parsed], unit
+        return _column(_swept_name(key), unit), [v for v, _ in parsed], unit
 
     def _columns(self):
         """({column: values}, [(column, unit)]) of the table."""
