@@ -104,7 +104,7 @@ TEST(Cli, AnUnknownCommandIsNamedWithTheKnownOnes) {
     const auto r = run_cli(line, work);
     EXPECT_EQ(r.status, 2) << line;
     EXPECT_THAT(r.err, HasSubstr("unknown command 'frobnicate'")) << line;
-    EXPECT_THAT(r.err, HasSubstr("run, backends, version")) << line;
+    EXPECT_THAT(r.err, HasSubstr("run, check, backends, version")) << line;
   }
 }
 

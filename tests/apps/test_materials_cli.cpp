@@ -87,7 +87,7 @@ TEST(MaterialsCli, ACaseDefinedMaterialGoesThroughTheScaleLinkLikeSilicon) {
   const std::string table = slurp(work / "out" / "strength_Ni.csv");
   EXPECT_EQ(table.substr(0, table.find('\n')), "pressure_Pa,sigma_max_Pa,sigma_dyn_Pa");
   EXPECT_EQ(table.substr(table.find('\n') + 1, table.find('\n', table.find('\n') + 1) - table.find('\n') - 1),
-            "0,1.2e+10,2000000000");
+            "0.0,1.2e+10,2000000000.0");
   const auto sidecar = nlohmann::json::parse(slurp(work / "out" / "strength_Ni.csv.json"));
   std::string notes;
   for (const auto& n : sidecar["notes"]) notes += n.get<std::string>() + "\n";
