@@ -97,8 +97,9 @@ TEST(MpiSweepCli, AFailedRunIsMarkedInTheTableAndTheJobEndsWithStatus1) {
 // mpirun passes it to the ranks, which stop, and a resume under another count
 // finishes the sweep with the uninterrupted files.
 TEST(MpiSweepCli, ASignalToMpirunStopsTheJobAndAResumeUnderAnotherCountFinishesIt) {
-  // Runs of about 2 s each: the signal, sent when the first has finished, falls while the last runs.
-  const std::string args = sweep_args + " --set scale.macro.distance=1";
+  // Runs of about 2 s each (the explicit integrator's fixed steps; the adaptive one is several times faster):
+  // the signal, sent when the first has finished, falls while the last runs.
+  const std::string args = sweep_args + " --set scale.macro.distance=1 --set scale.macro.integrator=explicit";
   ASSERT_EQ(run(0, args + " --out uninterrupted").status, 0);
   for (const int signal : {SIGTERM, SIGINT}) {
     const std::string dir = signal == SIGTERM ? "terminated" : "interrupted";
@@ -126,8 +127,9 @@ TEST(MpiSweepCli, ASignalToMpirunStopsTheJobAndAResumeUnderAnotherCountFinishesI
 }
 
 TEST(MpiSweepCli, AKilledRankEndsTheJobAndAResumeUnderAnotherCountFinishesIt) {
-  // Runs six times longer (about 1 s each), so that the kill falls while runs are under way.
-  const std::string args = sweep_args + " --set scale.macro.distance=0.3";
+  // Runs six times longer (about 1 s each with the explicit integrator's fixed steps), so that the kill falls
+  // while runs are under way.
+  const std::string args = sweep_args + " --set scale.macro.distance=0.3 --set scale.macro.integrator=explicit";
   ASSERT_EQ(run(0, args + " --out uninterrupted").status, 0);
   // Three ranks; one worker is killed (SIGKILL) once the first run has finished.
   const auto job = kill_a_worker_rank(work.string(), 3, args + " --out killed", "--out killed", [] {
