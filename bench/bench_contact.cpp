@@ -30,7 +30,7 @@
 // One iteration needs 9 FFTs: u = F * p (3 r2c + 3 c2r) and the spectra of
 // the search direction (3 r2c), i.e. 4.5 FFT pairs.
 //
-// Surface (issue #3): H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1, E* = 1,
+// Surface: H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1, E* = 1,
 // mean pressure 0.03 (about 6.5 % contact), tolerance 1e-10 on the relative
 // orthogonality error ε = Σ p|g| / (Σ p · h_rms) (see normal_contact.hpp).
 #include <cmath>

@@ -1,6 +1,6 @@
 // What an OpenMP parallel region and a barrier cost on this machine, the
 // figures behind the programs' choice of how waiting threads wait
-// (core/include/wearscale/core/thread_waiting.hpp, bench/results/dem.md "#23 V").
+// (core/include/wearscale/core/thread_waiting.hpp, bench/results/dem.md, "waiting threads chosen by the program").
 // Each benchmark times one region (or barrier) over 2000 doubles, which is
 // next to no work: the time is the waking and joining of the team.
 //   OMP_NUM_THREADS=2 build/bench/bench_threads                    # as the programs set it

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """An active-set (primal-dual) outer loop around plain preconditioned CG: does it beat
 Polonsky-Keer in FFT pairs?  A numpy prototype (not wearscale's solver) asked one
-question of issue #22: inside a fixed contact set no point is clipped, so u = K p
+question of the preconditioner study: inside a fixed contact set no point is clipped, so u = K p
 follows by linearity (u -= tau K t: one FFT pair an inner iteration, plus the
 two-level preconditioner's quarter) and u = K p is transformed once per update of
 the set.  It counts inner iterations, set updates and FFT pairs to 1e-10 on the
@@ -10,7 +10,7 @@ issue's surface (local_preconditioners.surface), with wearscale's TwoLevelStiffn
 
 Usage: active_set.py N ETA [ETA ...]   (ETA: inner CG stops at ETA x its first residual)
 e.g.   active_set.py 512 0.1 0.3
-Results recorded in docs/bem.md (#22, "The two-level preconditioner").
+Results recorded in docs/bem.md ("The two-level preconditioner").
 """
 import sys
 import time

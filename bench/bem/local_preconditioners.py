@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Iterations of the preconditioned Polonsky-Keer CG with cheap preconditioners.
 
-A numpy prototype (not wearscale's solver) asked one question of issue #22:
+A numpy prototype (not wearscale's solver) asked one question of the preconditioner study:
 can a preconditioner that costs no FFT keep the iterations of the FFT-based
 one (z = S r, S = |q| E*/2, the inverse of the half-space operator), so that
 an iteration costs one FFT pair (t = K d) instead of two?  It counts
@@ -22,7 +22,7 @@ k_l = k_r = 4, k_s = 64, h'_rms = 1, p = 0.03 E*, seed 1) for:
 
 Usage: local_preconditioners.py N PRECONDITIONER [...]
 e.g.   local_preconditioners.py 512 none fourier lap4 poly2:256 twolevel2:0.05 fw0.05:1
-Needs numpy. Results recorded in docs/bem.md (#22, "cheaper preconditioners").
+Needs numpy. Results recorded in docs/bem.md ("cheaper preconditioners").
 """
 import sys
 import time

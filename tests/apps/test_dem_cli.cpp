@@ -59,7 +59,7 @@ TEST(DemCli, BadInputNamesTheKeyAndExitsWithTwo) {
   EXPECT_FALSE(fs::exists(work / "bad" / "junction.dump"));
 }
 
-// Silent garbage is refused (#17, #18): a lattice whose second neighbours
+// Silent garbage is refused: a lattice whose second neighbours
 // fall within the cohesive reach exits 2 with the smallest valid d0 (it
 // reported ν = 2.2), a sample that never comes to rest exits 1 (it reported
 // E = 0.71, ν = 0.25); neither writes a result.
@@ -76,7 +76,7 @@ TEST(DemCli, PatchTestRefusesGarbageInsteadOfReportingIt) {
   EXPECT_FALSE(fs::exists(work / "hot" / "summary.json"));
 }
 
-// nano/dem's Si keys (#18): `amorphous` names case materials (or "none"),
+// nano/dem's Si keys: `amorphous` names case materials (or "none"),
 // `max_poisson` stays at most the pair force's 1/4; refused before any run.
 TEST(DemCli, NanoDemRefusesUnknownAmorphousMaterialsAndPoissonAboveAQuarter) {
   fs::create_directories(work);

@@ -1,4 +1,4 @@
-// Every command's --help ends in Examples that run as they are (#24 item 5):
+// Every command's --help ends in Examples that run as they are:
 // one test per example, read from `wearscale --help-all` when the tests are
 // listed, each run in its own scratch folder (cases/ linked beside it) after
 // the examples before it in the same help (an example may read what an earlier

@@ -1,4 +1,4 @@
-// The program as a hostile user meets it (issue #17): every input that used
+// The program as a hostile user meets it: every input that used
 // to crash it (segfault, std::bad_alloc, exit 3), run until memory ran out
 // or gave a silently wrong answer is refused with exit 2 (bad input) or 1
 // (a result outside physical bounds), a message naming the file, key or
@@ -104,7 +104,7 @@ const std::string table_head = "# material: Si\npressure_GPa,sigma_max_GPa,sigma
 }  // namespace
 
 INSTANTIATE_TEST_SUITE_P(
-    Issue17, HostileInput,
+    EveryReader, HostileInput,
     ::testing::Values(
         // HDF5 topographies: attributes and declared sizes checked before they are read.
         Hostile{"lx_array_of_1000", contact_h5,
@@ -426,8 +426,8 @@ TEST(OutputFolder, ARunKilledOverAnOlderRunLeavesTheOlderSetIntact) {
 }
 
 // Whatever the DEM measures, an E ≤ 0 or a ν outside (−1, 0.5) is never a
-// result: d0 = 60 (above d_min = 30) measured E = −0.40…2.07, ν = −1.78…2.20
-// (issue #17). Exit 1 (the command's guard) or 2 (d0 refused), never 0.
+// result: d0 = 60 (above d_min = 30) measured E = −0.40…2.07, ν = −1.78…2.20.
+// Exit 1 (the command's guard) or 2 (d0 refused), never 0.
 TEST(HostileInput, ANonsensicalPatchTestMeasurementIsNeverAResult) {
   const auto dir = work / "patch-d0";
   const auto r = run_cli("dem patch-test --nu 0.1 --d0 60 --length 6 --no-strengths --out out --json", dir);

@@ -1,4 +1,4 @@
-// The pin-on-disc keys of #16 as users meet them: the friction table carries
+// The pin-on-disc keys as users meet them: the friction table carries
 // its moving average, the disc its grooves, a [sweep.series] one table per
 // series, and every bad value of a new key is refused with status 2 naming
 // the key, the value and what is allowed, with nothing written.

@@ -43,7 +43,7 @@ TEST(RoughContact, ContactAreaIsProportionalToLoadWithKappaBetweenPerssonAndBush
 }
 
 namespace {
-// The surface of issue #22's benchmark: H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1.
+// The surface of the BEM benchmark (bench/bench_contact.cpp): H = 0.8, k_l = k_r = 4, k_s = 64, h'_RMS = 1.
 RealField benchmark_surface(std::size_t n, std::uint64_t seed) {
   RoughSurfaceSpec spec;
   spec.grid = Grid2D::square(n, 1.0);

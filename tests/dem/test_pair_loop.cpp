@@ -1,5 +1,5 @@
 // The batched, vectorised pair loop (pair_loop.hpp) against the reference:
-// each law's pair force written pair by pair with branches, as before #23
+// each law's pair force written pair by pair with branches, as it was before the vectorised kernels
 // (LAMMPS gran/hooke/history term by term; the thesis' (6.2)-(6.5)), summed
 // row by row. Forces, torques and the updated tangential histories must be
 // the same to rounding, in states where every branch is taken: pairs
@@ -130,7 +130,7 @@ struct Sums {
   int active = 0, inactive = 0, capped = 0, softening = 0;
 };
 
-// Row by row over the half list, the force on i summed locally (as before #23).
+// Row by row over the half list, the force on i summed locally (as before the vectorised kernels).
 template <class PairForceOf>
 Sums reference_sums(const Simulation& sim, const std::vector<double>& history, PairForceOf&& pair_force) {
   const auto& p = sim.particles();

@@ -123,7 +123,7 @@ TEST(PatchTest, ElasticConstantsOutsideWhatASolidAllowsAreANumericalFailure) {
 
 // The 2.4 nm deep cell of §7.1.1 (one HCP cell, two close-packed layers,
 // each particle bonded to the other layer through two periodic images):
-// the same E and ν as a sample three cells deep (#18 asks 3 %; the strain is
+// the same E and ν as a sample three cells deep (within 3 %; the strain is
 // uniform, so they agree to rounding: measured 2e-14).
 TEST(PatchTest, AOneCellDeepSilicaLatticeHasTheElasticConstantsOfADeepOne) {
   PatchTestSpec s;

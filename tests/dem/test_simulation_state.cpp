@@ -1,4 +1,4 @@
-// Checkpoints of DEM runs (#10): a run stopped, saved and resumed in a system
+// Checkpoints of DEM runs: a run stopped, saved and resumed in a system
 // set up afresh continues bit for bit as if it had never stopped.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

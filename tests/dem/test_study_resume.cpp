@@ -1,5 +1,5 @@
 // The DEM studies a user runs on their own (`wearscale dem ...`) can be
-// resumed (#10): each offers its state after every sample, and a run set up
+// resumed: each offers its state after every sample, and a run set up
 // afresh from that state ends bit for bit as the run that never stopped -
 // the sheared junction (§6.3), sheared rough surfaces (§7.2), trapped
 // particles (§7.3), the three patch tests (§6.2) and the oxidized asperity

@@ -19,7 +19,7 @@ TEST(HcpPatchTestLong, TensileStrengthMatchesTheTargetForZeroPoisson) {
   EXPECT_NEAR(*r.tensile_strength, 0.2, 0.02);  // measured 0.212
   // The thesis finds the shear strength below target for d0 < d_c (Fig. 6.11);
   // ours is above it at ν = 0 (0.126 for 0.1; below it at ν = 0.15: 0.093):
-  // reported, not asserted. Measured on the #18 code: E = 1.015, ν = 0.001,
+  // reported, not asserted. Measured once: E = 1.015, ν = 0.001,
   // σ_m,N = 0.212 (`wearscale dem patch-test --nu 0 --d0 90 --length 25`).
   EXPECT_GT(*r.shear_strength, 0.0);
 }

@@ -10,7 +10,7 @@
 // A single output file (`surface generate --out a.h5`) is locked the same way
 // by `.<name>.lock` beside it, so two generations into one folder proceed.
 //
-// Shards of one ensemble (`--task K/N`, #21) share a folder: each takes the
+// Shards of one ensemble (`--task K/N`) share a folder: each takes the
 // folder's lock in the Shared mode with the ensemble's id (flock LOCK_SH, the
 // id written in the lock file) and writes only into its own runs' subfolders,
 // each under its own exclusive lock. A shard of another ensemble (another id)

@@ -7,8 +7,8 @@
 // GOMP_SPINCOUNT to `waiting_spin_count` and starts the program again with it
 // (once, before anything else; the child processes it starts inherit it).
 // A thread then spins briefly and sleeps if nothing comes: quick on dedicated
-// cores, no collapse on shared ones (bench/results/dem.md, "#23 V"). 3000 spins (about
-// 33 µs of `pause` on the 2-vCPU KVM host of bench/results/dem.md "#23 IX") outlast
+// cores, no collapse on shared ones (bench/results/dem.md, "waiting threads chosen by the program"). 3000 spins (about
+// 33 µs of `pause` on the 2-vCPU KVM host of bench/results/dem.md, "how long a waiting thread spins") outlast
 // the few-µs gaps between a time step's regions and most of the threads'
 // imbalance at its barriers; a thread that sleeps there costs ~50 µs to wake.
 // The Python package does the same from its __init__.py.
