@@ -82,6 +82,11 @@ if(WEARSCALE_BUILD_TESTS)
            COMMAND ${WEARSCALE_DOCS_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/no_journal.py
                    ${PROJECT_SOURCE_DIR})
   set_tests_properties(docs.no_journal PROPERTIES LABELS docs)
+  # Comments say what the code is, not which issue or stop brought it.
+  add_test(NAME docs.no_tracker_comments
+           COMMAND ${WEARSCALE_DOCS_PYTHON} ${PROJECT_SOURCE_DIR}/tests/docs/no_tracker_comments.py
+                   ${PROJECT_SOURCE_DIR})
+  set_tests_properties(docs.no_tracker_comments PROPERTIES LABELS docs)
   # Every wearscale command of the README and the manual still runs as written
   # (a study's under --dry-run: its case and options checked, nothing computed).
   add_test(NAME docs.commands

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The manual is not a lab notebook: no page listed below may hold a dated
-entry ("6 Dec", "Dec 6", "2026-12-06"), an issue number ("#23") or the words
+entry ("6 Dec", "Dec 6", "2026-12-06"), an issue number ("#NN") or the words
 session, agent, helper, lane (dated measurement records belong in the results
 log, bench/results/). Fenced code blocks are checked too.
 

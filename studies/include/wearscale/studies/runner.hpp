@@ -8,7 +8,7 @@
 // second key and its values) repeats the sweep once per series value, one
 // table and one curve each.
 //
-// Ensembles scale out (#21). Under `mpirun -np P` (or srun) the runs of a
+// Ensembles scale out. Under `mpirun -np P` (or srun) the runs of a
 // sweep go over the ranks by the task farm (core/task_farm.hpp): dynamic
 // scheduling, rank 0 alone writes the sweep's table and summary, each run
 // writes its own folder; the results are those of a run without mpirun. A
