@@ -115,13 +115,16 @@ TEST(TopographyPsd, RadialBinsHoldEveryModeOnceAndKeepTheTotalPower) {
 
 TEST(TopographyPsd, HannWindowedPsdOfASinePeaksAtItsWavenumber) {
   // k = 10 (periodic) and k = 10.4 (not periodic, as measured data): the windowed
-  // 2D PSD peaks on mode (10, 0) and the radial PSD in the bin 10 ≤ |k| < 11.
+  // 2D PSD peaks on mode (±10, 0) (a real wave's PSD is even in k: which of the two
+  // equal peaks rounds higher depends on the FFT plan) and the radial PSD in the bin
+  // 10 ≤ |k| < 11.
   const Grid2D g = Grid2D::square(128, 1e-3);
   const RealField w = radial_hann_window(g);
   for (const double k : {10.0, 10.4}) {
     const RealField c = psd_2d(windowed(wave(g, 1e-6, k), w));
     const auto peak = static_cast<std::size_t>(std::max_element(c.begin(), c.end()) - c.begin());
-    EXPECT_EQ(peak / c.cols(), 10u) << k;
+    const std::size_t row = peak / c.cols();
+    EXPECT_EQ(std::min(row, g.nx - row), 10u) << k;
     EXPECT_EQ(peak % c.cols(), 0u) << k;
     const RadialPsd r = radial_psd(c);
     const auto top = static_cast<std::size_t>(std::max_element(r.c.begin(), r.c.end()) - r.c.begin());
