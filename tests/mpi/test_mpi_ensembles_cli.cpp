@@ -127,8 +127,14 @@ TEST(MpiEnsemblesCli, TheLammpsRunsOfAMolecularScaleOverThreeRanksGiveTheSerialS
   const auto b = nlohmann::json::parse(slurp(work / "lammps_np3" / "summary.json"))["results"];
   ASSERT_FALSE(a.empty());
   for (const auto& [name, v] : a.items()) EXPECT_EQ(v["value"], b[name]["value"]) << name;
-  std::size_t entries = 0;
-  for (const auto& e : fs::directory_iterator(work / "cache_np3"))
-    entries += e.is_directory() && e.path().filename().string().size() == 64 ? 1 : 0;
-  EXPECT_EQ(entries, 2u) << "one LAMMPS run per pressure";
+  // One shear run per pressure, and the elastic check of the material: its sample as built and the ideal
+  // lattice it is compared with.
+  std::size_t shear_runs = 0, elastic_runs = 0;
+  for (const auto& e : fs::directory_iterator(work / "cache_np3")) {
+    if (!e.is_directory() || e.path().filename().string().size() != 64) continue;
+    shear_runs += fs::exists(e.path() / "shear.dat") ? 1 : 0;
+    elastic_runs += fs::exists(e.path() / "elastic.txt") ? 1 : 0;
+  }
+  EXPECT_EQ(shear_runs, 2u) << "one LAMMPS shear run per pressure";
+  EXPECT_EQ(elastic_runs, 2u) << "the elastic check: the sample and the ideal lattice, once";
 }
