@@ -42,7 +42,6 @@
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/studies/study.hpp"
 #include "case_report.hpp"
-#include "contact_slab.hpp"
 #include "result_bounds.hpp"
 
 namespace wearscale::studies {
@@ -199,7 +198,7 @@ PreparedRun prepare_keys(Config cfg_in, const std::optional<std::filesystem::pat
   const Config r = cfg.section("run");
   run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
                                                                                                 : PlanRigor::Measure;
-  read_gather_limit(cfg);  // used by a contact study on MPI ranks; checked on every run
+  study_registry().read_run_limits(cfg);  // every study's limits (contact: gather_limit), on every run
   run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();
   run.fingerprint = case_fingerprint(run.summary.parameters);
