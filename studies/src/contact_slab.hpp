@@ -34,7 +34,7 @@ namespace wearscale::studies {
 inline constexpr std::size_t default_gather_limit = std::size_t{4096} * 4096;
 
 /// `[run] gather_limit` (grid points, at least 1), read and checked: every
-/// run reads it (the runner), the slab study uses it.
+/// run reads it (the contact study's Study::read_run_limits), the slab study uses it.
 long read_gather_limit(const Config& config);
 
 /// A [contact] case the slabs can run, every key read and checked.

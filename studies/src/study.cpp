@@ -119,6 +119,10 @@ std::vector<StudyInfo> StudyRegistry::list() const {
   return out;
 }
 
+void StudyRegistry::read_run_limits(const Config& inputs) const {
+  for (const auto& [n, f] : entries_) f()->read_run_limits(inputs);
+}
+
 std::string study_of(const Config& cfg) {
   const auto& registry = study_registry();
   if (cfg.has("case.study")) {
