@@ -31,7 +31,7 @@ nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
   const Config c = root.section("dem.patch_test");
   const bool unitless = spec.material.name == "table-6.4";
   spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
-  const double d_c = critical_diameter(spec.material);
+  const double d_c = critical_diameter(spec.material);  // d_c = 4γE/σ_m,N² (6.35)
   spec.d0 = c.has("d0") ? c.number("d0", Range::positive(), unitless ? units::dimensionless : units::length) : 0.6 * d_c;
   spec.load_along_c_axis = c.boolean_or("load_along_c_axis", false);
   spec.length = c.number_or("length", 25.0, Range::closed(PatchTestSpec::min_length, PatchTestSpec::max_length));
