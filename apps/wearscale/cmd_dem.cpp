@@ -9,7 +9,7 @@
 // wearscale dem oxide-asperity [CASE.toml] [--d0 D0] [--D D] [--pressure P] [--velocity V] [--slide S]
 //                          [--seed N] [--set KEY=VALUE]... [--out DIR] [--json]
 // Every study also takes [--resume DIR].
-// The DEM studies of studies/src/dem_study.cpp; each subcommand's flags are
+// The DEM studies of studies/src/dem_*_study.cpp; each subcommand's flags are
 // the aliases its schema declares.
 #include <vector>
 

@@ -15,6 +15,7 @@
 #include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/simulation.hpp"
 #include "wearscale/dem/trapped_particles.hpp"
+#include "wearscale/studies/study.hpp"
 
 namespace wearscale::python {
 
@@ -33,6 +34,15 @@ CohesiveMaterial material_of(const std::string& name, std::optional<double> pois
   if (poisson) m.poisson = *poisson;
   require_modelled(m);
   return m;
+}
+
+// The default of a study's case key that no spec struct holds (the sliding
+// cell's p_N): the study's schema's, so that a call and a case without the key agree.
+double case_default(const std::string& study, const std::string& key) {
+  const auto schema = studies::study_registry().create(study)->schema();
+  const auto* spec = studies::find_key(schema, key);
+  if (spec == nullptr || spec->fallback.empty()) throw std::logic_error(study + " declares no default for " + key);
+  return std::stod(spec->fallback);
 }
 
 py::dict targets(const CohesiveMaterial& m) {
@@ -260,6 +270,7 @@ py::dict trapped_particles(const CellArgs& cell, int count, double diameter, dou
 void bind_dem(py::module_& m) {
   // The defaults of the keyword arguments: the spec structs' own (one place for each).
   static const PatchTestSpec patch_defaults{};
+  static const ShearedJunctionSpec junction_defaults{};
   static const RoughShearSpec rough_defaults{};
   static const SlidingCellSpec cell_defaults{};
   static const TrappedParticlesSpec trapped_defaults{};
@@ -323,14 +334,18 @@ sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), wi
 C11, C12 and so E and nu; with strengths=True the walls are also pulled apart and sheared
 (sigma_mN, sigma_mT; minutes; strengths=False for E and nu alone). d0: particle size (default 0.6 d_c, in the material's units);
 length, width in d0; load in units of E; time_step in the critical step. Releases the GIL.)");
+  const Vec3& junction_box = junction_defaults.box;
   m.def("sheared_junction", &sheared_junction, py::arg("material") = "SiO2", py::arg("diameter") = 20e-9,
-        py::arg("d0") = 3e-9, py::arg("largest") = 7.5e-9, py::arg("box") = std::vector<double>{60e-9, 40e-9, 40e-9},
-        py::arg("velocity") = 10.0, py::arg("pressure") = 100e6, py::arg("sliding_distance") = 0.0,
-        py::arg("time_step") = 0.1, py::arg("record_every") = 100, py::arg("seed") = 1,
+        py::arg("d0") = 3e-9, py::arg("largest") = junction_defaults.largest,
+        py::arg("box") = std::vector<double>{junction_box.x, junction_box.y, junction_box.z},
+        py::arg("velocity") = junction_defaults.velocity, py::arg("pressure") = junction_defaults.pressure,
+        py::arg("sliding_distance") = junction_defaults.sliding_distance, py::arg("time_step") = junction_defaults.time_step,
+        py::arg("record_every") = junction_defaults.record_every, py::arg("seed") = junction_defaults.seed,
         py::arg("scaling_exponent") = 0.5,
         R"(The sheared junction of §6.3 (Figs. 6.18-6.20): two amorphous surfaces linked by a cylindrical
 junction of diameter D [m] (height D/2), the top wall slid at `velocity` [m/s] under `pressure` [Pa]
-over sliding_distance [m] (0: 1.5 D). d0, largest: mode and largest particle diameter [m]; box [m].
+over sliding_distance [m] (0: 1.5 D). d0, largest: mode and largest particle diameter [m]
+(largest 0: 1.25 d0; the thesis fixes 7.5 nm); box [m].
 Returns the verdict (detached into a rolling particle when D >= d* = 32 gamma G/sigma_mT^2 (6.65),
 else plastic), the force history arrays (time_s, sliding_m, tangential_force_N, normal_force_N,
 kinetic_energy_J) and the final particles (position, velocity (n, 3), radius, wall). Minutes for
@@ -355,7 +370,8 @@ the thesis' D = 20 nm.)");
         py::arg("shortest_wavelength") = rough_defaults.shortest_wavelength,
         py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
         py::arg("box") = std::vector<double>{150e-9, 10.5e-9, 60e-9}, py::arg("velocity") = cell_defaults.velocity,
-        py::arg("pressure") = 0.5e9, py::arg("sliding_distance") = 150e-9, py::arg("settle_distance") = 3e-9,
+        py::arg("pressure") = case_default("dem/rough_shear", "dem.rough_shear.pressure"),
+        py::arg("sliding_distance") = 150e-9, py::arg("settle_distance") = 3e-9,
         py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
         py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
         py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
@@ -383,7 +399,8 @@ defaults (the thesis' 50 d0 cell).)");
         py::arg("clearance") = trapped_defaults.clearance, py::arg("fit_from") = trapped_defaults.fit_from,
         py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
         py::arg("box") = std::vector<double>{300e-9, 10.5e-9, 54e-9}, py::arg("velocity") = cell_defaults.velocity,
-        py::arg("pressure") = 0.6e9, py::arg("sliding_distance") = 300e-9, py::arg("settle_distance") = 3e-9,
+        py::arg("pressure") = case_default("dem/trapped_particles", "dem.trapped_particles.pressure"),
+        py::arg("sliding_distance") = 300e-9, py::arg("settle_distance") = 3e-9,
         py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
         py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
         py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
@@ -391,7 +408,7 @@ defaults (the thesis' 50 d0 cell).)");
 diameter D [m] in a gap of height D (clearance in d0 from the surfaces), the top wall pressed at
 `pressure` [Pa] and slid at `velocity` [m/s]. The regime from the loose particles' rigid-body misfit
 over the slide from fit_from on: "rolling" (misfit < 1/3) or "shear band". Cell keys as
-rough_shear. Returns the friction, the worn first body and its band thickness [m], the misfits,
+rough_shear (largest 0: 1.25 d0). Returns the friction, the worn first body and its band thickness [m], the misfits,
 the history arrays and the final particles. Releases the GIL; minutes at the defaults.)");
 }
 
