@@ -538,11 +538,13 @@ class MacroPinOnDisc final : public Scale {
     ctx.h5().write_table("/macro/roughness", names, columns, units);
     std::vector<std::string> notes{
         "macro/bem-pin-on-disc: roughness of the worn surfaces against sliding distance",
-        "pin: over its worn region (the window's cells worn so far; before any wear, the cells in contact); disc: "
-        "over the worn cells of the resolved track's whole strip (before any wear, the strip cells under the "
-        "contact); nan for the averaged track's disc, which has no roughness along y",
-        "each after the region's least-squares plane is removed: Sa (1.4), Sq = h_RMS (1.5), h'_RMS (1.6) by "
-        "forward differences between neighbouring cells of the region (cell size/grid)"};
+        "pin: over its worn region (the window's cells worn so far; before any wear, the cells in contact), about "
+        "the region's least-squares quadric (the sphere's cap, the worn flat, to second order)",
+        "disc: over its wear track on the resolved track's strip (the columns across the track worn anywhere along "
+        "the circumference, whole; before any wear, the columns under the contact), about the track's profile (each "
+        "column's mean along the track); nan on the averaged track, whose disc holds no roughness along y",
+        "Sa (1.4), Sq = h_RMS (1.5), h'_RMS (1.6) by forward differences between neighbouring cells of the region "
+        "(cells of size/grid); nan for a region of fewer than 3 cells; region_cells: its cells"};
     for (const auto& [key, what] : surfaces_) notes.push_back(key + ": " + what);
     const auto csv = ctx.output_dir() / "roughness.csv";
     write_csv(csv, names, columns, units, notes);
@@ -555,7 +557,7 @@ class MacroPinOnDisc final : public Scale {
     const Grid2D g = Grid2D::square(s_.grid, s_.size);
     const auto whole = [](const std::vector<double>& h, std::size_t nx, std::size_t ny, double dx) {
       const std::vector<char> all(h.size(), 1);
-      return tribometer::region_roughness(h.data(), all.data(), nx, ny, dx, dx);
+      return tribometer::residual_roughness(h.data(), all.data(), nx, ny, dx, dx);  // zero mean already
     };
     if (!s_.pin_roughness.empty()) {
       const auto r = whole(s_.pin_roughness, g.nx, g.ny, g.dx());

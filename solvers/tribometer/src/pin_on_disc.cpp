@@ -419,68 +419,113 @@ void set_roughness_values(PinOnDiscSample& x, const double* v) {
   x.disc_roughness = {v[4], v[5], v[6], v[7]};
 }
 
-RegionRoughness region_roughness(const double* h, const char* in, std::size_t nx, std::size_t ny, double dx,
-                                 double dy) {
+RegionRoughness residual_roughness(const double* e, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                   double dy) {
   RegionRoughness r;
-  double n = 0.0, sx = 0.0, sy = 0.0, sh = 0.0;
-  for (std::size_t i = 0; i < nx; ++i)
-    for (std::size_t j = 0; j < ny; ++j)
-      if (in[i * ny + j]) {
-        n += 1.0;
-        sx += static_cast<double>(i) * dx;
-        sy += static_cast<double>(j) * dy;
-        sh += h[i * ny + j];
-      }
-  r.cells = n;
-  if (n < 3.0) return r;
-  const double mx = sx / n, my = sy / n, mh = sh / n;
-  double xx = 0.0, xy = 0.0, yy = 0.0, xh = 0.0, yh = 0.0;
-  for (std::size_t i = 0; i < nx; ++i)
-    for (std::size_t j = 0; j < ny; ++j)
-      if (in[i * ny + j]) {
-        const double x = static_cast<double>(i) * dx - mx, y = static_cast<double>(j) * dy - my;
-        const double z = h[i * ny + j] - mh;
-        xx += x * x;
-        xy += x * y;
-        yy += y * y;
-        xh += x * z;
-        yh += y * z;
-      }
-  // The region's least-squares plane (the form: a worn flat, a tilt); none for collinear cells.
-  const double det = xx * yy - xy * xy;
-  double bx = 0.0, by = 0.0;
-  if (det > 1e-9 * xx * yy) {
-    bx = (xh * yy - yh * xy) / det;
-    by = (yh * xx - xh * xy) / det;
-  }
-  double sa = 0.0, sq = 0.0;
-  for (std::size_t i = 0; i < nx; ++i)
-    for (std::size_t j = 0; j < ny; ++j)
-      if (in[i * ny + j]) {
-        const double e = h[i * ny + j] - mh - bx * (static_cast<double>(i) * dx - mx) -
-                         by * (static_cast<double>(j) * dy - my);
-        sa += std::abs(e);
-        sq += e * e;
-      }
-  r.sa = sa / n;
-  r.sq = std::sqrt(sq / n);
-  double gx = 0.0, gy = 0.0, cx = 0.0, cy = 0.0;
+  double n = 0.0, sa = 0.0, sq = 0.0, gx = 0.0, gy = 0.0, cx = 0.0, cy = 0.0;
   for (std::size_t i = 0; i < nx; ++i)
     for (std::size_t j = 0; j < ny; ++j) {
-      if (!in[i * ny + j]) continue;
-      if (i + 1 < nx && in[(i + 1) * ny + j]) {
-        const double d = (h[(i + 1) * ny + j] - h[i * ny + j]) / dx - bx;
+      const std::size_t k = i * ny + j;
+      if (!in[k]) continue;
+      n += 1.0;
+      sa += std::abs(e[k]);
+      sq += e[k] * e[k];
+      if (i + 1 < nx && in[k + ny]) {
+        const double d = (e[k + ny] - e[k]) / dx;
         gx += d * d;
         cx += 1.0;
       }
-      if (j + 1 < ny && in[i * ny + j + 1]) {
-        const double d = (h[i * ny + j + 1] - h[i * ny + j]) / dy - by;
+      if (j + 1 < ny && in[k + 1]) {
+        const double d = (e[k + 1] - e[k]) / dy;
         gy += d * d;
         cy += 1.0;
       }
     }
+  r.cells = n;
+  if (n < 3.0) return r;
+  r.sa = sa / n;
+  r.sq = std::sqrt(sq / n);
   if (cx > 0.0 || cy > 0.0) r.hprime_rms = std::sqrt((cx > 0.0 ? gx / cx : 0.0) + (cy > 0.0 ? gy / cy : 0.0));
   return r;
+}
+
+RegionRoughness region_roughness(const double* h, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                 double dy) {
+  // The form: the least-squares quadric a + bx + cy + dx² + exy + fy² over the region (coordinates centred
+  // and scaled to the region's extent), a plane for fewer than 6 cells, the mean for fewer than 3.
+  double n = 0.0, sx = 0.0, sy = 0.0;
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        n += 1.0;
+        sx += static_cast<double>(i);
+        sy += static_cast<double>(j);
+      }
+  std::vector<double> e(nx * ny, 0.0);
+  if (n < 1.0) return residual_roughness(e.data(), in, nx, ny, dx, dy);
+  const double mx = sx / n, my = sy / n;
+  double ex = 1.0, ey = 1.0;  // half-extents, in cells
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        ex = std::max(ex, std::abs(static_cast<double>(i) - mx));
+        ey = std::max(ey, std::abs(static_cast<double>(j) - my));
+      }
+  const int terms = n >= 6.0 ? 6 : n >= 3.0 ? 3 : 1;
+  const auto basis = [&](std::size_t i, std::size_t j, double* f) {
+    const double x = (static_cast<double>(i) - mx) / ex, y = (static_cast<double>(j) - my) / ey;
+    f[0] = 1.0;
+    f[1] = x;
+    f[2] = y;
+    f[3] = x * x;
+    f[4] = x * y;
+    f[5] = y * y;
+  };
+  double m[6][7] = {};
+  double f[6];
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        basis(i, j, f);
+        for (int a = 0; a < terms; ++a) {
+          for (int b = 0; b < terms; ++b) m[a][b] += f[a] * f[b];
+          m[a][6] += f[a] * h[i * ny + j];
+        }
+      }
+  // Gaussian elimination with partial pivoting; a term the region cannot determine (collinear cells) is dropped.
+  double c[6] = {};
+  bool used[6] = {};
+  {
+    int row = 0;
+    int pivot_col[6] = {};
+    for (int col = 0; col < terms && row < terms; ++col) {
+      int best = row;
+      for (int r = row + 1; r < terms; ++r)
+        if (std::abs(m[r][col]) > std::abs(m[best][col])) best = r;
+      if (std::abs(m[best][col]) <= 1e-10 * std::max(1.0, std::abs(m[0][0]))) continue;
+      for (int k = 0; k < 7; ++k) std::swap(m[row][k], m[best][k]);
+      for (int r = 0; r < terms; ++r) {
+        if (r == row) continue;
+        const double q = m[r][col] / m[row][col];
+        for (int k = 0; k < 7; ++k)
+          if (k < terms || k == 6) m[r][k] -= q * m[row][k];
+      }
+      pivot_col[row] = col;
+      used[col] = true;
+      ++row;
+    }
+    for (int r = 0; r < row; ++r) c[pivot_col[r]] = m[r][6] / m[r][pivot_col[r]];
+  }
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        basis(i, j, f);
+        double form = 0.0;
+        for (int a = 0; a < terms; ++a)
+          if (used[a]) form += c[a] * f[a];
+        e[i * ny + j] = h[i * ny + j] - form;
+      }
+  return residual_roughness(e.data(), in, nx, ny, dx, dy);
 }
 
 void PinOnDisc::measure_roughness(double s, PinOnDiscSample& out) const {
@@ -497,20 +542,32 @@ void PinOnDisc::measure_roughness(double s, PinOnDiscSample& out) const {
   out.pin_roughness = region_roughness(h.data(), in.data(), g.nx, g.ny, g.dx(), g.dy());
   out.disc_roughness = {};
   if (track_ == 0) return;
-  in.assign(disc_.size(), 0);
+  // The disc's wear track: the columns (x) worn anywhere along the circumference, whole; before any
+  // wear, the columns under the contact. Its form is the profile across the track (each column's mean
+  // along it, the averaged track's disc); the roughness is what varies along the track about it.
+  std::vector<char> band(g.nx, 0);
   worn = false;
-  for (std::size_t k = 0; k < disc_.size(); ++k)
-    worn |= (in[k] = disc_[k] < (disc0_.empty() ? 0.0 : disc0_[k])) != 0;
-  if (!worn) {
-    const double at = s / g.dx();
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t m = 0; m < track_ && !band[i]; ++m)
+      band[i] = disc_[i * track_ + m] < (disc0_.empty() ? 0.0 : disc0_[i * track_ + m]);
+  for (const char b : band) worn |= b != 0;
+  if (!worn)
     for (std::size_t i = 0; i < g.nx; ++i)
-      for (std::size_t j = 0; j < g.ny; ++j)
-        if (p(i, j) > 0.0) {
-          const double m = std::fmod(std::round(static_cast<double>(j) + at), static_cast<double>(track_));
-          in[i * track_ + static_cast<std::size_t>(m)] = 1;
-        }
+      for (std::size_t j = 0; j < g.ny && !band[i]; ++j) band[i] = p(i, j) > 0.0;
+  (void)s;
+  std::vector<double> e(disc_.size(), 0.0);
+  in.assign(disc_.size(), 0);
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    if (!band[i]) continue;
+    double mean = 0.0;
+    for (std::size_t m = 0; m < track_; ++m) mean += disc_[i * track_ + m];
+    mean /= static_cast<double>(track_);
+    for (std::size_t m = 0; m < track_; ++m) {
+      e[i * track_ + m] = disc_[i * track_ + m] - mean;
+      in[i * track_ + m] = 1;
+    }
   }
-  out.disc_roughness = region_roughness(disc_.data(), in.data(), g.nx, track_, g.dx(), g.dx());
+  out.disc_roughness = residual_roughness(e.data(), in.data(), g.nx, track_, g.dx(), g.dx());
 }
 
 void PinOnDisc::save(CheckpointState& state) const {

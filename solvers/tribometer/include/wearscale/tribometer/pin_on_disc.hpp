@@ -102,9 +102,9 @@ struct PinOnDiscSetup {
   bool tilt_in_layer_test() const { return layer_test == LayerTest::Tilted && nonplanar_slope > 0.0; }
 };
 
-/// Roughness of a surface inside a region, after the region's least-squares plane is
-/// removed: Sa (1.4), Sq = h_RMS (1.5), and h'_RMS (1.6) by forward differences over
-/// the pairs of neighbouring cells both inside the region. NaN when not measured.
+/// Roughness of a surface inside a region, its form removed: Sa (1.4), Sq = h_RMS
+/// (1.5), and h'_RMS (1.6) by forward differences over the pairs of neighbouring
+/// cells both inside the region. NaN when not measured (or fewer than 3 cells).
 struct RegionRoughness {
   double sa = std::numeric_limits<double>::quiet_NaN();
   double sq = std::numeric_limits<double>::quiet_NaN();
@@ -112,8 +112,13 @@ struct RegionRoughness {
   double cells = 0.0;  ///< cells in the region
 };
 
-/// The roughness of heights h (nx × ny, index i·ny + j, cells dx × dy) over the cells
-/// with in[k] != 0. Fewer than 3 cells: NaN (no plane); collinear cells: their mean removed.
+/// The roughness of residual heights e (their form already removed; nx × ny, index
+/// i·ny + j, cells dx × dy) over the cells with in[k] != 0.
+RegionRoughness residual_roughness(const double* e, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                   double dy);
+/// The same of heights h about their form over the region: its least-squares
+/// quadric (a sphere's cap, a worn flat or a groove across it, to second order),
+/// a plane for fewer than 6 cells.
 RegionRoughness region_roughness(const double* h, const char* in, std::size_t nx, std::size_t ny, double dx,
                                  double dy);
 
@@ -136,9 +141,11 @@ struct PinOnDiscSample {
   int iterations = 0;              ///< BEM iterations of this step's solve
   int grooves = 0;                 ///< grooves: separate bands of x where the disc is worn through the layer
   /// With setup().measure_roughness: the pin's roughness over its worn region (the
-  /// cells worn so far; before any wear, the cells in contact), and the disc's over
-  /// the worn cells of the resolved track's strip (before any wear, the strip cells
-  /// under the contact). The averaged track's disc has no roughness: NaN.
+  /// cells worn so far; before any wear, the cells in contact) about its quadric form;
+  /// the disc's over its wear track on the resolved strip (the columns worn anywhere
+  /// along the circumference, whole; before any wear, the columns under the contact)
+  /// about the track's profile (each column's mean along it). The averaged track's
+  /// disc holds no roughness: NaN.
   RegionRoughness pin_roughness{}, disc_roughness{};
 };
 
