@@ -68,7 +68,7 @@ TEST(RoughPinOnDiscCli, ASurfaceWrittenToAFileIsTheSurfaceGeneratedInMemory) {
   ASSERT_EQ(g.status, 0) << g.err;
   const fs::path h5 = work / "surf" / "surface.h5";
   ASSERT_TRUE(fs::exists(h5));
-  const RealField h = wearscale::bem::read_topography_h5(h5);
+  const wearscale::RealField h = wearscale::bem::read_topography_h5(h5);
   {
     std::ofstream text(work / "surface.txt");
     text << fmt::format("# lx = {:.17g}\n# ly = {:.17g}\n", h.grid().lx, h.grid().ly);
@@ -151,4 +151,4 @@ INSTANTIATE_TEST_SUITE_P(
         BadSurface{"rough_disc_on_the_averaged_track",
                    "--set 'scale.macro.disc_surface={hurst = 0.8, k_l = 4, k_s = 16, sa = \"0.5 um\"}'",
                    "scale.macro.disc_surface", "track = \"resolved\""}),
-    [](const auto& info) { return info.param.name; });
+    [](const auto& p) { return p.param.name; });
