@@ -76,7 +76,7 @@ TEST(RoughPinOnDiscCli, ASurfaceWrittenToAFileIsTheSurfaceGeneratedInMemory) {
       for (std::size_t j = 0; j < h.grid().ny; ++j) text << fmt::format("{:.17g}{}", h(i, j), j + 1 < h.grid().ny ? " " : "\n");
   }
   const auto memory = run_json(pin_on_disc + small + " --set 'scale.macro.pin_surface={" + spectrum +
-                               ", sa = \"0.5 um\"}' --out memory");
+                               ", sa = 5e-7}' --out memory");
   const auto from_h5 = run_json(pin_on_disc + small +
                                 " --set 'scale.macro.pin_surface={file = \"surf/surface.h5\", level = \"mean\"}' --out h5");
   const auto from_text =
