@@ -95,6 +95,21 @@ TEST(RoughPinOnDiscCli, ASurfaceWrittenToAFileIsTheSurfaceGeneratedInMemory) {
   EXPECT_NEAR(result(memory, "pin_surface_sq"), 0.5e-6 * std::sqrt(std::numbers::pi / 2.0), 0.15 * 0.5e-6);
 }
 
+TEST(RoughPinOnDiscCli, AFinerFileIsAveragedOverEachCell) {
+  // 64 points over 2 mm onto 32 cells: each cell the mean of 2 × 2 samples. The averaging keeps the long
+  // wavelengths (k = 4 to 16: 8 to 2 cells) and damps the short ones, so the heights' RMS drops, a little.
+  const auto g = run_cli("surface generate --n 64 --size '2 mm' --hurst 0.8 --kl 4 --ks 16 --seed 2 --sa 5e-7 "
+                         "--out fine --json",
+                         work);
+  ASSERT_EQ(g.status, 0) << g.err;
+  const double file_sq = nlohmann::json::parse(g.out)["results"]["h_rms"]["value"].get<double>();
+  const auto j = run_json(pin_on_disc + " --set scale.macro.grid=32 --set scale.macro.distance=0.001 "
+                          "--set 'scale.macro.pin_surface={file = \"fine/surface.h5\", level = \"mean\"}' --out fine-run");
+  ASSERT_FALSE(j.empty());
+  EXPECT_LT(result(j, "pin_surface_sq"), file_sq);
+  EXPECT_GT(result(j, "pin_surface_sq"), 0.9 * file_sq);
+}
+
 TEST(RoughPinOnDiscCli, WearSmoothsTheRoughPinInItsScarAndTheTableSaysSo) {
   // A rough pin (Sa 0.5 µm at 62.5-250 µm wavelengths) on bulk SiO2 over 0.05 m: the scar's
   // asperities are worn down, so the scar's Sq at the end is below the surface's.
