@@ -521,7 +521,7 @@ class MacroPinOnDisc final : public Scale {
   }
 
   // The roughness of the worn surfaces against sliding distance (a rough run): roughness.csv,
-  // /macro/roughness, and the first and last values as headline results.
+  // /macro/roughness, and the initial surfaces' and the worn surfaces' final roughness as headline results.
   void report_roughness(RunContext& ctx, const std::vector<tribometer::PinOnDiscSample>& x) const {
     std::vector<double> s, values[8];
     for (const auto& e : x) {
