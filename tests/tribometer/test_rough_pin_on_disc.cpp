@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <random>
 
 #include "thesis_pin_on_disc.hpp"
 #include "wearscale/core/errors.hpp"
+#include "wearscale/io/checkpoint.hpp"
 
 namespace wearscale::tribometer {
 namespace {
@@ -93,6 +95,57 @@ TEST(RoughPinOnDisc, TheResolvedStripHoldsTheDiscsWornVolumeFromItsRoughStart) {
   EXPECT_TRUE(std::isfinite(samples.back().pin_roughness.sq));
   EXPECT_TRUE(std::isfinite(samples.back().disc_roughness.sq));
   EXPECT_GT(samples.back().disc_roughness.cells, 0.0);
+}
+
+TEST(RoughPinOnDisc, AnAdaptiveRoughRunFromAStateSavedAtARestartEndsBitForBitWithItsRoughness) {
+  // A rough pin on 0.5 µm of oxide (averaged track), stopped after its 10th step at a restart and resumed
+  // in a fresh model: every sample, its roughness included, as in the uninterrupted run.
+  auto setup = thesis_setup(0.5e-6);
+  setup.grid = 32;
+  setup.distance = 0.03;
+  const double dx = setup.size / 32.0;
+  setup.pin_roughness = field(32, 32, dx, [&](double x, double y) {
+    return 3e-7 * std::cos(2.0 * std::numbers::pi * 5.0 * x / setup.size) *
+           std::sin(2.0 * std::numbers::pi * 3.0 * y / setup.size);
+  });
+  setup.measure_roughness = true;
+  AdaptiveOptions options;
+  options.restart_every = 5;
+  PinOnDisc whole(setup);
+  std::vector<PinOnDiscSample> reference;
+  run_adaptive(whole, options, [&](const PinOnDiscSample& x) { reference.push_back(x); });
+  struct Stop {};
+  PinOnDisc first(setup);
+  std::vector<PinOnDiscSample> samples;
+  CheckpointState saved;
+  AdaptiveStatus at;
+  try {
+    run_adaptive(first, options, [&](const PinOnDiscSample& x) { samples.push_back(x); },
+                 [&](const AdaptiveStatus& status) {
+                   if (!status.segment_end || status.steps < 10) return;
+                   first.save(saved);
+                   at = status;
+                   throw Stop{};
+                 });
+    FAIL() << "the run should have stopped at step 10";
+  } catch (const Stop&) {
+  }
+  PinOnDisc second(setup);
+  second.restore(saved);
+  AdaptiveOptions resume = options;
+  resume.initial_step = at.next_step;
+  resume.steps_done = at.steps;
+  resume.observe_start = false;
+  run_adaptive(second, resume, [&](const PinOnDiscSample& x) { samples.push_back(x); });
+  ASSERT_EQ(samples.size(), reference.size());
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    ASSERT_TRUE(same(samples[k].friction, reference[k].friction)) << k;
+    ASSERT_TRUE(same(samples[k].pin_wear, reference[k].pin_wear)) << k;
+    ASSERT_TRUE(same(samples[k].pin_roughness.sq, reference[k].pin_roughness.sq)) << k;
+    ASSERT_TRUE(same(samples[k].pin_roughness.hprime_rms, reference[k].pin_roughness.hprime_rms)) << k;
+  }
+  EXPECT_TRUE(std::isfinite(reference.back().pin_roughness.sq));
 }
 
 TEST(RoughPinOnDisc, ARoughDiscOnTheAveragedTrackIsRefused) {
