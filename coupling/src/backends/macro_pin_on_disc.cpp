@@ -9,6 +9,7 @@
 
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
+#include "backends/pin_on_disc_surfaces.hpp"
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/progress.hpp"
@@ -113,6 +114,29 @@ class MacroPinOnDisc final : public Scale {
                   c.full_key("track"), s_.explicit_step() / s_.velocity, s_.size / static_cast<double>(s_.grid),
                   s_.velocity, s_.time_step);
     }
+    // The initial roughness of the pin (over its window) and of the disc (over the
+    // resolved track's strip): a measured file or a generated surface (docs/pin_on_disc.md).
+    if (c.has("pin_surface")) {
+      auto surface = read_initial_surface(c, "pin_surface", Grid2D::square(s_.grid, s_.size), s_.size);
+      s_.pin_roughness = std::move(surface.heights);
+      surfaces_.emplace_back("pin_surface", std::move(surface.description));
+    }
+    if (c.has("disc_surface")) {
+      if (s_.track != tribometer::Track::Resolved)
+        throw c.error("disc_surface",
+                      "the averaged track's disc is one height per x column, invariant along the sliding "
+                      "direction: it holds no roughness along it (a rough surface's mean along y is all but flat, "
+                      "so the rough disc would be a smooth one)",
+                      "track = \"resolved\" (the disc stored over the whole circumference), or no disc_surface");
+      const std::size_t cells = s_.track_cells();
+      const double cell = s_.size / static_cast<double>(s_.grid);
+      auto surface = read_initial_surface(c, "disc_surface",
+                                          Grid2D(s_.grid, cells, s_.size, static_cast<double>(cells) * cell), s_.size);
+      s_.disc_roughness = std::move(surface.heights);
+      surfaces_.emplace_back("disc_surface", std::move(surface.description));
+    }
+    s_.measure_roughness = !surfaces_.empty();
+    s_.validate();
     // The moving average of friction.csv and friction.png (Fig. 9.23): one
     // tilt period when there is a tilt, else a twentieth of the distance.
     const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
@@ -160,6 +184,14 @@ class MacroPinOnDisc final : public Scale {
                                      saved->text("integrator"), integrator_));
       model.restore(*saved);  // refused unless a state a run reaches (tribometer/state_bounds.hpp)
       samples = load_samples(*saved, s_, model.distance());
+      if (s_.measure_roughness) {
+        if (!saved->has("samples/roughness") || saved->array("samples/roughness").size() != 8 * samples.size())
+          throw InputError(fmt::format("{}: the samples hold no roughness of a rough run; delete the checkpoint to "
+                                       "start afresh",
+                                       saved->origin));
+        for (std::size_t r = 0; r < samples.size(); ++r)
+          tribometer::set_roughness_values(samples[r], saved->array("samples/roughness").data() + 8 * r);
+      }
       snapshots = load_snapshots(*saved);
       // The counters as the samples are: whole, within what the run can reach, checked before they are integers.
       for (const std::string& problem :
@@ -185,6 +217,14 @@ class MacroPinOnDisc final : public Scale {
       model.save(st);
       st.put_text("integrator", integrator_);
       save_samples(st, samples);
+      if (s_.measure_roughness) {
+        std::vector<double> values;
+        for (const auto& e : samples) {
+          const auto v = tribometer::roughness_values(e);
+          values.insert(values.end(), v.begin(), v.end());
+        }
+        st.put("samples/roughness", values);
+      }
       save_snapshots(st, snapshots);
       st.put("snapshot_counter", static_cast<double>(n));
       st.put("adaptive_steps", static_cast<double>(adaptive_steps));
@@ -294,10 +334,11 @@ class MacroPinOnDisc final : public Scale {
   void write_disc(RunContext& ctx, const tribometer::PinOnDisc& model) const {
     const Grid2D& g = model.grid();
     const auto profile = model.disc_column_means();
+    const auto initial = model.disc_initial_column_means();  // zeros for a smooth disc
     std::vector<double> x(g.nx), depth(g.nx), through(g.nx);
     for (std::size_t i = 0; i < g.nx; ++i) {
       x[i] = g.x(i) - 0.5 * g.lx;
-      depth[i] = 0.0 - profile[i];  // an unworn cell 0, not -0
+      depth[i] = initial[i] - profile[i];  // an unworn cell 0, not -0
       through[i] = !layered() ? std::nan("") : depth[i] > s_.layer_thickness ? 1.0 : 0.0;
     }
     ctx.h5().write_table("/macro/final/disc_profile", {"x", "worn_depth", "through_layer"}, {x, depth, through},
@@ -438,6 +479,7 @@ class MacroPinOnDisc final : public Scale {
                            "at s = 0",
                            s_.normal_load)});
     ctx.add_file(csv);
+    if (s_.measure_roughness) report_roughness(ctx, x);
 
     const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
     const double first = s.front(), last = s.back();
@@ -478,7 +520,68 @@ class MacroPinOnDisc final : public Scale {
       }
   }
 
+  // The roughness of the worn surfaces against sliding distance (a rough run): roughness.csv,
+  // /macro/roughness, and the initial surfaces' and the worn surfaces' final roughness as headline results.
+  void report_roughness(RunContext& ctx, const std::vector<tribometer::PinOnDiscSample>& x) const {
+    std::vector<double> s, values[8];
+    for (const auto& e : x) {
+      s.push_back(e.distance);
+      const auto v = tribometer::roughness_values(e);
+      for (int k = 0; k < 8; ++k) values[k].push_back(v[static_cast<std::size_t>(k)]);
+    }
+    const std::vector<std::string> names{"distance",       "pin_sa",      "pin_sq",       "pin_hprime_rms",
+                                         "pin_region_cells", "disc_sa",   "disc_sq",      "disc_hprime_rms",
+                                         "disc_region_cells"};
+    const std::vector<std::string> units{"m", "m", "m", "1", "1", "m", "m", "1", "1"};
+    std::vector<std::span<const double>> columns{s};
+    for (const auto& v : values) columns.emplace_back(v);
+    ctx.h5().write_table("/macro/roughness", names, columns, units);
+    std::vector<std::string> notes{
+        "macro/bem-pin-on-disc: roughness of the worn surfaces against sliding distance",
+        "pin: over its worn region (the window's cells worn so far; before any wear, the cells in contact), about "
+        "the region's least-squares quadric (the sphere's cap, the worn flat, to second order)",
+        "disc: over its wear track on the resolved track's strip (the columns across the track worn anywhere along "
+        "the circumference, whole; before any wear, the columns under the contact), about the track's profile (each "
+        "column's mean along the track); nan on the averaged track, whose disc holds no roughness along y",
+        "Sa (1.4), Sq = h_RMS (1.5), h'_RMS (1.6) by forward differences between neighbouring cells of the region "
+        "(cells of size/grid); nan for a region of fewer than 3 cells; region_cells: its cells"};
+    for (const auto& [key, what] : surfaces_) notes.push_back(key + ": " + what);
+    const auto csv = ctx.output_dir() / "roughness.csv";
+    write_csv(csv, names, columns, units, notes);
+    ctx.add_file(csv);
+    for (const auto& [key, what] : surfaces_) ctx.note(key, what);
+    // A figure is reported where it is defined (a region of at least 3 cells).
+    const auto report = [&](const std::string& name, double value, const std::string& unit, const std::string& what) {
+      if (std::isfinite(value)) ctx.report(name, value, unit, what);
+    };
+    const Grid2D g = Grid2D::square(s_.grid, s_.size);
+    const auto whole = [](const std::vector<double>& h, std::size_t nx, std::size_t ny, double dx) {
+      const std::vector<char> all(h.size(), 1);
+      return tribometer::residual_roughness(h.data(), all.data(), nx, ny, dx, dx);  // zero mean already
+    };
+    if (!s_.pin_roughness.empty()) {
+      const auto r = whole(s_.pin_roughness, g.nx, g.ny, g.dx());
+      report("pin_surface_sq", r.sq, "m", "RMS height Sq of the pin's initial roughness over the window");
+      report("pin_surface_hprime_rms", r.hprime_rms, "1",
+             "RMS slope h'_RMS of the pin's initial roughness over the window, by differences between cells");
+    }
+    if (!s_.disc_roughness.empty()) {
+      const auto r = whole(s_.disc_roughness, g.nx, s_.track_cells(), g.dx());
+      report("disc_surface_sq", r.sq, "m", "RMS height Sq of the disc's initial roughness over the track");
+      report("disc_surface_hprime_rms", r.hprime_rms, "1",
+             "RMS slope h'_RMS of the disc's initial roughness over the track, by differences between cells");
+    }
+    const auto& last = x.back();
+    report("pin_sq_final", last.pin_roughness.sq, "m", "RMS height Sq of the pin over its worn region at the end");
+    report("pin_hprime_rms_final", last.pin_roughness.hprime_rms, "1",
+           "RMS slope h'_RMS of the pin over its worn region at the end");
+    report("disc_sq_final", last.disc_roughness.sq, "m", "RMS height Sq of the disc over its worn track at the end");
+    report("disc_hprime_rms_final", last.disc_roughness.hprime_rms, "1",
+           "RMS slope h'_RMS of the disc over its worn track at the end");
+  }
+
   Provenance provenance_;
+  std::vector<std::pair<std::string, std::string>> surfaces_;  // key, what the surface is
   std::string pin_, disc_, layer_;
   tribometer::PinOnDiscSetup s_;
   std::string integrator_ = "explicit";

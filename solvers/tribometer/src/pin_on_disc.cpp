@@ -55,6 +55,21 @@ void PinOnDiscSetup::validate() const {
   if (track == Track::Resolved)
     require(static_cast<double>(grid) * path_length / size <= 1e6, "path_length", path_length,
             "at most 10⁶ track cells along the circumference (resolved track)");
+  if (!pin_roughness.empty() && pin_roughness.size() != grid * grid)
+    throw InputError(fmt::format("pin-on-disc: the pin's roughness has {} heights; allowed: grid² = {}",
+                                 pin_roughness.size(), grid * grid));
+  if (!disc_roughness.empty()) {
+    if (track != Track::Resolved)
+      throw InputError("pin-on-disc: a rough disc needs track = \"resolved\": the averaged track's disc is one "
+                       "height per x column, invariant along the sliding direction, and holds no roughness along it");
+    if (disc_roughness.size() != grid * track_cells())
+      throw InputError(fmt::format("pin-on-disc: the disc's roughness has {} heights; allowed: grid × track cells "
+                                   "= {} × {}",
+                                   disc_roughness.size(), grid, track_cells()));
+  }
+  for (const auto* heights : {&pin_roughness, &disc_roughness})
+    for (const double v : *heights)
+      if (!std::isfinite(v)) throw InputError(fmt::format("pin-on-disc: a roughness height is {}; allowed: finite", v));
 }
 
 void PinOnDiscSetup::validate_laws() const {
@@ -99,6 +114,12 @@ PinOnDisc::PinOnDisc(const PinOnDiscSetup& setup)
       const double x = g.x(i) - 0.5 * g.lx, y = g.y(j) - 0.5 * g.ly;
       pin_(i, j) = setup.pin_radius - std::sqrt(r2max - x * x - y * y);  // spherical pin, summit at the centre
     }
+  // The initial roughness on the unworn surfaces (z_pin is measured into the pin: a
+  // rough height h sticks out of the pin by h, so it is subtracted).
+  if (!setup.pin_roughness.empty())
+    for (std::size_t k = 0; k < pin_.size(); ++k) pin_[k] -= setup.pin_roughness[k];
+  if (!setup.disc_roughness.empty()) disc_ = disc0_ = setup.disc_roughness;
+  if (setup.measure_roughness) pin0_.assign(pin_.begin(), pin_.end());
 }
 
 
@@ -137,7 +158,9 @@ void PinOnDisc::classify(double s, const double* disc, std::vector<char>& layer)
     const double x = g.x(i) - 0.5 * g.lx;
     for (std::size_t j = 0; j < g.ny; ++j) {
       const double y = g.y(j) - 0.5 * g.ly;
-      const double depth = -(disc_height(disc, i, j, s) + tx * x + ty * y);  // worn depth (with the tilt if "tilted")
+      // Worn depth (with the tilt if "tilted"), from the initial height of a rough disc (its oxide follows it).
+      const double depth = disc0_.empty() ? -(disc_height(disc, i, j, s) + tx * x + ty * y)
+                                          : disc_height(disc0_.data(), i, j, s) - (disc_height(disc, i, j, s) + tx * x + ty * y);
       layer[g.index(i, j)] = h > 0.0 && depth < h;  // still inside the oxide
     }
   }
@@ -166,6 +189,8 @@ int PinOnDisc::count_grooves(const double* disc) const {
       z = disc[i];
     } else {
       for (std::size_t m = 0; m < track_; ++m) z += disc[i * track_ + m];
+      if (!disc0_.empty())
+        for (std::size_t m = 0; m < track_; ++m) z -= disc0_[i * track_ + m];
       z /= static_cast<double>(track_);
     }
     const bool through = -z > h;
@@ -256,6 +281,7 @@ void PinOnDisc::rates(double s, PinOnDiscSample& out, std::vector<double>* pin_r
   out.grooves = count_grooves(disc_.data());
   last_pin_volume_rate_ = pin_volume * g.cell_area();
   last_disc_volume_rate_ = disc_volume * g.cell_area();
+  if (setup_.measure_roughness) measure_roughness(s, out);
   if (!std::isfinite(out.friction) || !std::isfinite(last_pin_volume_rate_) || !std::isfinite(last_disc_volume_rate_))
     throw NumericalError(kModel, solves_, "friction and wear rates",
                          fmt::format("μ = {}, dV_pin/ds = {}, dV_disc/ds = {} at s = {:g} m", out.friction,
@@ -372,6 +398,178 @@ std::vector<double> PinOnDisc::disc_column_means() const {
   return out;
 }
 
+std::vector<double> PinOnDisc::disc_initial_column_means() const {
+  std::vector<double> out(grid().nx, 0.0);
+  if (disc0_.empty()) return out;
+  for (std::size_t i = 0; i < grid().nx; ++i) {
+    for (std::size_t m = 0; m < track_; ++m) out[i] += disc0_[i * track_ + m];
+    out[i] /= static_cast<double>(track_);
+  }
+  return out;
+}
+
+std::vector<double> roughness_values(const PinOnDiscSample& x) {
+  const auto& a = x.pin_roughness;
+  const auto& b = x.disc_roughness;
+  return {a.sa, a.sq, a.hprime_rms, a.cells, b.sa, b.sq, b.hprime_rms, b.cells};
+}
+
+void set_roughness_values(PinOnDiscSample& x, const double* v) {
+  x.pin_roughness = {v[0], v[1], v[2], v[3]};
+  x.disc_roughness = {v[4], v[5], v[6], v[7]};
+}
+
+RegionRoughness residual_roughness(const double* e, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                   double dy) {
+  RegionRoughness r;
+  double n = 0.0, sa = 0.0, sq = 0.0, gx = 0.0, gy = 0.0, cx = 0.0, cy = 0.0;
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j) {
+      const std::size_t k = i * ny + j;
+      if (!in[k]) continue;
+      n += 1.0;
+      sa += std::abs(e[k]);
+      sq += e[k] * e[k];
+      if (i + 1 < nx && in[k + ny]) {
+        const double d = (e[k + ny] - e[k]) / dx;
+        gx += d * d;
+        cx += 1.0;
+      }
+      if (j + 1 < ny && in[k + 1]) {
+        const double d = (e[k + 1] - e[k]) / dy;
+        gy += d * d;
+        cy += 1.0;
+      }
+    }
+  r.cells = n;
+  if (n < 3.0) return r;
+  r.sa = sa / n;
+  r.sq = std::sqrt(sq / n);
+  if (cx > 0.0 || cy > 0.0) r.hprime_rms = std::sqrt((cx > 0.0 ? gx / cx : 0.0) + (cy > 0.0 ? gy / cy : 0.0));
+  return r;
+}
+
+RegionRoughness region_roughness(const double* h, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                 double dy) {
+  // The form: the least-squares quadric a + bx + cy + dx² + exy + fy² over the region (coordinates centred
+  // and scaled to the region's extent), a plane for fewer than 6 cells, the mean for fewer than 3.
+  double n = 0.0, sx = 0.0, sy = 0.0;
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        n += 1.0;
+        sx += static_cast<double>(i);
+        sy += static_cast<double>(j);
+      }
+  std::vector<double> e(nx * ny, 0.0);
+  if (n < 1.0) return residual_roughness(e.data(), in, nx, ny, dx, dy);
+  const double mx = sx / n, my = sy / n;
+  double ex = 1.0, ey = 1.0;  // half-extents, in cells
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        ex = std::max(ex, std::abs(static_cast<double>(i) - mx));
+        ey = std::max(ey, std::abs(static_cast<double>(j) - my));
+      }
+  const int terms = n >= 6.0 ? 6 : n >= 3.0 ? 3 : 1;
+  const auto basis = [&](std::size_t i, std::size_t j, double* f) {
+    const double x = (static_cast<double>(i) - mx) / ex, y = (static_cast<double>(j) - my) / ey;
+    f[0] = 1.0;
+    f[1] = x;
+    f[2] = y;
+    f[3] = x * x;
+    f[4] = x * y;
+    f[5] = y * y;
+  };
+  double m[6][7] = {};
+  double f[6];
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        basis(i, j, f);
+        for (int a = 0; a < terms; ++a) {
+          for (int b = 0; b < terms; ++b) m[a][b] += f[a] * f[b];
+          m[a][6] += f[a] * h[i * ny + j];
+        }
+      }
+  // Gaussian elimination with partial pivoting; a term the region cannot determine (collinear cells) is dropped.
+  double c[6] = {};
+  bool used[6] = {};
+  {
+    int row = 0;
+    int pivot_col[6] = {};
+    for (int col = 0; col < terms && row < terms; ++col) {
+      int best = row;
+      for (int r = row + 1; r < terms; ++r)
+        if (std::abs(m[r][col]) > std::abs(m[best][col])) best = r;
+      if (std::abs(m[best][col]) <= 1e-10 * std::max(1.0, std::abs(m[0][0]))) continue;
+      for (int k = 0; k < 7; ++k) std::swap(m[row][k], m[best][k]);
+      for (int r = 0; r < terms; ++r) {
+        if (r == row) continue;
+        const double q = m[r][col] / m[row][col];
+        for (int k = 0; k < 7; ++k)
+          if (k < terms || k == 6) m[r][k] -= q * m[row][k];
+      }
+      pivot_col[row] = col;
+      used[col] = true;
+      ++row;
+    }
+    for (int r = 0; r < row; ++r) c[pivot_col[r]] = m[r][6] / m[r][pivot_col[r]];
+  }
+  for (std::size_t i = 0; i < nx; ++i)
+    for (std::size_t j = 0; j < ny; ++j)
+      if (in[i * ny + j]) {
+        basis(i, j, f);
+        double form = 0.0;
+        for (int a = 0; a < terms; ++a)
+          if (used[a]) form += c[a] * f[a];
+        e[i * ny + j] = h[i * ny + j] - form;
+      }
+  return residual_roughness(e.data(), in, nx, ny, dx, dy);
+}
+
+void PinOnDisc::measure_roughness(double s, PinOnDiscSample& out) const {
+  const Grid2D& g = grid();
+  const RealField& p = contact_.pressure();
+  std::vector<char> in(g.size(), 0);
+  bool worn = false;
+  for (std::size_t k = 0; k < g.size(); ++k) worn |= (in[k] = pin_[k] > pin0_[k]) != 0;
+  if (!worn)
+    for (std::size_t k = 0; k < g.size(); ++k) in[k] = p[k] > 0.0;
+  // z_pin points into the pin: its heights are −z_pin.
+  std::vector<double> h(g.size());
+  for (std::size_t k = 0; k < g.size(); ++k) h[k] = -pin_[k];
+  out.pin_roughness = region_roughness(h.data(), in.data(), g.nx, g.ny, g.dx(), g.dy());
+  out.disc_roughness = {};
+  if (track_ == 0) return;
+  // The disc's wear track: the columns (x) worn anywhere along the circumference, whole; before any
+  // wear, the columns under the contact. Its form is the profile across the track (each column's mean
+  // along it, the averaged track's disc); the roughness is what varies along the track about it.
+  std::vector<char> band(g.nx, 0);
+  worn = false;
+  for (std::size_t i = 0; i < g.nx; ++i)
+    for (std::size_t m = 0; m < track_ && !band[i]; ++m)
+      band[i] = disc_[i * track_ + m] < (disc0_.empty() ? 0.0 : disc0_[i * track_ + m]);
+  for (const char b : band) worn |= b != 0;
+  if (!worn)
+    for (std::size_t i = 0; i < g.nx; ++i)
+      for (std::size_t j = 0; j < g.ny && !band[i]; ++j) band[i] = p(i, j) > 0.0;
+  (void)s;
+  std::vector<double> e(disc_.size(), 0.0);
+  in.assign(disc_.size(), 0);
+  for (std::size_t i = 0; i < g.nx; ++i) {
+    if (!band[i]) continue;
+    double mean = 0.0;
+    for (std::size_t m = 0; m < track_; ++m) mean += disc_[i * track_ + m];
+    mean /= static_cast<double>(track_);
+    for (std::size_t m = 0; m < track_; ++m) {
+      e[i * track_ + m] = disc_[i * track_ + m] - mean;
+      in[i * track_ + m] = 1;
+    }
+  }
+  out.disc_roughness = residual_roughness(e.data(), in.data(), g.nx, track_, g.dx(), g.dx());
+}
+
 void PinOnDisc::save(CheckpointState& state) const {
   state.put("pin_surface", std::span<const double>(pin_.data(), pin_.size()));
   state.put("disc_profile", disc_);
@@ -393,6 +591,7 @@ void PinOnDisc::save(CheckpointState& state) const {
                                                   x.disc_wear, x.contact_fraction, x.layer_contact,
                                                   x.substrate_contact, x.max_pressure,
                                                   static_cast<double>(x.iterations), static_cast<double>(x.grooves)});
+    if (setup_.measure_roughness) state.put("stage_roughness", roughness_values(x));
   }
 }
 
@@ -449,6 +648,11 @@ void PinOnDisc::restore(const CheckpointState& state) {
     stage_s_ = x[0];
     stage_sample_ = {x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9], static_cast<int>(x[10]),
                      static_cast<int>(x[11])};
+    if (setup_.measure_roughness) {
+      if (!state.has("stage_roughness") || state.array("stage_roughness").size() != 8)
+        throw InputError(fmt::format("{}: the saved implicit stage has no roughness of a rough run", state.origin));
+      set_roughness_values(stage_sample_, state.array("stage_roughness").data());
+    }
     if (const std::string problem = sample_problem(stage_sample_, setup_); !problem.empty()) refuse(problem);
     if (!(std::isfinite(stage_s_) && stage_s_ >= 0.0 && stage_s_ <= setup_.distance * (1.0 + 1e-9)))
       refuse(fmt::format("the saved stage's distance {:g} m is outside the run's [0, {:g}] m", stage_s_,

@@ -18,6 +18,7 @@
 // of contact modulus E*.
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -70,6 +71,16 @@ struct PinOnDiscSetup {
   materials::InterfaceLaw on_layer;      ///< pin on the oxide layer (e.g. SiO2/SiO2)
   materials::InterfaceLaw on_substrate;  ///< pin on the substrate (e.g. SiO2/Si)
   bool like_on_like = true;         ///< pin and layer of one material: wear shared ½/½ on the layer
+  /// Initial roughness [m] added to the unworn surfaces; empty: smooth. The pin's over
+  /// its n × n window (grid order, index i·n + j); the disc's over the resolved track's
+  /// n × track_cells() strip (index i·track_cells() + m). The averaged track's disc is
+  /// invariant along y and holds none (validate refuses it). The oxide of a layered disc
+  /// follows the rough surface: the worn depth that decides the material is measured
+  /// from the initial (rough) height of each cell.
+  std::vector<double> pin_roughness, disc_roughness;
+  /// Whether the samples carry the roughness of the worn surfaces (PinOnDiscSample): on
+  /// for a rough run; off keeps a smooth run's work as it was.
+  bool measure_roughness = false;
 
   /// InputError naming the parameter for any value out of range.
   void validate() const;
@@ -91,6 +102,31 @@ struct PinOnDiscSetup {
   bool tilt_in_layer_test() const { return layer_test == LayerTest::Tilted && nonplanar_slope > 0.0; }
 };
 
+/// Roughness of a surface inside a region, its form removed: Sa (1.4), Sq = h_RMS
+/// (1.5), and h'_RMS (1.6) by forward differences over the pairs of neighbouring
+/// cells both inside the region. NaN when not measured (or fewer than 3 cells).
+struct RegionRoughness {
+  double sa = std::numeric_limits<double>::quiet_NaN();
+  double sq = std::numeric_limits<double>::quiet_NaN();
+  double hprime_rms = std::numeric_limits<double>::quiet_NaN();
+  double cells = 0.0;  ///< cells in the region
+};
+
+/// The roughness of residual heights e (their form already removed; nx × ny, index
+/// i·ny + j, cells dx × dy) over the cells with in[k] != 0.
+RegionRoughness residual_roughness(const double* e, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                   double dy);
+/// The same of heights h about their form over the region: its least-squares
+/// quadric (a sphere's cap, a worn flat or a groove across it, to second order),
+/// a plane for fewer than 6 cells.
+RegionRoughness region_roughness(const double* h, const char* in, std::size_t nx, std::size_t ny, double dx,
+                                 double dy);
+
+struct PinOnDiscSample;
+/// A sample's two roughnesses as 8 values (pin Sa, Sq, h'_RMS, cells, then the disc's), for checkpoints.
+std::vector<double> roughness_values(const PinOnDiscSample& x);
+void set_roughness_values(PinOnDiscSample& x, const double* values);
+
 /// The state after a step, and what happened during it.
 struct PinOnDiscSample {
   double distance = 0.0;           ///< s [m]
@@ -104,6 +140,13 @@ struct PinOnDiscSample {
   double max_pressure = 0.0;       ///< [Pa]
   int iterations = 0;              ///< BEM iterations of this step's solve
   int grooves = 0;                 ///< grooves: separate bands of x where the disc is worn through the layer
+  /// With setup().measure_roughness: the pin's roughness over its worn region (the
+  /// cells worn so far; before any wear, the cells in contact) about its quadric form;
+  /// the disc's over its wear track on the resolved strip (the columns worn anywhere
+  /// along the circumference, whole; before any wear, the columns under the contact)
+  /// about the track's profile (each column's mean along it). The averaged track's
+  /// disc holds no roughness: NaN.
+  RegionRoughness pin_roughness{}, disc_roughness{};
 };
 
 class PinOnDisc {
@@ -155,6 +198,8 @@ class PinOnDisc {
   RealField disc_under_pin() const;
   /// Mean worn disc height per x column (z_disc averaged along the track).
   std::vector<double> disc_column_means() const;
+  /// The same of the unworn disc (its initial roughness; zeros for a smooth disc).
+  std::vector<double> disc_initial_column_means() const;
   const bem::NormalContact& contact() const { return contact_; }
   const PinOnDiscSetup& setup() const { return setup_; }
   const Grid2D& grid() const { return pin_.grid(); }
@@ -208,11 +253,13 @@ class PinOnDisc {
                                   double tolerance = 0.0);  // 0: setup().tolerance
   void rates(double s, PinOnDiscSample& out, std::vector<double>* pin_rate, std::vector<double>* disc_rate);
   double disc_height(const double* disc, std::size_t i, std::size_t j, double s) const;
+  void measure_roughness(double s, PinOnDiscSample& out) const;
   void deposit_swept(double s0, double s1);
   int count_grooves(const double* disc) const;
   PinOnDiscSetup setup_;
   RealField pin_, profile_;
   std::vector<double> disc_;
+  std::vector<double> pin0_, disc0_;  // the unworn surfaces of a rough run (empty when smooth)
   bem::NormalContact contact_;
   std::vector<double> pin_rate_, disc_rate_;
   std::vector<char> layer_;  // per cell: 1 where the pin meets the oxide
