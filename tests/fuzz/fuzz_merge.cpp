@@ -117,8 +117,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const unsigned changes = size > 0 ? 1 + data[at++] % 3 : 0;
   std::vector<std::string> names;
   for (const auto& [name, r] : j["results"].items()) names.push_back(name);
-  for (unsigned c = 0; c < changes && at < size; ++c)
-    j["results"][names[data[at++] % names.size()]]["value"] = value_of(data, size, at);
+  for (unsigned c = 0; c < changes && at < size; ++c) {
+    const std::string& name = names[data[at++] % names.size()];  // before the value: it reads on from `at`
+    j["results"][name]["value"] = value_of(data, size, at);
+  }
   std::ofstream(s.summary) << j.dump(2) << "\n";
   std::error_code ec;
   fs::remove(s.dir / "shards" / "summary.json", ec);

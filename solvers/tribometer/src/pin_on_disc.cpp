@@ -627,9 +627,17 @@ void PinOnDisc::restore(const CheckpointState& state) {
   pin_wear_ = state.scalar("pin_wear");
   disc_wear_ = state.scalar("disc_wear");
   friction_integral_ = state.scalar("friction_integral");
-  steps_ = static_cast<long>(state.scalar("steps"));
-  solves_ = static_cast<int>(state.scalar("solves"));
-  iterations_ = state.has("contact_iterations") ? static_cast<long>(state.scalar("contact_iterations")) : 0;
+  // The run's counters: whole numbers a run can reach, or the state is refused (never a cast of NaN or 1e300).
+  const auto count = [&](const char* name, double most) {
+    const double v = state.scalar(name);
+    if (!(v >= 0.0 && v <= most && v == std::floor(v)))
+      throw InputError(fmt::format("{}: the saved {} = {} is not a count a run reaches; allowed: a whole number in [0, {}]",
+                                   state.origin, name, v, most));
+    return v;
+  };
+  steps_ = static_cast<long>(count("steps", 1e15));
+  solves_ = static_cast<int>(count("solves", 2e9));
+  iterations_ = state.has("contact_iterations") ? static_cast<long>(count("contact_iterations", 1e15)) : 0;
   contact_.set_warm_start(p, state.scalar("contact_gap_shift"));
   stage_valid_ = state.scalar("stage_valid") != 0.0;
   if (stage_valid_) {
