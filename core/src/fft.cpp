@@ -126,6 +126,9 @@ std::shared_ptr<const FFTPlan> FFTPlanCache::plan(std::size_t nx, std::size_t ny
 
 void FFTPlanCache::set_rigor(PlanRigor r) {
   std::lock_guard lock(mutex_);
+  // A plan of the other rigor is not reused: a measured plan picks its
+  // algorithm by timing, so it may round otherwise than an estimated one.
+  if (r != rigor_) plans_.clear();
   rigor_ = r;
 }
 

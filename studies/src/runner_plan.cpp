@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/fft.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/utf8.hpp"
 
@@ -83,6 +84,9 @@ PreparedRun prepare_keys(Config cfg_in, const std::optional<std::filesystem::pat
   const Config r = cfg.section("run");
   run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
                                                                                                 : PlanRigor::Measure;
+  // From here on: a plan made while preparing (a generated surface's) would
+  // otherwise be measured, and a measured plan picks its algorithm by timing.
+  FFTPlanCache::global().set_rigor(run.fft_rigor);
   study_registry().read_run_limits(cfg);  // every study's limits (contact: gather_limit), on every run
   run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();

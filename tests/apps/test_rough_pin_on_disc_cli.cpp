@@ -99,17 +99,16 @@ TEST(RoughPinOnDiscCli, ASurfaceWrittenToAFileIsTheSurfaceGeneratedInMemory) {
     // The same heights, bit for bit: the surface's own figures, computed from every height, are equal.
     for (const char* name : {"pin_surface_sq", "pin_surface_hprime_rms"})
       EXPECT_EQ(result(*other, name), result(memory, name)) << name;
-    // The same run: equal to the last digits (the BEM's FFTs may round differently in another process).
+    // The same run, bit for bit: each process plans its FFTs alike (by estimate, the generated surface's too).
     for (const char* name : {"mu_mean", "mu_final", "pin_wear", "disc_wear", "pin_sq_final", "contact_solves"})
-      EXPECT_NEAR(result(*other, name), result(memory, name), 1e-9 * std::abs(result(memory, name))) << name;
+      EXPECT_EQ(result(*other, name), result(memory, name)) << name;
   }
   for (const char* file : {"friction.csv", "roughness.csv"})
     for (const char* other : {"h5", "text"}) {
       const auto a = numbers(work / other / file), b = numbers(work / "memory" / file);
       ASSERT_EQ(a.size(), b.size()) << file;
       for (std::size_t k = 0; k < a.size(); ++k)
-        if (!(std::isnan(a[k]) && std::isnan(b[k])))
-          ASSERT_NEAR(a[k], b[k], 1e-8 * std::abs(b[k]) + 1e-30) << other << " " << file << " value " << k;
+        if (!(std::isnan(a[k]) && std::isnan(b[k]))) ASSERT_EQ(a[k], b[k]) << other << " " << file << " value " << k;
     }
   // The surface the model starts from is the one asked for: Sa = 0.5 µm over the whole window.
   EXPECT_NEAR(result(memory, "pin_surface_sq"), 0.5e-6 * std::sqrt(std::numbers::pi / 2.0), 0.15 * 0.5e-6);
