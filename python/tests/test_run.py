@@ -211,3 +211,24 @@ def test_threads_spin_briefly_then_sleep_as_in_the_cli_unless_the_user_chose():
     assert f"GOMP_SPINCOUNT = '{ws._WAITING_SPIN_COUNT}'" in _libgomp_settings({})
     chosen = _libgomp_settings({"OMP_WAIT_POLICY": "active"})
     assert "OMP_WAIT_POLICY = 'ACTIVE'" in chosen and f"GOMP_SPINCOUNT = '{ws._WAITING_SPIN_COUNT}'" not in chosen
+
+
+def test_run_h5_says_what_a_rough_discs_heights_are_measured_from(source_dir, tmp_path):
+    h5py = pytest.importorskip("h5py")
+    import numpy as np
+    case = source_dir / "cases" / "pin_on_disc_si_oxide.toml"
+    small = dict(scale__macro__grid=16, scale__macro__distance="5 mm", scale__macro__track="resolved")
+    smooth = ws.run(case, out=tmp_path / "smooth", **small)
+    rough = ws.run(case, out=tmp_path / "rough", **small,
+                   scale__macro__disc_surface={"hurst": 0.8, "k_l": 2, "k_s": 8, "seed": 5, "sa": "0.2 um"})
+    with h5py.File(smooth.output_dir / "run.h5") as f:
+        assert "0 unworn" in f["macro/final/disc_track"].attrs["description"]
+    with h5py.File(rough.output_dir / "run.h5") as f:
+        track = f["macro/final/disc_track"]
+        # Not "0 unworn": the heights are the initial rough surface lowered where worn.
+        assert "0 unworn" not in track.attrs["description"]
+        assert "initial rough surface" in track.attrs["description"]
+        assert "initial rough surface" in f["macro/final/disc"].attrs["description"]
+        # The unworn strip keeps the generated roughness: its RMS is the surface's Sq (within the worn share).
+        sq = rough.results["disc_surface_sq_m"]
+        assert np.sqrt(np.mean(np.asarray(track) ** 2)) == approx(sq, rel=0.3)

@@ -309,7 +309,14 @@ class MacroPinOnDisc final : public Scale {
   static std::array<double, 2> origin(const Grid2D& g) { return {-0.5 * g.lx, -0.5 * g.ly}; }
 
   // The snapshot's fields and its distance attribute; a step of `series` if given.
-  static void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap, XdmfSidecar* series = nullptr) {
+  // What a disc height is: from the unworn plane on a smooth disc; on a rough
+  // one, from the initial surface's mean plane, so its roughness shows.
+  std::string disc_height_meaning() const {
+    return s_.disc_roughness.empty() ? "0 unworn, negative where worn"
+                                     : "the initial rough surface (its mean plane at 0) lowered where worn";
+  }
+
+  void write_fields(RunContext& ctx, const Grid2D& g, const Snapshot& snap, XdmfSidecar* series = nullptr) const {
     RealField pin(g), disc(g), pressure(g);
     std::copy(snap.pin.begin(), snap.pin.end(), pin.begin());
     std::copy(snap.pressure.begin(), snap.pressure.end(), pressure.begin());
@@ -319,8 +326,9 @@ class MacroPinOnDisc final : public Scale {
                          "across the track, y along the sliding",
                          origin(g));
     ctx.h5().write_field(snap.group + "/disc", disc, "m",
-                         "disc surface height under the pin's window (0 unworn, negative where worn); x across the "
-                         "track, y along the sliding",
+                         fmt::format("disc surface height under the pin's window ({}); x across the track, y "
+                                     "along the sliding",
+                                     disc_height_meaning()),
                          origin(g));
     ctx.h5().write_field(snap.group + "/pressure", pressure, "Pa",
                          "contact pressure between pin and disc; x across the track, y along the sliding", origin(g));
@@ -355,8 +363,9 @@ class MacroPinOnDisc final : public Scale {
       RealField disc(strip);
       std::copy(model.disc_profile().begin(), model.disc_profile().end(), disc.begin());
       ctx.h5().write_field("/macro/final/disc_track", disc, "m",
-                           "disc surface height along the whole track (resolved), 0 unworn, negative where worn; x "
-                           "across the track, y along it from where the pin started",
+                           fmt::format("disc surface height along the whole track (resolved), {}; x across the "
+                                       "track, y along it from where the pin started",
+                                       disc_height_meaning()),
                            {-0.5 * g.lx, 0.0});
     }
   }
