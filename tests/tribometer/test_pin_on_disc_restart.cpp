@@ -14,6 +14,7 @@
 #include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/pin_on_disc.hpp"
+#include "adaptive_restart.hpp"
 #include "thesis_pin_on_disc.hpp"
 
 using namespace wearscale;
@@ -42,7 +43,6 @@ void expect_identical(const std::vector<PinOnDiscSample>& a, const std::vector<P
   }
 }
 
-struct Stop {};  // stands for the process being killed
 }  // namespace
 
 TEST(PinOnDiscRestart, ExplicitRunFromASavedStateEndsBitForBitAsAnUninterruptedOne) {
@@ -68,41 +68,13 @@ TEST(PinOnDiscRestart, ExplicitRunFromASavedStateEndsBitForBitAsAnUninterruptedO
 }
 
 TEST(PinOnDiscRestart, AdaptiveRunFromAStateSavedAtARestartEndsBitForBitAsAnUninterruptedOne) {
-  const auto setup = small(0.03);
   AdaptiveOptions options;
   options.restart_every = 5;
-  PinOnDisc whole(setup);
-  std::vector<PinOnDiscSample> reference;
-  long steps = 0;
-  run_adaptive(whole, options, [&](const PinOnDiscSample& x) { reference.push_back(x); },
-               [&](const AdaptiveStatus& status) { steps = status.steps; });
-  ASSERT_GT(steps, 15) << "the test needs a run of several restart segments";
-
-  PinOnDisc first(setup);
-  std::vector<PinOnDiscSample> samples;
-  CheckpointState saved;
-  AdaptiveStatus at;
-  try {
-    run_adaptive(first, options, [&](const PinOnDiscSample& x) { samples.push_back(x); },
-                 [&](const AdaptiveStatus& status) {
-                   if (!status.segment_end || status.steps < 10) return;
-                   first.save(saved);
-                   at = status;
-                   throw Stop{};  // killed right after its checkpoint
-                 });
-    FAIL() << "the run should have stopped at step 10";
-  } catch (const Stop&) {
-  }
-  EXPECT_EQ(at.steps, 10);
-  PinOnDisc second(setup);
-  second.restore(saved);
-  AdaptiveOptions resume = options;
-  resume.initial_step = at.next_step;
-  resume.steps_done = at.steps;
-  resume.observe_start = false;
-  run_adaptive(second, resume, [&](const PinOnDiscSample& x) { samples.push_back(x); });
-  EXPECT_NEAR(samples.back().distance, 0.03, 1e-12);
-  expect_identical(samples, reference);
+  const auto run = test_support::adaptive_restart(small(0.03), options, 10);
+  ASSERT_GT(run.uninterrupted_steps, 15) << "the test needs a run of several restart segments";
+  EXPECT_EQ(run.stopped_at.steps, 10);
+  EXPECT_NEAR(run.resumed.back().distance, 0.03, 1e-12);
+  expect_identical(run.resumed, run.uninterrupted);
 }
 
 TEST(PinOnDiscRestart, AStateOfAnotherGridIsRefused) {

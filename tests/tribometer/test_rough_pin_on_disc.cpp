@@ -10,6 +10,7 @@
 #include <numbers>
 #include <random>
 
+#include "adaptive_restart.hpp"
 #include "thesis_pin_on_disc.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/io/checkpoint.hpp"
@@ -111,32 +112,9 @@ TEST(RoughPinOnDisc, AnAdaptiveRoughRunFromAStateSavedAtARestartEndsBitForBitWit
   setup.measure_roughness = true;
   AdaptiveOptions options;
   options.restart_every = 5;
-  PinOnDisc whole(setup);
-  std::vector<PinOnDiscSample> reference;
-  run_adaptive(whole, options, [&](const PinOnDiscSample& x) { reference.push_back(x); });
-  struct Stop {};
-  PinOnDisc first(setup);
-  std::vector<PinOnDiscSample> samples;
-  CheckpointState saved;
-  AdaptiveStatus at;
-  try {
-    run_adaptive(first, options, [&](const PinOnDiscSample& x) { samples.push_back(x); },
-                 [&](const AdaptiveStatus& status) {
-                   if (!status.segment_end || status.steps < 10) return;
-                   first.save(saved);
-                   at = status;
-                   throw Stop{};
-                 });
-    FAIL() << "the run should have stopped at step 10";
-  } catch (const Stop&) {
-  }
-  PinOnDisc second(setup);
-  second.restore(saved);
-  AdaptiveOptions resume = options;
-  resume.initial_step = at.next_step;
-  resume.steps_done = at.steps;
-  resume.observe_start = false;
-  run_adaptive(second, resume, [&](const PinOnDiscSample& x) { samples.push_back(x); });
+  const auto run = test_support::adaptive_restart(setup, options, 10);
+  const auto& samples = run.resumed;
+  const auto& reference = run.uninterrupted;
   ASSERT_EQ(samples.size(), reference.size());
   const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   for (std::size_t k = 0; k < samples.size(); ++k) {

@@ -127,17 +127,29 @@ void PinOnDisc::solve_stage(double s, const double* a, double gamma, double* z, 
     if (consistent == layer_) break;
     layer_ = consistent;
   }
-  // The rate at z, and the sample: the pressure solved is z's contact.
-  std::copy(a + np + nx, a + np + nx + 3, z + np + nx);  // the volumes and ∫μ ds follow below
+  finish_stage(s, a, gamma, z, rate, sample, r.iterations, consistent);
+}
+
+// After a stage's solve (z's surfaces and materials set): the rate at z —
+// the disc's part, a column's on the averaged track, spread over the strip
+// cells the window reads on a resolved one —, the volumes and ∫μ ds stepped
+// with it, the sample at z, and what derivative() may reuse at z.
+void PinOnDisc::finish_stage(double s, const double* a, double gamma, double* z, double* rate,
+                             PinOnDiscSample& sample, int iterations, std::vector<char>& consistent) {
+  const std::size_t np = pin_.size(), tail = np + disc_.size();
+  std::copy(a + tail, a + tail + 3, z + tail);  // the volumes and ∫μ ds follow below
   set_state(z, s);
-  rates(s, sample, &pin_rate_, &disc_rate_);
-  sample.iterations = r.iterations;
-  for (std::size_t k = 0; k < np; ++k) rate[k] = pin_rate_[k];
-  for (std::size_t i = 0; i < nx; ++i) rate[np + i] = -disc_rate_[i];
-  rate[np + nx] = last_pin_volume_rate_;
-  rate[np + nx + 1] = last_disc_volume_rate_;
-  rate[np + nx + 2] = sample.friction;
-  for (std::size_t k = np + nx; k < np + nx + 3; ++k) z[k] = a[k] + gamma * rate[k];
+  rates(s, sample, &pin_rate_, &disc_rate_);  // the pressure solved is z's contact
+  sample.iterations = iterations;
+  std::copy(pin_rate_.begin(), pin_rate_.end(), rate);
+  if (track_ > 0)
+    spread_on_track(s, rate + np);
+  else
+    for (std::size_t i = 0; i < disc_.size(); ++i) rate[np + i] = -disc_rate_[i];
+  rate[tail] = last_pin_volume_rate_;
+  rate[tail + 1] = last_disc_volume_rate_;
+  rate[tail + 2] = sample.friction;
+  for (std::size_t k = tail; k < tail + 3; ++k) z[k] = a[k] + gamma * rate[k];
   set_state(z, s);
   sample.pin_wear = pin_wear_;
   sample.disc_wear = disc_wear_;

@@ -129,31 +129,7 @@ void PinOnDisc::solve_track_stage(double s, const double* a, double gamma, doubl
     if (consistent == layer_) break;
     layer_ = consistent;
   }
-  // The rate at z, and the sample: the pressure solved is z's contact.
-  std::copy(a + np + nd, a + np + nd + 3, z + np + nd);  // the volumes and ∫μ ds follow below
-  set_state(z, s);
-  rates(s, sample, &pin_rate_, &disc_rate_);
-  sample.iterations = r.iterations;
-  std::copy(pin_rate_.begin(), pin_rate_.end(), rate);
-  spread_on_track(s, rate + np);
-  rate[np + nd] = last_pin_volume_rate_;
-  rate[np + nd + 1] = last_disc_volume_rate_;
-  rate[np + nd + 2] = sample.friction;
-  for (std::size_t k = np + nd; k < np + nd + 3; ++k) z[k] = a[k] + gamma * rate[k];
-  set_state(z, s);
-  sample.pin_wear = pin_wear_;
-  sample.disc_wear = disc_wear_;
-  sample.friction_integral = friction_integral_;
-  // Kept for derivative() at z (the next step's first stage), when z's own
-  // materials are those the stage wore with.
-  classify(s, z + np, consistent);
-  stage_valid_ = consistent == layer_;
-  if (stage_valid_) {
-    stage_state_.assign(z, z + state_size());
-    stage_rate_.assign(rate, rate + state_size());
-    stage_s_ = s;
-    stage_sample_ = sample;
-  }
+  finish_stage(s, a, gamma, z, rate, sample, r.iterations, consistent);
 }
 
 }  // namespace wearscale::tribometer

@@ -241,6 +241,9 @@ class PinOnDisc {
   struct TrackStageCompliance;
   void solve_track_stage(double s, const double* a, double gamma, double* z, double* rate, PinOnDiscSample& sample,
                          const std::vector<char>* layer);
+  // The end of either stage: the rate, volumes, sample and reusable state at z.
+  void finish_stage(double s, const double* a, double gamma, double* z, double* rate, PinOnDiscSample& sample,
+                    int iterations, std::vector<char>& consistent);
   // Resolved track: the window cells' disc rates (disc_rate_) onto the strip
   // cells they read at s, as dz/ds of the strip (the window's weights R).
   void spread_on_track(double s, double* strip_rate) const;
