@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "reduced_dem_studies.hpp"
 #include "cli_runner.hpp"
 #include "wearscale/io/hdf5_file.hpp"
 #include "scratch_dir.hpp"
@@ -215,29 +216,8 @@ TEST(Resume, SigintStopsCleanlyWithStatus130AndTheRunResumes) {
   fs::remove_all(dir);
 }
 
-// The DEM studies a user runs on their own, reduced to a second or two:
-// `wearscale dem STUDY ARGS` writes summary.json, and DUMP if not empty.
-struct DemStudy {
-  std::string label, args, name, dump;
-  friend void PrintTo(const DemStudy& s, std::ostream* os) { *os << s.label; }
-};
-const std::vector<DemStudy> dem_studies = {
-    {"junction", "dem junction --material SiO2 --D 20e-9 --d0 '6 nm' --slide '6 nm' --velocity 10", "junction",
-     "junction.dump"},
-    {"rough_shear",
-     "dem rough-shear --material SiO2 --d0 '6 nm' --length '60 nm' --velocity 50 --slide '12 nm' --roughness 0.04 "
-     "--set dem.rough_shear.height='60 nm'",
-     "rough_shear", "rough_shear.dump"},
-    {"trapped_particles",
-     "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 '6 nm' --velocity 100 --slide '12 nm'",
-     "trapped_particles", "trapped_particles.dump"},
-    {"patch_test", "dem patch-test --lattice hcp --nu 0.1 --length 8 --set dem.patch_test.strain_rate=1e-4",
-     "patch_test", ""},
-    {"oxide_asperity",
-     "dem oxide-asperity --d0 '6 nm' --slide '12 nm' --set \"dem.oxide_asperity.box=['150 nm','150 nm','95 nm']\" "
-     "--set dem.oxide_asperity.velocity=50 --set \"dem.oxide_asperity.settle_distance='1 nm'\"",
-     "oxide_asperity", "oxide_asperity.dump"},
-};
+using DemStudy = wearscale::test_support::ReducedDemStudy;
+const auto& dem_studies = wearscale::test_support::reduced_dem_studies;
 
 // The output of two runs of a DEM study is the same: results, history and
 // snapshots bit for bit, and no checkpoint or temporary file is left.

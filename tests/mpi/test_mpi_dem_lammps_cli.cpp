@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "reduced_dem_studies.hpp"
 #include "cli_runner.hpp"
 #include "mpi_launcher.hpp"
 #include "same_outputs.hpp"
@@ -29,28 +30,8 @@ CliResult run(int ranks, const std::string& args) {
   return run_cli(args, work, "OMP_NUM_THREADS=1", mpi_launcher(ranks));
 }
 
-struct DemStudy {
-  std::string label, args, name, dump;
-  friend void PrintTo(const DemStudy& s, std::ostream* os) { *os << s.label; }
-};
-// The studies as the reliability tests reduce them (tests/apps/test_reliability_cli.cpp).
-const std::vector<DemStudy> dem_studies = {
-    {"junction", "dem junction --material SiO2 --D 20e-9 --d0 '6 nm' --slide '6 nm' --velocity 10", "junction",
-     "junction.dump"},
-    {"rough_shear",
-     "dem rough-shear --material SiO2 --d0 '6 nm' --length '60 nm' --velocity 50 --slide '12 nm' --roughness 0.04 "
-     "--set dem.rough_shear.height='60 nm'",
-     "rough_shear", "rough_shear.dump"},
-    {"trapped_particles",
-     "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 '6 nm' --velocity 100 --slide '12 nm'",
-     "trapped_particles", "trapped_particles.dump"},
-    {"patch_test", "dem patch-test --lattice hcp --nu 0.1 --length 8 --set dem.patch_test.strain_rate=1e-4",
-     "patch_test", ""},
-    {"oxide_asperity",
-     "dem oxide-asperity --d0 '6 nm' --slide '12 nm' --set \"dem.oxide_asperity.box=['150 nm','150 nm','95 nm']\" "
-     "--set dem.oxide_asperity.velocity=50 --set \"dem.oxide_asperity.settle_distance='1 nm'\"",
-     "oxide_asperity", "oxide_asperity.dump"},
-};
+using DemStudy = wearscale::test_support::ReducedDemStudy;
+const auto& dem_studies = wearscale::test_support::reduced_dem_studies;
 const std::string on_lammps = " --set dem.engine=lammps";
 
 nlohmann::json results_of(const fs::path& summary) { return nlohmann::json::parse(slurp(summary))["results"]; }
