@@ -61,6 +61,8 @@ void ensure_mpi() {
 // --- Messages from rank 0 to the serving ranks ---------------------------------
 
 constexpr int kTagCall = 7201;
+// The layout of the state save_state() writes (2: the global damping in lammps.clock).
+constexpr const char* state_format = "wearscale-lammps-engine-2";
 
 enum class Call : int {
   Create = 1, AddWall, SetTimeStep, SetDamping, SetTrackVirial, SetWallVelocity, Run, ComputeForces, Save,
@@ -414,13 +416,15 @@ class LammpsEngine final : public Engine {
     // The restart file's bytes as doubles (kept bit for bit), its length first.
     std::vector<double> words((bytes.size() + sizeof(double) - 1) / sizeof(double), 0.0);
     if (!bytes.empty()) std::memcpy(words.data(), bytes.data(), bytes.size());
-    out.put_text("lammps.format", "wearscale-lammps-engine-1");
+    out.put_text("lammps.format", state_format);
     out.put("lammps.restart_bytes", static_cast<double>(bytes.size()));
     out.put("lammps.restart", words);
     int ranks = 1;
     MPI_Comm_size(served_ ? g_served.comm : MPI_COMM_SELF, &ranks);
+    // The global damping too: a driver changes it between runs (the oxide
+    // asperity's settling ends undamped), and a restart file does not hold it.
     out.put("lammps.clock", std::vector<double>{static_cast<double>(system_->steps()), system_->time(),
-                                                static_cast<double>(ranks)});
+                                                static_cast<double>(ranks), system_->config().damping});
     std::vector<double> walls;
     for (const auto& w : system_->walls())
       for (const Vec3* v : {&w.velocity, &w.force, &w.displacement})
@@ -429,7 +433,11 @@ class LammpsEngine final : public Engine {
   }
 
   void restore_state(const CheckpointState& in) override {
-    if (!in.has("lammps.format") || in.text("lammps.format") != "wearscale-lammps-engine-1")
+    if (in.has("lammps.format") && in.text("lammps.format") == "wearscale-lammps-engine-1")
+      throw InputError(fmt::format("{}: lammps.format = wearscale-lammps-engine-1, a state without its global damping "
+                                   "(it cannot continue bit for bit); allowed: {}: run the study again from the start",
+                                   in.origin, state_format));
+    if (!in.has("lammps.format") || in.text("lammps.format") != state_format)
       throw InputError(fmt::format("{}: not a state of the LAMMPS engine (a run of another engine continues with "
                                    "its own: set the engine it ran with)",
                                    in.origin));
@@ -438,7 +446,7 @@ class LammpsEngine final : public Engine {
     if (words.size() * sizeof(double) < length) throw InputError(fmt::format("{}: lammps.restart is cut short", in.origin));
     const auto& clock = in.array("lammps.clock");
     const auto& walls = in.array("lammps.walls");
-    if (clock.size() != 3 || walls.size() != 9 * walls_.size())
+    if (clock.size() != 4 || !std::isfinite(clock[3]) || clock[3] < 0.0 || walls.size() != 9 * walls_.size())
       throw InputError(fmt::format("{}: not the LAMMPS engine state of this system ({} walls)", in.origin, walls_.size()));
     int ranks = 1;
     MPI_Comm_size(served_ ? g_served.comm : MPI_COMM_SELF, &ranks);
@@ -465,6 +473,7 @@ class LammpsEngine final : public Engine {
     }
     system_->restore(0, bytes);
     system_->set_clock(steps, clock[1], slots);
+    set_global_damping(clock[3]);
     system_->gather(0, gathered_);
     take_gathered();
     take_walls();

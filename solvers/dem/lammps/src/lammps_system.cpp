@@ -14,6 +14,7 @@
 #define LAMMPS_LIB_MPI 1
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "fix_wearscale_history.hpp"
 #include "force.h"
 #include "group.h"
@@ -86,6 +87,8 @@ LammpsSystem::LammpsSystem(MPI_Comm comm, SystemConfig config, const AtomTable& 
   command(fmt::format("region wearscale_box block {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} units box", lo.x, hi.x,
                       lo.y, hi.y, lo.z, hi.z));
   command(fmt::format("create_box {} wearscale_box", config_.law.types));
+  created_lo_ = lo;
+  created_hi_ = hi;
   std::vector<int> ids(atoms.count);
   for (std::size_t k = 0; k < atoms.count; ++k) ids[k] = static_cast<int>(k + 1);
   lammps_create_atoms(lmp_, static_cast<int>(atoms.count), ids.data(), atoms.type.data(), atoms.x.data(),
@@ -340,12 +343,36 @@ void LammpsSystem::restore(int root, const std::string& bytes) {
   command("newton on");  // read_restart keeps the script's newton_pair
   command("atom_modify map array");
   command("read_restart " + path);
+  keep_created_margins();
   if (rank_ == root) {
     std::error_code ec;
     std::filesystem::remove(path, ec);
   }
   command("comm_modify vel yes");
   configure(false);
+}
+
+// read_restart sizes the margin of the shrink-wrapped bounds (Domain::small,
+// 1e-4 of the box) from the saved box, where the run that saved it had the
+// box it was created with: its bounds, bins, atom sort and neighbour order
+// would drift from that run's in the last bits. The margin is set again from
+// the created box (Domain::set_initial_box(0) sets only it), the saved box kept.
+void LammpsSystem::keep_created_margins() {
+  LAMMPS_NS::Domain* domain = lmp_->domain;
+  double lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = domain->boxlo[a];
+    hi[a] = domain->boxhi[a];
+    domain->boxlo[a] = created_lo_[a];
+    domain->boxhi[a] = created_hi_[a];
+  }
+  domain->set_initial_box(0);
+  for (int a = 0; a < 3; ++a) {
+    domain->boxlo[a] = lo[a];
+    domain->boxhi[a] = hi[a];
+  }
+  domain->set_global_box();
+  domain->set_local_box();
 }
 
 }  // namespace wearscale::dem::lammps

@@ -108,6 +108,8 @@ class LammpsSystem {
   /// The commands after the atoms exist (styles, neighbours, the fix, walls' groups).
   void configure(bool fresh);
   void apply_wall_groups();
+  /// After read_restart: the shrink-wrap margins of the created box.
+  void keep_created_margins();
   std::string temporary_file(int root) const;
 
   MPI_Comm comm_;
@@ -116,6 +118,9 @@ class LammpsSystem {
   std::size_t count_ = 0;
   std::vector<std::int16_t> wall_of_;  // per particle: its wall or −1 (every rank)
   std::vector<WallSlot> walls_;        // the walls as added (the fix holds their state)
+  // The box LAMMPS was created with: its shrink-wrapped bounds keep a margin
+  // of 1e-4 of these lengths, which restore() gives back (not the saved box's).
+  Vec3 created_lo_{}, created_hi_{};
   LAMMPS_NS::LAMMPS* lmp_ = nullptr;
   FixWearscaleVerlet* verlet_ = nullptr;
   PairWearscale* pair_ = nullptr;

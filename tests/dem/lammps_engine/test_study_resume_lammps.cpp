@@ -1,0 +1,138 @@
+// The DEM studies on the LAMMPS engine resume bit for bit: sheared rough
+// surfaces (§7.2), trapped particles (§7.3) and the oxidized asperity
+// (§9.3.3), each of whose cells is shrink-wrapped along z, continue from a
+// state taken mid-run (a LAMMPS restart file and the engine's clocks) to the
+// history and results of the run that never stopped, on one rank.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+#include "../reduced_oxide_asperity.hpp"
+#include "input_error_of.hpp"
+#include "wearscale/dem/lammps_engine.hpp"
+#include "wearscale/dem/oxide_asperity.hpp"
+#include "wearscale/dem/rough_shear.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
+#include "wearscale/materials/material.hpp"
+
+using namespace wearscale;
+using namespace wearscale::dem;
+
+namespace {
+constexpr double d0 = 6e-9;  // coarse: a few hundred particles
+
+class StudyResumeLammps : public testing::Test {
+ protected:
+  void SetUp() override { register_lammps_engine(); }
+};
+
+// Keeps every state offered (the run goes on: it is the uninterrupted
+// reference); resume(f) continues from the state a fraction f of the way.
+struct Capture {
+  std::vector<CheckpointState> states;
+  RunCheckpoints hooks() {
+    RunCheckpoints h;
+    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
+    return h;
+  }
+  RunCheckpoints resume(double fraction) const {
+    RunCheckpoints h;
+    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
+    return h;
+  }
+};
+
+SlidingCellSpec coarse_cell() {
+  SlidingCellSpec c;
+  c.material = cohesive_material(materials::silica(), 0.5);  // Table 6.5, s = ½
+  c.d0 = d0;
+  c.velocity = 100.0;
+  c.pressure = 0.5e9;
+  c.sliding_distance = 2 * d0;
+  c.settle_distance = 0.5 * d0;
+  c.engine = "lammps";
+  return c;
+}
+
+void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<SlidingSample>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].time, b[k].time) << "sample " << k;
+    EXPECT_EQ(a[k].tangential_force, b[k].tangential_force) << "sample " << k;
+    EXPECT_EQ(a[k].normal_force, b[k].normal_force) << "sample " << k;
+    EXPECT_EQ(a[k].kinetic_energy, b[k].kinetic_energy) << "sample " << k;
+    EXPECT_EQ(a[k].worn, b[k].worn) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_bottom, b[k].roughness_bottom) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_top, b[k].roughness_top) << "sample " << k;
+  }
+}
+}  // namespace
+
+TEST_F(StudyResumeLammps, ShearedRoughSurfacesResumedMidSlideEndBitForBitAsTheUninterruptedRun) {
+  RoughShearSpec s;
+  s.cell = coarse_cell();
+  s.cell.box = {10 * d0, 3.5 * d0, 10 * d0};
+  s.roughness = 0.04;
+  Capture capture;
+  const auto straight = run_rough_shear(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  for (const double at : {0.5, 1.0}) {  // 1.0: in the rigid-fit window (the last fifth of the slide)
+    SCOPED_TRACE("resumed " + std::to_string(at) + " of the way");
+    const auto resumed = run_rough_shear(s, {}, capture.resume(at));
+    expect_same_history(resumed.history, straight.history);
+    EXPECT_EQ(resumed.peak_tangential_force, straight.peak_tangential_force);
+    EXPECT_EQ(resumed.friction, straight.friction);
+    EXPECT_EQ(resumed.worn, straight.worn);
+    EXPECT_EQ(resumed.wear_particle, straight.wear_particle);
+    EXPECT_EQ(resumed.wear_particle_residual, straight.wear_particle_residual);
+    EXPECT_EQ(resumed.regime, straight.regime);
+  }
+  // A state of the first format (no global damping in it) cannot continue
+  // bit for bit: refused, naming the entry.
+  CheckpointState first_format = capture.states.back();
+  first_format.put_text("lammps.format", "wearscale-lammps-engine-1");
+  RunCheckpoints from;
+  from.from = &first_format;
+  EXPECT_THAT(input_error_of([&] { run_rough_shear(s, {}, from); }), testing::HasSubstr("lammps.format"));
+}
+
+TEST_F(StudyResumeLammps, TrappedParticlesResumedMidSlideEndBitForBitAsTheUninterruptedRun) {
+  TrappedParticlesSpec s;
+  s.cell = coarse_cell();
+  s.count = 2;
+  s.diameter = 3.5 * d0;
+  s.cell.box = {2 * 3 * s.diameter, 3.5 * d0, s.diameter + 9 * d0};
+  Capture capture;
+  const auto straight = run_trapped_particles(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  const auto resumed = run_trapped_particles(s, {}, capture.resume(0.5));
+  expect_same_history(resumed.history, straight.history);
+  EXPECT_EQ(resumed.loose_residual, straight.loose_residual);
+  EXPECT_EQ(resumed.friction, straight.friction);
+  EXPECT_EQ(resumed.worn_first_body, straight.worn_first_body);
+  EXPECT_EQ(resumed.band_thickness, straight.band_thickness);
+}
+
+// Resumed while sliding: the settling's damping ended before the state was
+// taken, and the resumed run slides undamped too.
+TEST_F(StudyResumeLammps, TheOxidizedAsperityResumedWhileSlidingEndsBitForBitAsTheUninterruptedRun) {
+  auto s = test_support::reduced_oxide_asperity(d0);
+  s.engine = "lammps";
+  Capture capture;
+  const auto straight = run_oxide_asperity(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 5u);
+  const auto resumed = run_oxide_asperity(s, {}, capture.resume(0.7));
+  ASSERT_EQ(resumed.history.size(), straight.history.size());
+  for (std::size_t k = 0; k < straight.history.size(); ++k) {
+    EXPECT_EQ(resumed.history[k].tangential_force, straight.history[k].tangential_force) << "sample " << k;
+    EXPECT_EQ(resumed.history[k].body_particles, straight.history[k].body_particles) << "sample " << k;
+    EXPECT_EQ(resumed.history[k].trench_depth, straight.history[k].trench_depth) << "sample " << k;
+  }
+  EXPECT_EQ(resumed.rotation, straight.rotation);
+  EXPECT_EQ(resumed.travel, straight.travel);
+  EXPECT_EQ(resumed.final_body, straight.final_body);
+  EXPECT_EQ(resumed.friction, straight.friction);
+  EXPECT_EQ(resumed.reached_substrate_at, straight.reached_substrate_at);
+}
