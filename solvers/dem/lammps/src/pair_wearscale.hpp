@@ -19,21 +19,6 @@ namespace wearscale::dem::lammps {
 
 class FixWearscaleHistory;
 
-/// What a law gets of one listed pair (wearscale's PairState).
-struct PairKinematics {
-  Vec3 d;  ///< x_j − x_i
-  Vec3 v;  ///< v_i − v_j
-  Vec3 w;  ///< r_i ω_i + r_j ω_j
-  double ri, rj, mi, mj;
-};
-
-/// What it returns: the force on i (j gets its opposite) and the tangential
-/// force, whose arm n × F_T turns both particles.
-struct PairResult {
-  Vec3 force, tangential, normal;
-  bool active;  ///< in range (else no force, the history cleared)
-};
-
 class PairWearscale : public LAMMPS_NS::Pair {
  public:
   explicit PairWearscale(LAMMPS_NS::LAMMPS* lmp);
@@ -71,8 +56,9 @@ class PairWearscale : public LAMMPS_NS::Pair {
   virtual double reach(double max_radius) const = 0;
   /// Per-pair parameters once a list is loaded (the cohesive law's (6.53)-(6.61)).
   virtual void prepare_pairs() {}
-  /// The pair loop with `law.contact(k, kinematics, history, updated, dt,
-  /// advance)` inlined (pair_wearscale_loop.hpp).
+  /// The pair loop with `law.contact(k, state, history, updated, dt,
+  /// advance)` inlined, the law of wearscale's own pair loop (a PairState in,
+  /// a PairForce out: dem/contact_law.hpp; pair_wearscale_loop.hpp).
   template <class Law>
   void loop(const Law& law, int eflag, int vflag);
   /// The largest radius of any atom on any rank.

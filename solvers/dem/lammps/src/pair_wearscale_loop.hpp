@@ -5,13 +5,13 @@
 // reverse communication), the torques r n × F_T on both, the history of
 // each entry carried and updated, and the per-atom virial when kept.
 //
-// As wearscale's own loop (dem/pair_loop.hpp) it runs in batches: the
-// entries' kinematics gathered as structure of arrays, the law's force over
-// the batch in one loop the compiler vectorises (the law's contact() is
-// straight-line arithmetic, compiled also for AVX2 and AVX-512 and picked at
-// load time), then the sums in list order.
-#include <algorithm>
-#include <cstdint>
+// It is wearscale's own batch (dem/pair_loop.hpp) with LAMMPS' arrays
+// around it: the entries' kinematics gathered into a detail::Batch, the
+// law's force over the batch by detail::batch_forces (one loop the compiler
+// vectorises, compiled also for AVX2 and AVX-512 and picked at load time),
+// then the sums in list order.
+#include <cstddef>
+#include <memory>
 
 #include "atom.h"
 #include "comm.h"
@@ -22,54 +22,6 @@
 #include "wearscale/dem/pair_loop.hpp"
 
 namespace wearscale::dem::lammps {
-
-namespace detail {
-
-inline void add_outer(double* w, const Vec3& d, const Vec3& f) {
-  // ½ (d ⊗ f), symmetrised: the pair's share of the virial of each particle.
-  w[0] += 0.5 * d.x * f.x;
-  w[1] += 0.5 * d.y * f.y;
-  w[2] += 0.5 * d.z * f.z;
-  w[3] += 0.25 * (d.x * f.y + d.y * f.x);
-  w[4] += 0.25 * (d.x * f.z + d.z * f.x);
-  w[5] += 0.25 * (d.y * f.z + d.z * f.y);
-}
-
-inline constexpr std::size_t batch_entries = 128;
-
-// One batch of consecutive list entries as structure of arrays.
-struct alignas(64) EntryBatch {
-  double dx[batch_entries], dy[batch_entries], dz[batch_entries];
-  double vx[batch_entries], vy[batch_entries], vz[batch_entries];
-  double wx[batch_entries], wy[batch_entries], wz[batch_entries];
-  double ri[batch_entries], rj[batch_entries], mi[batch_entries], mj[batch_entries];
-  double fx[batch_entries], fy[batch_entries], fz[batch_entries];
-  double ax[batch_entries], ay[batch_entries], az[batch_entries];
-  std::uint64_t active[batch_entries];  // as wide as a double: the vectoriser sizes the loop by it
-  double before[3 * batch_entries], after[3 * batch_entries];
-  int i[batch_entries], j[batch_entries];
-};
-
-// The law on the batch's `m` entries (from list entry k0), one lane an entry.
-template <class Law, bool Advance>
-WEARSCALE_PAIR_KERNEL void entry_forces(const Law& law, EntryBatch& b, std::size_t m, long long k0, double dt) {
-WEARSCALE_INDEPENDENT_LANES
-  for (std::size_t l = 0; l < m; ++l) {
-    const PairKinematics s{{b.dx[l], b.dy[l], b.dz[l]}, {b.vx[l], b.vy[l], b.vz[l]}, {b.wx[l], b.wy[l], b.wz[l]},
-                           b.ri[l], b.rj[l], b.mi[l], b.mj[l]};
-    const PairResult r = law.contact(s, b.before + 3 * l, b.after + 3 * l, dt, Advance, k0 + static_cast<long long>(l));
-    const Vec3 arm = cross(r.normal, r.tangential);
-    b.fx[l] = r.force.x;
-    b.fy[l] = r.force.y;
-    b.fz[l] = r.force.z;
-    b.ax[l] = arm.x;
-    b.ay[l] = arm.y;
-    b.az[l] = arm.z;
-    b.active[l] = r.active ? 1u : 0u;
-  }
-}
-
-}  // namespace detail
 
 template <class Law>
 void PairWearscale::loop(const Law& law, int eflag, int vflag) {
@@ -90,22 +42,24 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
   if (virial) virial_.assign(6 * static_cast<std::size_t>(all), 0.0);
   double* vir = virial_.data();
   double* history = history_.data();
-  auto batch = std::make_unique<detail::EntryBatch>();
-  detail::EntryBatch& b = *batch;
+  constexpr std::size_t batch = dem::detail::batch_pairs;
+  auto gathered = std::make_unique<dem::detail::Batch>();
+  dem::detail::Batch& b = *gathered;
+  int bi[batch], bj[batch];  // the atoms of each of the batch's entries
   const int inum = list->inum;
 
   // The batch's forces and torques into the atoms, in list order; its
   // updated histories back into the entries from k0 on.
   auto flush = [&](std::size_t m, long long k0) {
     if (m == 0) return;
+    const auto first = static_cast<std::size_t>(k0);
     if (advance)
-      detail::entry_forces<Law, true>(law, b, m, k0, dt);
+      dem::detail::batch_forces<Law, 3, true>(law, b, first, m, history, 3, dt);
     else
-      detail::entry_forces<Law, false>(law, b, m, k0, dt);
-    std::copy_n(b.after, 3 * m, history + 3 * k0);
+      dem::detail::batch_forces<Law, 3, false>(law, b, first, m, history, 3, dt);
     for (std::size_t l = 0; l < m; ++l) {
       if (b.active[l] == 0) continue;
-      const int i = b.i[l], j = b.j[l];
+      const int i = bi[l], j = bj[l];
       const Vec3 fij{b.fx[l], b.fy[l], b.fz[l]}, arm{b.ax[l], b.ay[l], b.az[l]};
       f[i][0] += fij.x;
       f[i][1] += fij.y;
@@ -122,8 +76,8 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
       torque[j][2] += tj.z;
       if (virial) {
         const Vec3 d{b.dx[l], b.dy[l], b.dz[l]};
-        detail::add_outer(vir + 6 * static_cast<std::size_t>(i), d, fij);
-        detail::add_outer(vir + 6 * static_cast<std::size_t>(j), d, fij);
+        dem::detail::add_outer(vir + 6 * static_cast<std::size_t>(i), d, fij);
+        dem::detail::add_outer(vir + 6 * static_cast<std::size_t>(j), d, fij);
       }
     }
   };
@@ -136,14 +90,14 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
     const int jnum = list->numneigh[i];
     long long k = first_[static_cast<std::size_t>(ii)];
     for (int jj = 0; jj < jnum; ++jj, ++k) {
-      if (m == detail::batch_entries) {
+      if (m == batch) {
         flush(m, k0);
         m = 0;
       }
       if (m == 0) k0 = k;
       const int j = jlist[jj] & NEIGHMASK;
-      b.i[m] = i;
-      b.j[m] = j;
+      bi[m] = i;
+      bj[m] = j;
       b.dx[m] = x[j][0] - x[i][0];
       b.dy[m] = x[j][1] - x[i][1];
       b.dz[m] = x[j][2] - x[i][2];
@@ -158,7 +112,6 @@ void PairWearscale::loop(const Law& law, int eflag, int vflag) {
       b.rj[m] = rj;
       b.mi[m] = rmass[i];
       b.mj[m] = rmass[j];
-      std::copy_n(history + 3 * k, 3, b.before + 3 * m);
       ++m;
     }
   }

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "wearscale/core/errors.hpp"
-#include "wearscale/dem/coulomb_cap.hpp"
+#include "wearscale/dem/cohesive_kernel.hpp"
 #include "wearscale/dem/neighbor_list.hpp"
 #include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/dem/particles.hpp"
@@ -223,61 +223,12 @@ struct CohesiveKernel {
   CohesivePair uniform;  // Uniform: every pair's parameters
   const double *k_n, *k_t, *delta_e, *delta_f, *f_mt, *c_n, *c_t;  // else per listed pair
 
-  // The cohesive force of §6.1: (6.2)-(6.5). Straight-line arithmetic for the
-  // vectorised pair loop: every branch of (6.3) and of the cap is computed and
-  // the one that applies selected, the same bits as branching.
+  // The cohesive force of §6.1, (6.2)-(6.5): the kernel shared with the LAMMPS pair style.
   PairForce contact(std::size_t k, const PairState& s, const double* hist, double* updated, double dt,
                     bool advance) const {
     const CohesivePair p =
         Uniform ? uniform : CohesivePair{k_n[k], k_t[k], delta_e[k], delta_f[k], f_mt[k], c_n[k], c_t[k]};
-    PairForce out;
-    const double r2 = dot(s.d, s.d);
-    const double contact = s.ri + s.rj;
-    const double cohesive_range = contact + p.delta_f;
-    const double range = Cohesion ? cohesive_range : contact;
-    const bool in_range = !(r2 >= range * range);
-    const double r = std::sqrt(r2);
-    const Vec3 n = s.d * (1.0 / r);
-    const double delta_n = r - contact;
-    // (6.3): Hookean to δ_e, linear softening to δ_f, nothing beyond.
-    const double softening = -p.k_n * p.delta_e / (p.delta_f - p.delta_e) * (delta_n - p.delta_f);
-    const double hookean = p.k_n * delta_n;
-    const double cohesive_f_n = delta_n <= p.delta_e ? hookean : (delta_n <= p.delta_f ? softening : 0.0);
-    const double repulsive_f_n = p.k_n * std::min(delta_n, 0.0);
-    const double f_n = Cohesion ? cohesive_f_n : repulsive_f_n;
-    const Vec3 vrel = s.v + cross(s.w, n);
-    const double v_n = dot(vrel, n);
-    const Vec3 f_normal = (f_n - p.c_n * v_n) * n;  // (6.2), normal part; positive f_n pulls i toward j
-    // The sliding distance integrates the contact's tangential velocity and
-    // is turned into the current tangent plane; the total tangential force,
-    // spring and damping, is capped by F'_m,T (6.4)-(6.5), the spring
-    // stretched back to match, as in the thesis' LAMMPS pair style
-    // gran/cohesive/history (built on gran/hooke/history).
-    const bool with_tangential = Tangential && p.k_t > 0.0;
-    const Vec3 v_t = vrel - v_n * n;
-    Vec3 xi{hist[0], hist[1], hist[2]};
-    if (advance) xi += v_t * dt;
-    const bool sliding = dot(xi, xi) != 0.0;
-    if (advance) xi -= dot(xi, n) * n;
-    Vec3 f_t = -(p.k_t * xi + p.c_t * v_t);
-    const double cap = std::min((p.delta_f - delta_n) / p.delta_f, 1.0) * p.f_mt;  // (6.4)-(6.5)
-    cap_tangential(f_t, xi, v_t * (p.c_t / p.k_t), cap, sliding);
-    // Out of reach: no force, the history cleared; the history moves only in
-    // the step's evaluation.
-    const bool store = with_tangential && advance;
-    updated[0] = select(in_range, select(store, xi.x, hist[0]), 0.0);
-    updated[1] = select(in_range, select(store, xi.y, hist[1]), 0.0);
-    updated[2] = select(in_range, select(store, xi.z, hist[2]), 0.0);
-    const Vec3 total = f_normal + f_t;
-    out.force.x = with_tangential ? total.x : f_normal.x;
-    out.force.y = with_tangential ? total.y : f_normal.y;
-    out.force.z = with_tangential ? total.z : f_normal.z;
-    out.tangential.x = with_tangential ? f_t.x : 0.0;
-    out.tangential.y = with_tangential ? f_t.y : 0.0;
-    out.tangential.z = with_tangential ? f_t.z : 0.0;
-    out.normal = {n.x, n.y, n.z};
-    out.active = in_range;
-    return out;
+    return cohesive_contact<Cohesion, Tangential>(p, s, hist, updated, dt, advance);
   }
 };
 

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "wearscale/dem/cohesive_law.hpp"
-#include "wearscale/dem/coulomb_cap.hpp"
+#include "wearscale/dem/hooke_kernel.hpp"
 #include "wearscale/dem/pair_loop.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/dem/particles.hpp"
@@ -13,46 +13,11 @@
 namespace wearscale::dem {
 
 // LAMMPS pair gran/hooke/history, term by term (so that the benchmark does
-// the same work and the same arithmetic as the reference decks). Written as
-// straight-line arithmetic for the vectorised pair loop: both sides of each
-// branch of LAMMPS are computed and the taken one selected, which gives the
-// same bits as branching (no operation is reordered or fused).
+// the same work and the same arithmetic as the reference decks): the kernel
+// shared with the LAMMPS pair style wearscale/hooke.
 inline PairForce HookeLaw::contact(std::size_t, const PairState& s, const double* hist, double* updated, double dt,
                                    bool advance) const {
-  PairForce out;
-  const double r2 = dot(s.d, s.d);
-  const double radsum = s.ri + s.rj;
-  const bool touching = !(r2 >= radsum * radsum);
-  const Vec3 del = -s.d;  // x_i − x_j
-  const double r = std::sqrt(r2);
-  const double rinv = 1.0 / r;
-  const double rsqinv = rinv * rinv;
-  const Vec3 vr = s.v;
-  const double vnnr = dot(vr, del);
-  const Vec3 vn = del * (vnnr * rsqinv);
-  const Vec3 vt = vr - vn;
-  const Vec3 wr = s.w * rinv;
-  const double meff = s.mi * s.mj / (s.mi + s.mj);
-  const double damp = meff * gamma_n * vnnr * rsqinv;
-  const double ccel = k_n * (radsum - r) * rinv - damp;
-  const Vec3 vtr = vt + cross(del, wr);
-  Vec3 shear{hist[0], hist[1], hist[2]};
-  if (advance) shear += vtr * dt;
-  const bool sheared = dot(shear, shear) != 0.0;  // LAMMPS tests |shear| != 0 before the rotation
-  if (advance) shear -= del * (dot(shear, del) * rsqinv);
-  const double damp_t = meff * gamma_t;
-  Vec3 fs = -(k_t * shear + damp_t * vtr);
-  const double fn = friction * std::fabs(ccel * r);
-  cap_tangential(fs, shear, vtr * (damp_t / k_t), fn, sheared);  // Coulomb cap
-  // A pair out of contact has no force and forgets its history.
-  updated[0] = touching ? shear.x : 0.0;
-  updated[1] = touching ? shear.y : 0.0;
-  updated[2] = touching ? shear.z : 0.0;
-  out.force = del * ccel + fs;
-  out.tangential = fs;
-  out.normal = s.d * rinv;
-  out.active = touching;
-  return out;
+  return hooke_contact({k_n, k_t, gamma_n, gamma_t, friction}, s, hist, updated, dt, advance);
 }
 
 void HookeLaw::add_pair_forces(PairLoop& loop) const { run_pair_loop(*this, loop); }

@@ -72,8 +72,9 @@ struct PairLoop {
 
 namespace detail {
 
-inline void add_outer(SymTensor& w, const Vec3& d, const Vec3& f) {
-  // ½ (d ⊗ f), symmetrised: the pair's share of the virial of each particle.
+// ½ (d ⊗ f), symmetrised, into w (xx yy zz xy xz yz): the pair's share of
+// the virial of each particle (also the LAMMPS pair styles' per-atom rows).
+inline void add_outer(double* w, const Vec3& d, const Vec3& f) {
   w[0] += 0.5 * d.x * f.x;
   w[1] += 0.5 * d.y * f.y;
   w[2] += 0.5 * d.z * f.z;
@@ -90,7 +91,8 @@ inline constexpr std::size_t max_fixed_history = 4;
 
 // One batch of consecutive pairs of the list as structure of arrays: the
 // gathered kinematics (PairState), and the force on i and the torque arm
-// n × F_T the law's vectorised loop writes.
+// n × F_T the law's vectorised loop writes (also the LAMMPS pair styles'
+// batch of list entries).
 struct alignas(64) Batch {
   double dx[batch_pairs], dy[batch_pairs], dz[batch_pairs];
   double vx[batch_pairs], vy[batch_pairs], vz[batch_pairs];
@@ -195,8 +197,8 @@ void pair_rows(const Law& law, const PairLoop& a, std::size_t ib, std::size_t ie
         tq[j] += b.rj[l] * arm;
         if constexpr (Virial) {
           const Vec3 d{b.dx[l], b.dy[l], b.dz[l]};
-          add_outer(vir[i], d, force);
-          add_outer(vir[j], d, force);
+          add_outer(vir[i].data(), d, force);
+          add_outer(vir[j].data(), d, force);
         }
       }
     }
