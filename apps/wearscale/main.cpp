@@ -88,6 +88,7 @@ int run(int argc, char** argv) {
   add(app::add_run);
   add(app::add_check);
   add(app::add_backends);
+  add(app::add_studies);
   add(app::add_version);
   add(app::add_surface);
   add(app::add_contact);
