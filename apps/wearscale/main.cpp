@@ -88,7 +88,6 @@ int run(int argc, char** argv) {
   add(app::add_run);
   add(app::add_check);
   add(app::add_backends);
-  add(app::add_studies);
   add(app::add_version);
   add(app::add_surface);
   add(app::add_contact);
@@ -97,6 +96,7 @@ int run(int argc, char** argv) {
   add(app::add_wearmap);
   add(app::add_merge);
   add(app::add_completion);
+  add(app::add_studies);
   app::add_examples(app);
 
   if (const auto unknown = unknown_command(app, argc, argv)) {
