@@ -2,8 +2,9 @@
 #                         SOURCES <files...>)
 #
 # The LAMMPS way of extension points: each extension is one source file with
-# its class and, beside it, one registration line `NAME(Class)` at the start
-# of a line. This collects those lines from SOURCES at configure time and
+# its class and, beside it, one registration line `NAME(Class)` (or
+# `NAME(key, ...)`) at the start of a line: WEARSCALE_BACKEND and
+# WEARSCALE_STUDY, spellings of the one registry template (core/registry.hpp). This collects those lines from SOURCES at configure time and
 # generates the one function (FUNCTION) that registers them all, so a new
 # extension edits nothing else. (Static initialisers would do the same, but a
 # static library drops the object files nothing refers to.)
@@ -11,9 +12,9 @@ function(wearscale_registrations)
   cmake_parse_arguments(R "" "TARGET;MACRO;REGISTRY;FUNCTION;NAMESPACE;HEADER" "SOURCES" ${ARGN})
   set(classes)
   foreach(f IN LISTS R_SOURCES)
-    file(STRINGS ${f} lines REGEX "^${R_MACRO}\\([A-Za-z0-9_]+\\)")
+    file(STRINGS ${f} lines REGEX "^${R_MACRO}\\([A-Za-z0-9_]+[,)]")
     foreach(line IN LISTS lines)
-      string(REGEX REPLACE "^${R_MACRO}\\(([A-Za-z0-9_]+)\\).*" "\\1" class "${line}")
+      string(REGEX REPLACE "^${R_MACRO}\\(([A-Za-z0-9_]+)[,)].*" "\\1" class "${line}")
       list(APPEND classes ${class})
     endforeach()
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${f})
@@ -31,7 +32,31 @@ function(wearscale_registrations)
     string(APPEND text "    registered::add_${c}(r);\n")
   endforeach()
   string(APPEND text "    return r;\n  }();\n  return registry;\n}\n\n}  // namespace ${R_NAMESPACE}\n")
-  set(out ${CMAKE_CURRENT_BINARY_DIR}/${R_FUNCTION}.cpp)
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/${R_TARGET}_${R_FUNCTION}.cpp)
   file(CONFIGURE OUTPUT ${out} CONTENT "${text}" @ONLY)
   target_sources(${R_TARGET} PRIVATE ${out})
+endfunction()
+
+# wearscale_program_with_studies(<target> PROGRAM wearscale|keys_doc SOURCES <files...>)
+#
+# A build of the `wearscale` program (or of the keys.md generator,
+# apps/keys_doc) whose study registry holds the studies of studies/src and
+# those of SOURCES, each a file with a study class and its WEARSCALE_STUDY
+# line: how a test shows that one new file adds a study to every front end.
+function(wearscale_program_with_studies target)
+  cmake_parse_arguments(P "" "PROGRAM" "SOURCES" ${ARGN})
+  get_property(study_sources GLOBAL PROPERTY WEARSCALE_STUDY_SOURCES)
+  if(P_PROGRAM STREQUAL "wearscale")
+    add_executable(${target} $<TARGET_OBJECTS:wearscale_commands> ${P_SOURCES})
+    target_link_libraries(${target} PRIVATE wearscale::studies wearscale::thread_waiting CLI11::CLI11 wearscale_flags)
+  elseif(P_PROGRAM STREQUAL "keys_doc")
+    add_executable(${target} ${PROJECT_SOURCE_DIR}/apps/keys_doc/main.cpp ${P_SOURCES})
+    target_link_libraries(${target} PRIVATE wearscale::studies wearscale_flags)
+  else()
+    message(FATAL_ERROR "wearscale_program_with_studies: PROGRAM is wearscale or keys_doc, not '${P_PROGRAM}'")
+  endif()
+  # Its own study_registry(), which the linker takes before the library's.
+  wearscale_registrations(TARGET ${target} MACRO WEARSCALE_STUDY REGISTRY StudyRegistry FUNCTION study_registry
+                          NAMESPACE wearscale::studies HEADER wearscale/studies/study.hpp
+                          SOURCES ${study_sources} ${P_SOURCES})
 endfunction()

@@ -19,6 +19,7 @@ void set_invocation(int argc, char** argv);
 
 Command add_run(CLI::App& app);
 Command add_backends(CLI::App& app);
+Command add_studies(CLI::App& app);
 Command add_version(CLI::App& app);
 Command add_surface(CLI::App& app);
 Command add_contact(CLI::App& app);

@@ -96,6 +96,7 @@ int run(int argc, char** argv) {
   add(app::add_wearmap);
   add(app::add_merge);
   add(app::add_completion);
+  add(app::add_studies);
   app::add_examples(app);
 
   if (const auto unknown = unknown_command(app, argc, argv)) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "wearscale/bem/contact_clusters.hpp"
 #include "wearscale/bem/crack_initiation.hpp"
 #include "wearscale/bem/principal_stresses.hpp"
@@ -10,6 +12,8 @@
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/interrupt.hpp"
 #include "wearscale/core/log.hpp"
+#include "wearscale/core/memory_limit.hpp"
+#include "wearscale/core/mpi.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/hdf5_file.hpp"
@@ -20,6 +24,92 @@
 namespace wearscale::studies {
 
 using namespace bem;
+
+long read_gather_limit(const Config& config) {
+  return config.section("run").integer_or("gather_limit", static_cast<long>(default_gather_limit), Range::at_least(1));
+}
+
+namespace {
+// Serial: memory per grid point, measured (peak RSS at 1024², with the
+// outputs): normal contact about 120 B, frictional with stresses about 580 B.
+constexpr double kSerialBytesPerPoint = 160.0, kSerialFrictionalBytesPerPoint = 640.0;
+// In slabs: the peak of the solve summed over the ranks (measured at 4096²,
+// P = 2: 83 B per point a rank holds, docs/bem.md), and what rank 0 adds to
+// gather the four fields, find the micro-contacts and write them.
+constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 88.0;
+// A free boundary: the transforms, their spectrum and the two kernels on the
+// padded grid (four times the points), the contact's rows once more to move
+// them between the two slabs (measured at 2048², P = 2, in place: 188 B per
+// point the other rank holds, 228 B on rank 0 with the file's layout).
+constexpr double kFreeBytesPerPoint = 230.0;
+// Frictional: the solver's 21 fields and the tensor's modes per rank (about
+// 250 B per point it holds), and on rank 0 the serial frictional figure.
+constexpr double kFrictionalBytesPerPoint = 260.0, kFrictionalGatherBytesPerPoint = kSerialFrictionalBytesPerPoint;
+// Above the gather limit each rank also holds its rows of the traction and
+// stress spectra, one stress tensor, the surface's principal stresses and two
+// fields a depth (measured at 1024², P = 2, two depths: 444 B per point the
+// other rank holds).
+constexpr double kFrictionalInPlaceBytesPerPoint = 600.0;
+}  // namespace
+
+double contact_memory(const ContactCase& c, int ranks, bool root) {
+  const double points = static_cast<double>(c.grid.size());
+  if (ranks == 1) return (c.friction ? kSerialFrictionalBytesPerPoint : kSerialBytesPerPoint) * points;
+  const bool gather = c.grid.size() <= c.gather_limit;
+  const double share = c.friction && !gather                  ? kFrictionalInPlaceBytesPerPoint
+                       : c.friction                            ? kFrictionalBytesPerPoint
+                       : c.normal.boundary == Boundary::Free ? kFreeBytesPerPoint
+                                                             : kBytesPerPoint;
+  const double gathered_share = c.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
+  return share * points / ranks + (root && gather ? gathered_share * points : 0.0);
+}
+
+ContactCase read_contact_case(const Config& config, int ranks) {
+  const Config c = config.section("contact");
+  const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
+  ContactCase s;
+  if (c.has("surface")) {  // under mpirun every rank reads the file alike (a refusal is every rank's)
+    s.measured = read_surface_file(c);
+    s.grid = s.measured.grid();
+    if (s.grid.nx < static_cast<std::size_t>(ranks))
+      throw c.error("surface",
+                    fmt::format("'{}' has {} rows, fewer than the {} ranks that would each hold a slab of them",
+                                c.path("surface").string(), s.grid.nx, ranks),
+                    fmt::format("a surface of at least {} rows, or fewer ranks", ranks));
+  } else {
+    const long n = c.integer("grid", Range::closed(8, 16384));
+    s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
+  }
+  if (c.has("rough")) s.rough = read_rough_case(c.section("rough"), s.grid);
+  if (c.has("sphere")) s.sphere_radius = c.number("sphere.radius", Range::positive(), units::length);
+  if (!c.has("surface") && !c.has("rough") && !c.has("sphere"))
+    throw c.error("surface", "no surface: give surface = FILE, a [contact.rough] or a [contact.sphere] table",
+                  "a file, rough and/or sphere");
+  if (friction == "none")
+    s.normal = read_normal_case(c, s.grid);
+  else
+    s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
+  s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
+                     s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
+  s.gather_limit = static_cast<std::size_t>(read_gather_limit(config));
+  const bool file = s.measured.size() > 0;
+  const char* size_key = file ? "surface" : "grid";  // what sets the grid
+  const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
+  // Under mpirun each rank checks its own share (rank 0 adds the gathered
+  // fields) against the memory of its machine: the point of the slabs is a
+  // grid larger than one machine. Ranks sharing a machine each see all of its
+  // free memory, so there the check is per rank, not for the job (an
+  // overcommitted job is ended by the system and mpirun ends the others: no
+  // wrong answer, no hang).
+  const std::string on_ranks =
+      ranks == 1 ? "" : fmt::format(" on {} ranks (rank {}'s share)", ranks, mpi::rank());
+  require_memory(contact_memory(s, ranks, mpi::is_root()),
+                 fmt::format("{}: key '{}' = {}: a contact study of {} × {} points{}", c.where(size_key),
+                             c.full_key(size_key), size_value, s.grid.nx, s.grid.ny, on_ranks),
+                 ranks == 1 ? "give a smaller grid" : "give a smaller grid or more ranks");
+  config.reject_unknown_keys();  // every check before any work
+  return s;
+}
 
 RealField read_surface_file(const Config& c) {
   TopographyOptions read;

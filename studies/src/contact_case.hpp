@@ -1,9 +1,11 @@
 #pragma once
-// The parts of a [contact] case that the serial contact study
-// (contact_study.cpp) and the one in slabs over MPI ranks (contact_slab.cpp)
-// share: the keys of a generated rough surface and of a frictionless load, and
+// A [contact] case, read once into a plain struct (ContactCase) that both
+// strategies of the contact study run: serial (contact_study.cpp) and in
+// slabs over MPI ranks (contact_slab.cpp); the one memory model of both; and
 // the files written from the solved whole fields. Private to the studies.
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -138,5 +140,36 @@ struct FrictionalFields {
 /// figures reported to `context`.
 void write_frictional_study(const Config& config, const FrictionalCase& f, const FrictionalFields& fields,
                             const bem::FrictionalResult& r, coupling::RunContext& context);
+
+/// `[run] gather_limit` by default: grids above this many points are not
+/// gathered on rank 0 under mpirun (88 B a point there for the fields and micro-contacts).
+inline constexpr std::size_t default_gather_limit = std::size_t{4096} * 4096;
+
+/// `[run] gather_limit` (grid points, at least 1), read and checked: every
+/// run reads it (the contact study's Study::read_run_limits), the slabs use it.
+long read_gather_limit(const Config& config);
+
+/// A [contact] case, every key read and checked, before any work.
+struct ContactCase {
+  Grid2D grid;
+  NormalCase normal;                       ///< frictionless (friction = "none")
+  std::optional<FrictionalCase> friction;  ///< friction = "coulomb" | "tresca"
+  RealField measured;  ///< contact.surface's heights, whole (empty: none)
+  std::optional<RoughCase> rough;
+  double sphere_radius = 0.0;  ///< 0: no sphere
+  bool measured_plans = true;  ///< slabs: FFTW MEASURE plans ([run] fft_planning, and from 512²)
+  std::size_t gather_limit = default_gather_limit;  ///< slabs: [run] gather_limit, larger grids written in place
+};
+
+/// Reads and checks [contact] for a run on `ranks` ranks (the slabs refuse a
+/// file of fewer rows than ranks), and the memory the run needs on this rank
+/// (contact_memory); ends with config.reject_unknown_keys(). Under mpirun
+/// every rank reads it alike, so a refusal is every rank's.
+ContactCase read_contact_case(const Config& config, int ranks);
+
+/// The peak memory of a contact run on this rank, in bytes: serial (ranks =
+/// 1) the whole fields and outputs; in slabs a rank's share of the solve and,
+/// on rank 0 up to the gather limit, the gathered fields.
+double contact_memory(const ContactCase& c, int ranks, bool root);
 
 }  // namespace wearscale::studies

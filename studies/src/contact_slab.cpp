@@ -21,7 +21,6 @@
 #include "wearscale/bem/slab_subsurface_stress.hpp"
 #include "wearscale/bem/principal_stresses.hpp"
 #include "wearscale/core/log.hpp"
-#include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/hdf5_file.hpp"
@@ -34,26 +33,6 @@ namespace wearscale::studies {
 using namespace bem;
 
 namespace {
-// Peak memory per grid point of the slab solve summed over the ranks
-// (measured at 4096², P = 2: 83 B per point a rank holds, docs/bem.md), and
-// what rank 0 adds to gather the four fields, find the micro-contacts and
-// write them.
-constexpr double kBytesPerPoint = 112.0, kGatherBytesPerPoint = 88.0;
-// A free boundary: the transforms, their spectrum and the two kernels on the
-// padded grid (four times the points), the contact's rows once more to move
-// them between the two slabs (measured at 2048², P = 2, in place: 188 B per
-// point the other rank holds, 228 B on rank 0 with the file's layout).
-constexpr double kFreeBytesPerPoint = 230.0;
-// Frictional: the solver's 21 fields and the tensor's modes per rank (about
-// 250 B per point it holds), and on rank 0 the serial frictional study's
-// figure (bytes_per_point in contact_study.cpp: fields, stresses, outputs).
-constexpr double kFrictionalBytesPerPoint = 260.0, kFrictionalGatherBytesPerPoint = 640.0;
-// Above the gather limit each rank also holds its rows of the traction and
-// stress spectra, one stress tensor, the surface's principal stresses and two
-// fields a depth (measured at 1024², P = 2, two depths: 444 B per point the
-// other rank holds).
-constexpr double kFrictionalInPlaceBytesPerPoint = 600.0;
-
 // The whole field on rank 0 (an empty one elsewhere) from every rank's rows.
 RealField gathered(const RealField& slab, const Grid2D& g) {
   RealField whole(mpi::is_root() ? g : Grid2D(0, g.ny, 1.0, g.ly));
@@ -61,59 +40,6 @@ RealField gathered(const RealField& slab, const Grid2D& g) {
   return whole;
 }
 }  // namespace
-
-SlabCase read_slab_case(const Config& config) {
-  const Config c = config.section("contact");
-  const int ranks = mpi::size();
-  const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
-  SlabCase s;
-  if (c.has("surface")) {  // every rank reads the file alike (a refusal is every rank's)
-    s.measured = read_surface_file(c);
-    s.grid = s.measured.grid();
-    if (s.grid.nx < static_cast<std::size_t>(ranks))
-      throw c.error("surface",
-                    fmt::format("'{}' has {} rows, fewer than the {} ranks that would each hold a slab of them",
-                                c.path("surface").string(), s.grid.nx, ranks),
-                    fmt::format("a surface of at least {} rows, or fewer ranks", ranks));
-  } else {
-    const long n = c.integer("grid", Range::closed(8, 16384));
-    s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
-  }
-  if (c.has("rough")) s.rough = read_rough_case(c.section("rough"), s.grid);
-  if (c.has("sphere")) s.sphere_radius = c.number("sphere.radius", Range::positive(), units::length);
-  if (!c.has("surface") && !c.has("rough") && !c.has("sphere"))
-    throw c.error("surface", "no surface: give surface = FILE, a [contact.rough] or a [contact.sphere] table",
-                  "a file, rough and/or sphere");
-  if (friction == "none")
-    s.normal = read_normal_case(c, s.grid);
-  else
-    s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
-  s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
-                     s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
-  s.gather_limit = static_cast<std::size_t>(read_gather_limit(config));
-  const double points = static_cast<double>(s.grid.size());
-  const bool gather = s.grid.size() <= s.gather_limit;
-  const bool file = s.measured.size() > 0;
-  const char* size_key = file ? "surface" : "grid";  // what sets the grid
-  const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
-  const double share = s.friction && !gather                   ? kFrictionalInPlaceBytesPerPoint
-                       : s.friction                              ? kFrictionalBytesPerPoint
-                       : s.normal.boundary == Boundary::Free ? kFreeBytesPerPoint
-                                                             : kBytesPerPoint;
-  const double gathered_share = s.friction ? kFrictionalGatherBytesPerPoint : kGatherBytesPerPoint;
-  // Each rank checks its own share (rank 0 adds the gathered fields) against
-  // the memory of its machine: the point of the slabs is a grid larger than
-  // one machine. Ranks sharing a machine each see all of its free memory, so
-  // there the check is per rank, not for the job (an overcommitted job is
-  // ended by the system and mpirun ends the others: no wrong answer, no hang).
-  require_memory(share * points / ranks + (mpi::is_root() && gather ? gathered_share * points : 0.0),
-                 fmt::format("{}: key '{}' = {}: a contact study of {} × {} points on {} ranks (rank {}'s share)",
-                             c.where(size_key), c.full_key(size_key), size_value, s.grid.nx, s.grid.ny, ranks,
-                             mpi::rank()),
-                 "give a smaller grid or more ranks");
-  config.reject_unknown_keys();  // every check before any work
-  return s;
-}
 
 namespace {
 VectorField gathered(const VectorField& slab, const Grid2D& g) {
@@ -135,7 +61,7 @@ auto together(Solve solve) {
 }
 
 // This rank's rows of the measured surface (zero heights without one); the whole surface is freed.
-RealField own_rows(SlabCase& s, const Grid2D& local, std::size_t first) {
+RealField own_rows(ContactCase& s, const Grid2D& local, std::size_t first) {
   RealField h(local);
   if (s.measured.size() == 0) return h;
   const auto whole = s.measured.values();
@@ -219,7 +145,7 @@ void write_fields_in_place(const Config& config, const Grid2D& g, std::size_t fi
 // the stresses (SlabSubsurfaceStress, the body's transforms) and writes its
 // rows of every field in place, and the micro-contacts are joined across the
 // slabs. A slab solve stops on every rank at the same iteration (ContactOptions::stop).
-void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* context) {
+void run_slab_friction(const Config& config, ContactCase& s, coupling::RunContext* context) {
   const Grid2D& g = s.grid;
   const FrictionalCase& f = *s.friction;
   log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction, periodic boundary, in slabs over {} MPI ranks",
@@ -322,11 +248,7 @@ void run_slab_friction(const Config& config, SlabCase& s, coupling::RunContext* 
 }
 }  // namespace
 
-long read_gather_limit(const Config& config) {
-  return config.section("run").integer_or("gather_limit", static_cast<long>(default_gather_limit), Range::at_least(1));
-}
-
-void run_slab_contact(const Config& config, SlabCase s, coupling::RunContext* context) {
+void run_slab_contact(const Config& config, ContactCase s, coupling::RunContext* context) {
   if (s.friction) return run_slab_friction(config, s, context);
   const Grid2D& g = s.grid;
   const NormalCase& normal = s.normal;

@@ -50,44 +50,17 @@ namespace {
 
 using namespace bem;
 
-// Memory per grid point of a study, measured (peak RSS at 1024², with the
-// outputs): normal contact about 120 B, frictional with stresses about 580 B.
-double bytes_per_point(const std::string& friction) { return friction == "none" ? 160.0 : 640.0; }
-
-RealField build_surface(const Config& c, const std::string& friction) {
-  RealField h;
-  if (c.has("surface")) {
-    h = read_surface_file(c);
-  } else {
-    const long n = c.integer("grid", Range::closed(8, 16384));
-    require_memory(bytes_per_point(friction) * static_cast<double>(n) * static_cast<double>(n),
-                   fmt::format("{}: key '{}' = {}: a contact study of {} × {} points", c.where("grid"),
-                               c.full_key("grid"), n, n, n),
-                   "give a smaller grid");
-    const double l = c.number("size", Range::positive(), units::length);
-    h = RealField(Grid2D::square(static_cast<std::size_t>(n), l));
-  }
-  const Grid2D g = h.grid();
-  if (c.has("rough")) {
-    const RoughCase r = read_rough_case(c.section("rough"), g);
-    h = add(h, generate_surface(r.spec, r.measure, r.target));
-  }
-  if (c.has("sphere")) {
-    const double radius = c.number("sphere.radius", Range::positive(), units::length);
-    h = add(h, sphere(g, radius, 0.5 * g.lx, 0.5 * g.ly));
-  }
-  if (!c.has("surface") && !c.has("rough") && !c.has("sphere"))
-    throw c.error("surface", "no surface: give surface = FILE, a [contact.rough] or a [contact.sphere] table",
-                  "a file, rough and/or sphere");
+// The serial strategy: the whole heights (file + rough + sphere), one solver.
+RealField build_surface(ContactCase& c) {
+  RealField h = c.measured.size() > 0 ? std::move(c.measured) : RealField(c.grid);
+  if (c.rough) h = add(h, generate_surface(c.rough->spec, c.rough->measure, c.rough->target));
+  if (c.sphere_radius > 0.0) h = add(h, sphere(c.grid, c.sphere_radius, 0.5 * c.grid.lx, 0.5 * c.grid.ly));
   return h;
 }
 
 // Frictionless normal contact (Polonsky–Keer).
-void run_normal_study(const Config& config, const Config& c, const RealField& h, RunContext& context) {
+void run_normal_study(const Config& config, const NormalCase& n, const RealField& h, RunContext& context) {
   const Grid2D g = h.grid();
-  const NormalCase n = read_normal_case(c, g);
-  config.reject_unknown_keys();  // every check before any work
-
   log::info("contact: {} , E* = {:g} Pa, {} boundary", g.to_string(), n.e_star, to_string(n.boundary));
   NormalContact contact(h, n.e_star, n.boundary);
   const ContactResult r = n.solve(contact);
@@ -96,21 +69,27 @@ void run_normal_study(const Config& config, const Config& c, const RealField& h,
 
 // Frictional contact (Appendix A): tractions, stick/slip map, displacements,
 // surface (and subsurface) stresses, and the criterion (4.25) if σ_m is given.
-void run_frictional_study(const Config& config, const Config& c, const RealField& h, const std::string& law_name,
-                          RunContext& context) {
+void run_frictional_study(const Config& config, const FrictionalCase& f, const RealField& h, RunContext& context) {
   const Grid2D g = h.grid();
-  const FrictionalCase f = read_frictional_case(c, g, law_name);
-  config.reject_unknown_keys();  // every check before any work
-
   log::info("contact: {} , E = {:g} Pa, ν = {:g}, {} friction", g.to_string(), f.young, f.poisson, f.law.to_string());
   FrictionalContact contact(h, f.young, f.poisson, f.law);
-  const FrictionalResult r = f.solve(contact, c);
+  const FrictionalResult r = f.solve(contact, config.section("contact"));
   write_frictional_study(config, f,
                          {h, contact.traction(), contact.displacement(), contact.normal_gap(), contact.slip(),
                           contact.stick_slip_map()},
                          r, context);
 }
 
+void run_serial_contact(const Config& config, ContactCase c, RunContext& context) {
+  const RealField h = build_surface(c);
+  if (c.friction)
+    run_frictional_study(config, *c.friction, h, context);
+  else
+    run_normal_study(config, c.normal, h, context);
+}
+
+// One reader ([contact] into a ContactCase), two strategies: serial, or in
+// slabs over the ranks under mpirun (contact_slab.hpp).
 class ContactStudy final : public Study {
  public:
   std::string name() const override { return "contact"; }
@@ -121,29 +100,20 @@ class ContactStudy final : public Study {
   // [run] gather_limit: used on MPI ranks, read on every run (serial runs and other studies' too).
   void read_run_limits(const Config& config) const override { read_gather_limit(config); }
   // Under mpirun (P > 1) the case is read and checked on every rank before any
-  // work (contact_slab.hpp says what is refused); serial runs read it in run().
+  // work; serial runs read it in run(), so a sweep holds no surface.
   std::vector<std::string> prepare(Config& config) override {
-    if (mpi::size() > 1) slab_ = read_slab_case(config);
+    if (mpi::size() > 1) case_ = read_contact_case(config, mpi::size());
     return {};
   }
   bool distributed() const override { return true; }
-  void run_other_rank(const Config& config) override { run_slab_contact(config, std::move(slab_.value()), nullptr); }
+  void run_other_rank(const Config& config) override { run_slab_contact(config, std::move(case_.value()), nullptr); }
   void run(const Config& config, RunContext& context) override {
-    if (slab_) return run_slab_contact(config, std::move(*slab_), &context);
-    const Config c = config.section("contact");
-    const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
-    const RealField h = build_surface(c, friction);
-    require_memory(bytes_per_point(friction) * static_cast<double>(h.grid().size()),
-                   fmt::format("a {} contact study of {} × {} points", friction == "none" ? "normal" : "frictional",
-                               h.grid().nx, h.grid().ny));
-    if (friction == "none")
-      run_normal_study(config, c, h, context);
-    else
-      run_frictional_study(config, c, h, friction, context);
+    if (case_) return run_slab_contact(config, std::move(*case_), &context);
+    run_serial_contact(config, read_contact_case(config, 1), context);
   }
 
  private:
-  std::optional<SlabCase> slab_;  // read by prepare() under mpirun
+  std::optional<ContactCase> case_;  // read by prepare() under mpirun
 };
 
 Schema ContactStudy::schema() const {

@@ -85,42 +85,15 @@ std::string output_file_name(const Config& c, const std::string& key, const std:
   return name;
 }
 
-void StudyRegistry::add(Factory factory) {
-  const std::string name = factory()->name();
-  if (contains(name)) throw std::logic_error("study registered twice: " + name);
-  entries_.emplace_back(name, factory);
-  std::sort(entries_.begin(), entries_.end());
-}
-
-bool StudyRegistry::contains(const std::string& name) const {
-  return std::any_of(entries_.begin(), entries_.end(), [&](const auto& e) { return e.first == name; });
-}
-
-std::unique_ptr<Study> StudyRegistry::create(const std::string& name) const {
-  for (const auto& [n, f] : entries_)
-    if (n == name) return f();
-  std::vector<std::string> names;
-  std::string best;
-  std::size_t best_d = 3;
-  for (const auto& [n, f] : entries_) {
-    names.push_back(n);
-    if (const auto d = edit_distance(n, name); d < best_d) best_d = d, best = n;
-  }
-  throw InputError(fmt::format("unknown study '{}'; known studies: {}{}", name, fmt::join(names, ", "),
-                               best.empty() ? "" : fmt::format(" (did you mean '{}'?)", best)));
-}
-
-std::vector<StudyInfo> StudyRegistry::list() const {
-  std::vector<StudyInfo> out;
-  for (const auto& [n, f] : entries_) {
-    const auto s = f();
-    out.push_back({s->name(), s->summary(), s->schema()});
-  }
-  return out;
+std::string StudyInfo::unknown(const std::string&, const std::string& name, const std::vector<std::string>&,
+                               const std::vector<std::string>& known) {
+  const std::string best = closest_name(known, name);
+  return fmt::format("unknown study '{}'; known studies: {}{}", name, fmt::join(known, ", "),
+                     best.empty() ? "" : fmt::format(" (did you mean '{}'?)", best));
 }
 
 void StudyRegistry::read_run_limits(const Config& inputs) const {
-  for (const auto& [n, f] : entries_) f()->read_run_limits(inputs);
+  for (const auto& n : names()) create(n)->read_run_limits(inputs);
 }
 
 std::string study_of(const Config& cfg) {

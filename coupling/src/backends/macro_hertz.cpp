@@ -13,6 +13,8 @@ namespace {
 
 class MacroHertz final : public Scale {
  public:
+  static inline const Ports ports{{}, {{Quantity::MacroResult, "pin/disc"}}};
+
   explicit MacroHertz(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const Config& c = setup.section;
     contact_.radius = c.number("pin_radius", Range::positive(), units::length);
@@ -24,8 +26,8 @@ class MacroHertz final : public Scale {
     points_ = static_cast<std::size_t>(c.integer_or("profile_points", 201, Range::at_least(3)));
   }
 
-  std::vector<Key> consumes() const override { return {}; }
-  std::vector<Key> provides() const override { return {{Quantity::MacroResult, "pin/disc"}}; }
+  std::vector<Key> consumes() const override { return ports.consumes; }
+  std::vector<Key> provides() const override { return ports.provides; }
 
   void run(Exchange& exchange, RunContext& ctx) override {
     const double a = contact_.contact_radius();
@@ -56,9 +58,7 @@ class MacroHertz final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_hertz) {
-  registry.add({"macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)", {},
-                {"MacroResult(pin/disc)"}},
-               [](const ScaleSetup& s) { return std::make_unique<MacroHertz>(s); });
+  registry.add<MacroHertz>("macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)");
 }
 
 }  // namespace wearscale::coupling

@@ -28,6 +28,9 @@ namespace {
 
 class MacroPinOnDisc final : public Scale {
  public:
+  static inline const Ports ports{{{Quantity::InterfaceLaw, "pin/disc"}, {Quantity::InterfaceLaw, "pin/layer"}},
+                                  {{Quantity::MacroResult, "pin/disc"}}};
+
   explicit MacroPinOnDisc(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const Config& c = setup.section;
     const Config& root = setup.root;
@@ -145,11 +148,11 @@ class MacroPinOnDisc final : public Scale {
   }
 
   std::vector<Key> consumes() const override {
-    std::vector<Key> out{{Quantity::InterfaceLaw, pin_ + "/" + disc_}};
-    if (layer_ != disc_) out.push_back({Quantity::InterfaceLaw, pin_ + "/" + layer_});
+    std::vector<Key> out{{ports.consumes[0].what, pin_ + "/" + disc_}};
+    if (layer_ != disc_) out.push_back({ports.consumes[1].what, pin_ + "/" + layer_});
     return out;
   }
-  std::vector<Key> provides() const override { return {{Quantity::MacroResult, "pin/disc"}}; }
+  std::vector<Key> provides() const override { return ports.provides; }
 
   // In BEM solves on 128² cells: a solve costs about n² log n²; the explicit
   // stepping makes one a step; the adaptive one's count is not known ahead,
@@ -602,10 +605,8 @@ class MacroPinOnDisc final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_pin_on_disc) {
-  registry.add({"macro", "bem-pin-on-disc", "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)",
-                {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"},
-                {"MacroResult(pin/disc)"}},
-               [](const ScaleSetup& s) { return std::make_unique<MacroPinOnDisc>(s); });
+  registry.add<MacroPinOnDisc>("macro", "bem-pin-on-disc",
+                               "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)");
 }
 
 }  // namespace wearscale::coupling

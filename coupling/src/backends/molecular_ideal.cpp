@@ -12,6 +12,8 @@ namespace {
 
 class MolecularIdeal final : public Scale {
  public:
+  static inline const Ports ports{{}, {{Quantity::ShearStrength, "<each material of [materials]>"}}};
+
   explicit MolecularIdeal(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const auto library = material_library(setup.root);
     for (const auto& m : case_materials(setup.root, library)) {
@@ -21,10 +23,10 @@ class MolecularIdeal final : public Scale {
     }
   }
 
-  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> consumes() const override { return ports.consumes; }
   std::vector<Key> provides() const override {
     std::vector<Key> out;
-    for (const auto& [m, law] : laws_) out.push_back({Quantity::ShearStrength, m});
+    for (const auto& [m, law] : laws_) out.push_back({ports.provides[0].what, m});
     return out;
   }
 
@@ -40,9 +42,8 @@ class MolecularIdeal final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_ideal) {
-  registry.add({"molecular", "ideal", "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)", {},
-                {"ShearStrength(<each material of [materials]>)"}},
-               [](const ScaleSetup& s) { return std::make_unique<MolecularIdeal>(s); });
+  registry.add<MolecularIdeal>("molecular", "ideal",
+                                "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)");
 }
 
 }  // namespace wearscale::coupling

@@ -34,6 +34,8 @@ std::string file_word(const std::string& name) {
 
 class MolecularLammps final : public Scale {
  public:
+  static inline const Ports ports{{}, {{Quantity::ShearStrength, "<each material of [materials]>"}}};
+
   explicit MolecularLammps(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const auto library = material_library(setup.root);
     // A case may keep both backends' keys: `data`/`tables` for molecular/table
@@ -59,10 +61,10 @@ class MolecularLammps final : public Scale {
                    : materials::OutsideTable::Error;
   }
 
-  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> consumes() const override { return ports.consumes; }
   std::vector<Key> provides() const override {
     std::vector<Key> out;
-    for (const auto& [m, spec] : specs_) out.push_back({Quantity::ShearStrength, m});
+    for (const auto& [m, spec] : specs_) out.push_back({ports.provides[0].what, m});
     return out;
   }
 
@@ -98,12 +100,10 @@ class MolecularLammps final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_lammps) {
-  registry.add({"molecular", "lammps",
-                "σ_max(p), σ_dyn(p) from live LAMMPS shear tests (§9.3.1) of each material with an interatomic model "
-                "(Si: SW, SiO2: Vashishta, or [materials.define.<name>.interatomic]), cached",
-                {},
-                {"ShearStrength(<each material of [materials]>)"}},
-               [](const ScaleSetup& s) { return std::make_unique<MolecularLammps>(s); });
+  registry.add<MolecularLammps>(
+      "molecular", "lammps",
+      "σ_max(p), σ_dyn(p) from live LAMMPS shear tests (§9.3.1) of each material with an interatomic model "
+      "(Si: SW, SiO2: Vashishta, or [materials.define.<name>.interatomic]), cached");
 }
 
 }  // namespace wearscale::coupling

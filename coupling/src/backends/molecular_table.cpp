@@ -16,6 +16,8 @@ namespace {
 
 class MolecularTable final : public Scale {
  public:
+  static inline const Ports ports{{}, {{Quantity::ShearStrength, "<each material of [materials]>"}}};
+
   explicit MolecularTable(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const Config& c = setup.section;
     const auto library = material_library(setup.root);
@@ -43,10 +45,10 @@ class MolecularTable final : public Scale {
     c.mark_used("lammps");  // molecular/lammps' keys, kept beside (how the tables were computed)
   }
 
-  std::vector<Key> consumes() const override { return {}; }
+  std::vector<Key> consumes() const override { return ports.consumes; }
   std::vector<Key> provides() const override {
     std::vector<Key> out;
-    for (const auto& m : materials_) out.push_back({Quantity::ShearStrength, m});
+    for (const auto& m : materials_) out.push_back({ports.provides[0].what, m});
     return out;
   }
 
@@ -63,11 +65,9 @@ class MolecularTable final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_table) {
-  registry.add({"molecular", "table",
-                "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables",
-                {},
-                {"ShearStrength(<each material of [materials]>)"}},
-               [](const ScaleSetup& s) { return std::make_unique<MolecularTable>(s); });
+  registry.add<MolecularTable>(
+      "molecular", "table",
+      "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables");
 }
 
 }  // namespace wearscale::coupling

@@ -16,6 +16,9 @@ namespace {
 
 class NanoAnalytic final : public Scale {
  public:
+  static inline const Ports ports{{{Quantity::ShearStrength, "pin, disc, layer"}},
+                                  {{Quantity::InterfaceLaw, "pin/disc"}, {Quantity::InterfaceLaw, "pin/layer"}}};
+
   explicit NanoAnalytic(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const Config& root = setup.root;
     const auto library = material_library(root);
@@ -31,14 +34,14 @@ class NanoAnalytic final : public Scale {
   }
 
   std::vector<Key> consumes() const override {
-    std::vector<Key> out{{Quantity::ShearStrength, pin_}};
+    std::vector<Key> out{{ports.consumes[0].what, pin_}};
     for (const auto& c : counterfaces_)
-      if (c != pin_) out.push_back({Quantity::ShearStrength, c});
+      if (c != pin_) out.push_back({ports.consumes[0].what, c});
     return out;
   }
   std::vector<Key> provides() const override {
     std::vector<Key> out;
-    for (const auto& c : counterfaces_) out.push_back({Quantity::InterfaceLaw, pin_ + "/" + c});
+    for (const auto& c : counterfaces_) out.push_back({ports.provides[0].what, pin_ + "/" + c});
     return out;
   }
 
@@ -74,10 +77,8 @@ class NanoAnalytic final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(nano_analytic) {
-  registry.add({"nano", "analytic", "junction model of §7.1.2: p_crit, μ0, A/A0 and wear rate per interface",
-                {"ShearStrength(pin, disc, layer)"},
-                {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"}},
-               [](const ScaleSetup& s) { return std::make_unique<NanoAnalytic>(s); });
+  registry.add<NanoAnalytic>("nano", "analytic",
+                             "junction model of §7.1.2: p_crit, μ0, A/A0 and wear rate per interface");
 }
 
 }  // namespace wearscale::coupling

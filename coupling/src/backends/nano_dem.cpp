@@ -174,6 +174,9 @@ struct Interface {
 
 class NanoDem final : public Scale {
  public:
+  static inline const Ports ports{{{Quantity::ShearStrength, "pin, disc, layer"}},
+                                  {{Quantity::InterfaceLaw, "pin/disc"}, {Quantity::InterfaceLaw, "pin/layer"}}};
+
   explicit NanoDem(const ScaleSetup& setup) : provenance_(setup.provenance()) {
     const Config& root = setup.root;
     const Config& c = setup.section;
@@ -286,14 +289,14 @@ class NanoDem final : public Scale {
   bool farms_ensembles() const override { return true; }
 
   std::vector<Key> consumes() const override {
-    std::vector<Key> out{{Quantity::ShearStrength, pin_}};
+    std::vector<Key> out{{ports.consumes[0].what, pin_}};
     for (const auto& i : interfaces_)
-      if (i.counterface != pin_) out.push_back({Quantity::ShearStrength, i.counterface});
+      if (i.counterface != pin_) out.push_back({ports.consumes[0].what, i.counterface});
     return out;
   }
   std::vector<Key> provides() const override {
     std::vector<Key> out;
-    for (const auto& i : interfaces_) out.push_back({Quantity::InterfaceLaw, i.pair()});
+    for (const auto& i : interfaces_) out.push_back({ports.provides[0].what, i.pair()});
     return out;
   }
 
@@ -652,12 +655,9 @@ class NanoDem final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(nano_dem) {
-  registry.add({"nano", "dem",
-                "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear rate per "
-                "interface, cached",
-                {"ShearStrength(pin, disc, layer)"},
-                {"InterfaceLaw(pin/disc)", "InterfaceLaw(pin/layer)"}},
-               [](const ScaleSetup& s) { return std::make_unique<NanoDem>(s); });
+  registry.add<NanoDem>("nano", "dem",
+                        "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear "
+                        "rate per interface, cached");
 }
 
 }  // namespace wearscale::coupling

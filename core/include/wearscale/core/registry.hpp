@@ -1,10 +1,15 @@
 #pragma once
-// A registry of named backends: (scale kind, backend name) → factory.
+// The one registry of wearscale's extension points: named factories of scale
+// backends (a kind and a name: "macro", "hertz"), studies and DEM contact
+// laws (a name alone). Each extension registers itself by one line beside its
+// class (WEARSCALE_BACKEND, WEARSCALE_STUDY, WEARSCALE_CONTACT_LAW: thin
+// spellings over add()); the build collects those lines into the function
+// that fills the registry (cmake/WearscaleRegistrations.cmake), never by
+// static initialisers, which a static library drops.
 //
-// Generic over what it makes, so core knows nothing of the scales the
-// coupling layer defines. Registration is explicit (one call per backend in
-// one list), never by static initialisers, which a static library drops.
-#include <algorithm>
+// Generic over what it makes and what it shows, so core knows nothing of the
+// layers above: Info holds `name` (and `kind` when entries have kinds) and
+// words its own "unknown name" message (Info::unknown).
 #include <functional>
 #include <map>
 #include <memory>
@@ -13,14 +18,14 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-
 #include "wearscale/core/errors.hpp"
 
 namespace wearscale {
 
-/// What `wearscale backends` shows about a backend.
+/// The entry of `known` closest in spelling to `name` (at most two edits), or "".
+std::string closest_name(const std::vector<std::string>& known, const std::string& name);
+
+/// What `wearscale backends` shows about a scale backend.
 struct BackendInfo {
   std::string kind;     ///< scale kind: "molecular", "nano", "macro", ...
   std::string name;     ///< backend name within the kind: "table", "analytic", ...
@@ -28,33 +33,45 @@ struct BackendInfo {
   std::vector<std::string> consumes;
   std::vector<std::string> provides;
   std::string id() const { return kind + "/" + name; }
+  /// The message of an unknown kind or backend, listing the known ones.
+  static std::string unknown(const std::string& kind, const std::string& name, const std::vector<std::string>& kinds,
+                             const std::vector<std::string>& known);
 };
 
-template <class Product, class... Args>
-class Registry {
+template <class Info>
+concept KindedInfo = requires(const Info& i) { i.kind; };
+
+/// Named factories of Product made from Args..., each shown by its Info.
+template <class Info, class Product, class... Args>
+class NamedRegistry {
  public:
   using Factory = std::function<std::unique_ptr<Product>(Args...)>;
 
-  /// Registers a backend; registering the same kind/name twice is a programming error.
-  void add(BackendInfo info, Factory factory) {
-    auto key = std::make_pair(info.kind, info.name);
+  /// Registers an entry; registering the same kind/name twice is a programming error.
+  void add(Info info, Factory factory) {
+    auto key = std::make_pair(kind_of(info), info.name);
     if (entries_.count(key) != 0)
-      throw std::logic_error("backend registered twice: " + info.id());
+      throw std::logic_error("registered twice: " + (key.first.empty() ? "" : key.first + "/") + key.second);
     entries_.emplace(std::move(key), Entry{std::move(info), std::move(factory)});
   }
 
-  bool contains(const std::string& kind, const std::string& name) const {
-    return entries_.count({kind, name}) != 0;
-  }
+  bool contains(const std::string& kind, const std::string& name) const { return entries_.count({kind, name}) != 0; }
+  bool contains(const std::string& name) const { return contains({}, name); }
 
-  const BackendInfo& info(const std::string& kind, const std::string& name) const {
-    return lookup(kind, name).info;
-  }
+  const Info& info(const std::string& kind, const std::string& name) const { return lookup(kind, name).info; }
+  const Info& info(const std::string& name) const { return lookup({}, name).info; }
 
-  /// Makes a backend; an unknown kind or name is bad input and the message
-  /// lists what is registered.
-  std::unique_ptr<Product> create(const std::string& kind, const std::string& name, Args... args) const {
+  /// Makes an entry; an unknown kind or name is bad input (InputError) whose
+  /// message lists what is registered (Info::unknown).
+  std::unique_ptr<Product> create(const std::string& kind, const std::string& name, Args... args) const
+    requires KindedInfo<Info>
+  {
     return lookup(kind, name).factory(std::forward<Args>(args)...);
+  }
+  std::unique_ptr<Product> create(const std::string& name, Args... args) const
+    requires(!KindedInfo<Info>)
+  {
+    return lookup({}, name).factory(std::forward<Args>(args)...);
   }
 
   std::vector<std::string> kinds() const {
@@ -64,36 +81,44 @@ class Registry {
     return out;
   }
 
-  std::vector<std::string> names(const std::string& kind) const {
+  /// The names of a kind (of every entry, for a registry without kinds), sorted.
+  std::vector<std::string> names(const std::string& kind = {}) const {
     std::vector<std::string> out;
     for (const auto& [key, e] : entries_)
       if (key.first == kind) out.push_back(key.second);
     return out;
   }
 
-  /// Every backend, sorted by kind then name.
-  std::vector<BackendInfo> list() const {
-    std::vector<BackendInfo> out;
+  /// Every entry, sorted by kind then name.
+  std::vector<Info> list() const {
+    std::vector<Info> out;
     for (const auto& [key, e] : entries_) out.push_back(e.info);
     return out;
   }
 
  private:
   struct Entry {
-    BackendInfo info;
+    Info info;
     Factory factory;
   };
 
+  static std::string kind_of(const Info& info) {
+    if constexpr (KindedInfo<Info>)
+      return info.kind;
+    else
+      return {};
+  }
+
   const Entry& lookup(const std::string& kind, const std::string& name) const {
     if (auto it = entries_.find({kind, name}); it != entries_.end()) return it->second;
-    const auto known = names(kind);
-    if (known.empty())
-      throw InputError(fmt::format("unknown scale kind '{}'; known kinds: {}", kind, fmt::join(kinds(), ", ")));
-    throw InputError(fmt::format("unknown {} backend '{}'; known {} backends: {}", kind, name, kind,
-                                 fmt::join(known, ", ")));
+    throw InputError(Info::unknown(kind, name, kinds(), names(kind)));
   }
 
   std::map<std::pair<std::string, std::string>, Entry> entries_;
 };
+
+/// The scale backends' registry (coupling::ScaleRegistry): entries with a kind.
+template <class Product, class... Args>
+using Registry = NamedRegistry<BackendInfo, Product, Args...>;
 
 }  // namespace wearscale

@@ -1,7 +1,8 @@
 #pragma once
-// A scale of the multiscale model, implemented by a named backend. It declares
-// what it consumes and provides; the pipeline orders scales by those
-// declarations and runs them.
+// A scale of the multiscale model, implemented by a named backend. Its class
+// declares once what its kind consumes and provides (Ports); an instance
+// gives the keys of its case (consumes(), provides()), by which the pipeline
+// orders the scales and runs them.
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,16 @@
 #include "wearscale/io/config.hpp"
 
 namespace wearscale::coupling {
+
+/// What a backend kind exchanges, declared once in its class as
+///   static inline const Ports ports{{consumed...}, {provided...}};
+/// each a quantity with its subjects in words ("pin/disc", "<each material of
+/// [materials]>"). `wearscale backends` lists them; the instance's consumes()
+/// and provides() give its case's keys of those quantities, and the registry
+/// refuses an instance that exchanges a quantity its kind does not declare.
+struct Ports {
+  std::vector<Key> consumes, provides;
+};
 
 class Scale {
  public:
@@ -40,7 +51,24 @@ struct ScaleSetup {
   Provenance provenance() const { return {kind, backend, section.to_json()}; }
 };
 
-using ScaleRegistry = Registry<Scale, const ScaleSetup&>;
+/// The scale backends of the build: the one registry template
+/// (core/registry.hpp) of scales, by kind and name.
+class ScaleRegistry : public Registry<Scale, const ScaleSetup&> {
+ public:
+  using NamedRegistry::add;
+  /// Registers backend class B (made by B(setup)) under kind/name, with
+  /// what it exchanges from B::ports.
+  template <class B>
+  void add(std::string kind, std::string name, std::string summary) {
+    add({std::move(kind), std::move(name), std::move(summary), texts(B::ports.consumes), texts(B::ports.provides)},
+        [](const ScaleSetup& s) -> std::unique_ptr<Scale> { return checked(std::make_unique<B>(s), B::ports, s); });
+  }
+
+ private:
+  static std::vector<std::string> texts(const std::vector<Key>& keys);
+  /// `scale`, after checking that its keys' quantities are those its kind declares (std::logic_error if not).
+  static std::unique_ptr<Scale> checked(std::unique_ptr<Scale> scale, const Ports& ports, const ScaleSetup& setup);
+};
 
 /// Every backend of the build, each registered by its WEARSCALE_BACKEND line.
 const ScaleRegistry& scale_registry();
@@ -51,8 +79,7 @@ const ScaleRegistry& scale_registry();
 /// and inside namespace wearscale::coupling; the body adds it to `registry`:
 ///
 ///   WEARSCALE_BACKEND(macro_hertz) {
-///     registry.add({"macro", "hertz", "one line", {consumes...}, {provides...}},
-///                  [](const ScaleSetup& s) { return std::make_unique<MacroHertz>(s); });
+///     registry.add<MacroHertz>("macro", "hertz", "one line");
 ///   }
 ///
 /// The build collects these lines (cmake/WearscaleRegistrations.cmake) into

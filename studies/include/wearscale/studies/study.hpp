@@ -12,12 +12,13 @@
 //
 //   WEARSCALE_STUDY(ContactStudy)
 //
-// The build collects these lines (cmake/WearscaleStudies.cmake), so nothing
-// else is edited.
+// The build collects these lines (cmake/WearscaleRegistrations.cmake) into
+// study_registry(), so nothing else is edited.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "wearscale/core/registry.hpp"
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
 
@@ -133,25 +134,28 @@ class Study {
   virtual std::vector<std::filesystem::path> finish_sweep(const SweepRuns& /*runs*/) { return {}; }
 };
 
-/// What `wearscale studies` lists.
+/// What the registry shows of a study (`wearscale studies`, docs/keys.md).
 struct StudyInfo {
   std::string name, summary;
   Schema schema;
+  /// The message of an unknown study: the known ones, and the closest.
+  static std::string unknown(const std::string& kind, const std::string& name, const std::vector<std::string>& kinds,
+                             const std::vector<std::string>& known);
 };
 
-class StudyRegistry {
+/// The studies of the build: the one registry template (core/registry.hpp)
+/// of studies, each shown by its name, summary and schema.
+class StudyRegistry : public NamedRegistry<StudyInfo, Study> {
  public:
-  using Factory = std::unique_ptr<Study> (*)();
-  void add(Factory factory);
-  bool contains(const std::string& name) const;
-  /// InputError naming the known studies (and the closest) for an unknown name.
-  std::unique_ptr<Study> create(const std::string& name) const;
-  std::vector<StudyInfo> list() const;
+  using NamedRegistry::add;
+  /// Registers study class S (WEARSCALE_STUDY): its name, summary and schema from an instance.
+  template <class S>
+  void add() {
+    const std::unique_ptr<Study> s = std::make_unique<S>();
+    add({s->name(), s->summary(), s->schema()}, [] { return std::unique_ptr<Study>(std::make_unique<S>()); });
+  }
   /// Every study's Study::read_run_limits on `inputs`: the limits of [run], read on every run.
   void read_run_limits(const Config& inputs) const;
-
- private:
-  std::vector<std::pair<std::string, Factory>> entries_;
 };
 
 /// Every study of the build (each registered by its WEARSCALE_STUDY line).
@@ -178,9 +182,7 @@ std::string study_of(const Config& cfg);
 
 /// The registration line beside a study's class: the build's list of studies
 /// (generated from these lines) calls the function it defines.
-#define WEARSCALE_STUDY(Class)                                                                 \
-  namespace wearscale::studies::registered {                                                   \
-  void add_##Class(StudyRegistry& r) {                                                         \
-    r.add([]() -> std::unique_ptr<Study> { return std::make_unique<Class>(); });               \
-  }                                                                                            \
+#define WEARSCALE_STUDY(Class)                                  \
+  namespace wearscale::studies::registered {                    \
+  void add_##Class(StudyRegistry& r) { r.add<Class>(); }        \
   }
