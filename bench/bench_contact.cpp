@@ -25,8 +25,14 @@
 // sphere of Fig. A.5 on 512² points: L = 500 µm, R = 6 mm, E = 70 GPa,
 // ν = 0.17 (coupled), Sa = 0.01 µm, H = 0.8, λ_l = λ_r = 10 µm (k = 50),
 // λ_s = 1.95 µm (k_s = 256, the Nyquist wavenumber; 1.37 µm in the thesis at
-// 729²), p_N,0 = 10 MPa, p_x,0 = 2 MPa; Tresca σ_m,T = 250 MPa (law 0, as in
-// Fig. A.5) or Coulomb μ = 0.5 (law 1); tolerance 1e-10 on the cost (A.14).
+// 729²), p_N,0 = 10 MPa, p_x,0 = 2 MPa; Tresca σ_m,T = 250 MPa (case 0, as in
+// Fig. A.5) or Coulomb μ = 0.5 (case 1); tolerance 1e-10 on the cost (A.14).
+// Four cases (see kFrictionalCases) on 256², 512² and 729² (Fig. A.5's grid),
+// each with the plain lagged bound (anderson 0) and Anderson's mixing of the
+// bound updates (anderson 1) side by side; the counters give the answer
+// (contact, slip, max ‖p_T‖, energy) besides iterations and CPU seconds.
+//
+//   OMP_NUM_THREADS=1 build/bench/bench_contact --benchmark_filter=Frictional --benchmark_counters_tabular=true
 // One iteration needs 9 FFTs: u = F * p (3 r2c + 3 c2r) and the spectra of
 // the search direction (3 r2c), i.e. 4.5 FFT pairs.
 //
@@ -217,10 +223,27 @@ BENCHMARK(BM_ContactLoadRamp)
     ->ArgsProduct({{512, 2048}, {0, 3}, {0, 1}, {10, 100}})
     ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 
+// The four rough cases (`case` argument): 0 the Fig. A.5 sphere with Tresca;
+// 1 the same with Coulomb μ = 0.5; 2 Coulomb μ = 0.5 with ν = 0.3 on the
+// surface of seed 2; 3 Tresca with ⟨p_x⟩ = 4 MPa on the surface of seed 3.
+// Case 4, the sphere of case 0 without friction (μ = 0, ⟨p_x⟩ = 0), is the
+// normal solve alone: the iterations no treatment of the friction bound
+// can go below.
+struct FrictionalCase {
+  bool tresca;
+  double poisson;
+  int seed;
+  double p_x;
+};
+constexpr FrictionalCase kFrictionalCases[] = {
+    {true, 0.17, 1, 2e6}, {false, 0.17, 1, 2e6}, {false, 0.3, 2, 2e6}, {true, 0.17, 3, 4e6}, {false, 0.17, 1, 0.0}};
+
 static void BM_FrictionalRoughSphere(benchmark::State& state) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
-  const bool tresca = state.range(1) == 0;
+  const FrictionalCase c = kFrictionalCases[state.range(1)];
   const int threads = static_cast<int>(state.range(2));
+  FrictionalOptions options{1e-10, 100000};
+  options.outer_acceleration = state.range(3) == 1 ? OuterAcceleration::Anderson : OuterAcceleration::None;
   omp_set_num_threads(threads);
   FFTPlanCache::global().clear();
   FFTPlanCache::global().set_threads(threads);
@@ -230,30 +253,46 @@ static void BM_FrictionalRoughSphere(benchmark::State& state) {
   spec.hurst = 0.8;
   spec.k_l = spec.k_r = 50.0;
   spec.k_s = static_cast<double>(n / 2);
-  spec.seed = 1;
+  spec.seed = static_cast<std::uint64_t>(c.seed);
   const RealField h = add(generate_surface(spec, RoughnessMeasure::Sa, 0.01e-6), sphere(spec.grid, 6e-3, l / 2, l / 2));
-  FrictionalContact contact(h, 70e9, 0.17, tresca ? FrictionLaw::tresca(250e6) : FrictionLaw::coulomb(0.5));
+  const double mu = c.p_x > 0.0 ? 0.5 : 0.0;
+  FrictionalContact contact(h, 70e9, c.poisson, c.tresca ? FrictionLaw::tresca(250e6) : FrictionLaw::coulomb(mu));
   const double fft = fft_pair_seconds(h.grid());
   FrictionalResult r;
-  double seconds = 0.0;
+  double seconds = 0.0, cpu = 0.0;
   for (auto _ : state) {
     contact.reset();
     const auto t0 = std::chrono::steady_clock::now();
-    r = contact.solve({10e6, 2e6, 0.0}, {1e-10, 100000});
+    const double c0 = cpu_seconds();
+    r = contact.solve({10e6, c.p_x, 0.0}, options);
+    cpu = cpu_seconds() - c0;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     state.SetIterationTime(seconds);
   }
+  double max_traction = 0.0;
+  for (std::size_t k = 0; k < h.size(); ++k)
+    max_traction = std::max(max_traction, std::hypot(contact.traction().x[k], contact.traction().y[k]));
   state.counters["iterations"] = r.iterations;
   state.counters["bound_updates"] = r.bound_updates;
+  state.counters["mixed_updates"] = r.accelerated_updates;
   state.counters["unsettled"] = static_cast<double>(r.unsettled_points);
   state.counters["contact_%"] = 100.0 * r.contact_fraction;
+  state.counters["slip_%"] = 100.0 * r.slip_fraction;
   state.counters["stick_%_of_contact"] = 100.0 * r.stick_fraction / r.contact_fraction;
+  state.counters["p_x_mean"] = r.mean_traction.x;
+  state.counters["max_p_T"] = max_traction;
+  state.counters["energy_pJ"] = 1e12 * r.elastic_energy;
+  state.counters["cpu_s"] = cpu;
   state.counters["ms_per_iter"] = 1e3 * seconds / r.iterations;
-  state.counters["fft_pair_ms"] = 1e3 * fft;
   state.counters["iter/fft_pair"] = seconds / r.iterations / fft;
   state.counters["threads"] = threads;
 }
+// anderson 0: the plain lagged bound (OuterAcceleration::None); 1: Anderson's mixing (the default).
 BENCHMARK(BM_FrictionalRoughSphere)
-    ->ArgNames({"n", "coulomb", "threads"})
-    ->Args({512, 0, 1})->Args({512, 0, 2})->Args({512, 1, 1})->Args({512, 1, 2})
+    ->ArgNames({"n", "case", "threads", "anderson"})
+    ->ArgsProduct({{512}, {0, 1, 2, 3}, {1}, {0, 1}})
+    ->ArgsProduct({{256}, {0, 1, 2, 3}, {1}, {0, 1}})
+    ->Args({256, 4, 1, 0})->Args({512, 4, 1, 0})->Args({729, 4, 1, 0})
+    ->Args({512, 0, 2, 0})->Args({512, 1, 2, 0})
+    ->Args({729, 0, 1, 0})->Args({729, 0, 1, 1})
     ->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);

@@ -1,17 +1,23 @@
 // Frictional contact (Appendix A): the Cattaneo–Mindlin partial slip of
 // (A.2), full sliding, exact coupled solutions of a wavy surface in full
-// contact, Tresca's cap, and gross sliding refused.
+// contact, Tresca's cap, gross sliding refused, and Anderson's mixing of the
+// friction bound's updates reaching the plain fixed point's answer.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <string>
 
 #include "input_error_of.hpp"
 #include "wearscale/bem/frictional_contact.hpp"
 #include "wearscale/bem/hertz.hpp"
 #include "wearscale/bem/normal_contact.hpp"
+#include "wearscale/bem/surface_generator.hpp"
 #include "wearscale/core/errors.hpp"
 
 using namespace wearscale;
@@ -287,4 +293,113 @@ TEST(FrictionalContact, AStopAskedForEndsTheSolveAtThatIterationAndOneNeverAsked
     EXPECT_THAT(e.what(), ::testing::HasSubstr("stopped at iteration"));
   }
   EXPECT_EQ(questions, 5);
+}
+
+namespace {
+// The rough sphere of the frictional benchmark (Fig. A.5's surface) on 128²
+// points: L = 500 µm, R = 6 mm, Sa = 0.01 µm, H = 0.8, k_l = k_r = 50, k_s = 64.
+RealField rough_sphere(std::uint64_t seed) {
+  const double l = 500e-6;
+  RoughSurfaceSpec spec;
+  spec.grid = Grid2D::square(128, l);
+  spec.hurst = 0.8;
+  spec.k_l = spec.k_r = 50.0;
+  spec.k_s = 64.0;
+  spec.seed = seed;
+  return add(generate_surface(spec, RoughnessMeasure::Sa, 0.01e-6), sphere(spec.grid, 6e-3, l / 2, l / 2));
+}
+
+FrictionalOptions with_acceleration(OuterAcceleration a) {
+  FrictionalOptions o;
+  o.outer_acceleration = a;
+  return o;
+}
+}  // namespace
+
+struct RoughCoulombCase {
+  double poisson;
+  std::uint64_t seed;
+};
+void PrintTo(const RoughCoulombCase& c, std::ostream* os) { *os << "ν = " << c.poisson << ", seed " << c.seed; }
+
+class AndersonMixing : public ::testing::TestWithParam<RoughCoulombCase> {};
+
+TEST_P(AndersonMixing, ReachesThePlainFixedPointsAnswerOnARoughSphere) {
+  // Coulomb μ = 0.5, ⟨p_N⟩ = 10 MPa, ⟨p_x⟩ = 2 MPa: the bound has a fixed
+  // point, and both paths stop on the same test, so the same contact, stick
+  // and slip points and the same tractions to the solver's tolerance.
+  const auto& c = GetParam();
+  const RealField h = rough_sphere(c.seed);
+  FrictionalContact plain(h, 70e9, c.poisson, FrictionLaw::coulomb(0.5)),
+      mixed(h, 70e9, c.poisson, FrictionLaw::coulomb(0.5));
+  const MeanTraction load{10e6, 2e6, 0.0};
+  const auto a = plain.solve(load, with_acceleration(OuterAcceleration::None));
+  const auto b = mixed.solve(load, with_acceleration(OuterAcceleration::Anderson));
+  EXPECT_EQ(a.accelerated_updates, 0);
+  EXPECT_GT(b.accelerated_updates, 0);  // the mixed bound was taken, so the paths differ
+  for (const auto* r : {&a, &b}) {
+    EXPECT_LT(r->error, 1e-10);
+    EXPECT_EQ(r->unsettled_points, 0);
+  }
+  EXPECT_EQ(a.contact_fraction, b.contact_fraction);
+  EXPECT_EQ(a.stick_fraction, b.stick_fraction);
+  EXPECT_EQ(a.slip_fraction, b.slip_fraction);
+  EXPECT_NEAR(b.elastic_energy, a.elastic_energy, 1e-9 * a.elastic_energy);
+  EXPECT_NEAR(b.mean_traction.x, 2e6, 1e-9 * 2e6);
+  // Pointwise, relative to the largest pressure (measured ≤ 1e-9).
+  double p_max = 0.0, worst = 0.0, pt_a = 0.0, pt_b = 0.0;
+  for (std::size_t k = 0; k < h.size(); ++k) {
+    p_max = std::max(p_max, plain.traction().z[k]);
+    pt_a = std::max(pt_a, std::hypot(plain.traction().x[k], plain.traction().y[k]));
+    pt_b = std::max(pt_b, std::hypot(mixed.traction().x[k], mixed.traction().y[k]));
+    for (const RealField VectorField::*f : {&VectorField::x, &VectorField::y, &VectorField::z})
+      worst = std::max(worst, std::abs((plain.traction().*f)[k] - (mixed.traction().*f)[k]));
+  }
+  EXPECT_LT(worst, 1e-7 * p_max);
+  EXPECT_NEAR(pt_b, pt_a, 1e-7 * pt_a);
+  RecordProperty("iterations_plain", a.iterations);
+  RecordProperty("iterations_anderson", b.iterations);
+  RecordProperty("traction_difference_over_p_max", fmt::format("{:.2g}", worst / p_max));
+}
+
+INSTANTIATE_TEST_SUITE_P(RoughSphere, AndersonMixing,
+                         ::testing::Values(RoughCoulombCase{0.17, 1}, RoughCoulombCase{0.3, 2}));
+
+TEST(FrictionalContact, AndersonMixingKeepsCattaneoMindlin) {
+  // The analytic check of the first test with the mixed bound: c within 1 %,
+  // the traction along y = 0 within 1.5 % of μ p0 over |x| ≤ 0.95a.
+  const Mindlin m;
+  const double q = 4e-5;
+  FrictionalContact contact(paraboloid(m.grid, m.radius, m.c), m.young, m.poisson, FrictionLaw::coulomb(m.mu));
+  const auto r = contact.solve({m.p_n, q, 0.0}, with_acceleration(OuterAcceleration::Anderson));
+  EXPECT_LT(r.error, 1e-10);
+  EXPECT_NEAR(std::sqrt(r.stick_fraction / pi), m.stick_radius(q), 0.01 * m.stick_radius(q));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < m.n; ++i) {
+    const double x = m.grid.x(i) - m.grid.x(m.c);
+    if (std::abs(x) <= 0.95 * m.a) worst = std::max(worst, std::abs(contact.traction().x(i, m.c) - m.traction(x, q)));
+  }
+  EXPECT_LT(worst, 0.015 * m.mu * m.p0);
+  RecordProperty("mixed_updates_decoupled", r.accelerated_updates);
+  // Coupled (ν = 0.3): Coulomb's conditions to the tolerance, the means imposed.
+  FrictionalContact coupled(paraboloid(m.grid, m.radius, m.c), m.young, 0.3, FrictionLaw::coulomb(m.mu));
+  const auto s = coupled.solve({m.p_n, q, 0.0}, with_acceleration(OuterAcceleration::Anderson));
+  EXPECT_LT(s.error, 1e-10);
+  EXPECT_EQ(s.unsettled_points, 0);
+  EXPECT_NEAR(s.mean_traction.x, q, 1e-12 * q);
+  for (std::size_t k = 0; k < m.grid.size(); ++k)
+    ASSERT_LE(std::hypot(coupled.traction().x[k], coupled.traction().y[k]),
+              m.mu * coupled.traction().z[k] * (1.0 + 1e-9));
+  RecordProperty("mixed_updates_coupled", s.accelerated_updates);
+}
+
+TEST(FrictionalContact, RefusesAnAndersonMemoryOutOfRange) {
+  const Grid2D g = Grid2D::square(64, 1.0);
+  FrictionalContact contact(paraboloid(g, 1.0, 32), 1.0, 0.5, FrictionLaw::coulomb(0.5));
+  for (int memory : {0, FrictionalOptions::max_anderson_memory + 1}) {
+    FrictionalOptions o = with_acceleration(OuterAcceleration::Anderson);
+    o.anderson_memory = memory;
+    EXPECT_THAT(input_error_of([&] { contact.solve({0.01, 0.001, 0.0}, o); }),
+                HasSubstr("anderson_memory = " + std::to_string(memory) + "; allowed: [1, 8]"));
+  }
 }

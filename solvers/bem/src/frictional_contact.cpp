@@ -431,9 +431,13 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
         state.settled = true;
       }
       if (!state.settled) {
+        std::vector<double> next(n);
+#pragma omp parallel for schedule(static)
+        for (std::size_t k = 0; k < n; ++k) next[k] = law.max_tangential(pz[k]);
+        const bool mixed = accelerate_bound(next, change, state);
 #pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
-          const double b = law.max_tangential(pz[k]);
+          const double b = next[k];
           if (st[k] == kSlip && bound[k] > 0.0) {  // sliding points stay on the cone
             px[k] *= b / bound[k];
             py[k] *= b / bound[k];
@@ -444,6 +448,9 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
         project_tangential(load.x, load.y, it, true);
         state.conjugate_n = state.conjugate_t = false;
         ++bound_updates_;
+        accelerated_updates_ += mixed ? 1 : 0;
+        log::debug("{}: iteration {}, bound update {} ({}), change {:.3g}", kSolver, it, bound_updates_,
+                   mixed ? "Anderson" : "plain", change);
         return Subproblem::Updated;
       }
     }
@@ -467,6 +474,89 @@ FrictionalContact::Subproblem FrictionalContact::check_subproblem(const Residual
         "allowed: ‖⟨p_T⟩‖ ≤ {:g} Pa",
         q0, law_.to_string(), capacity_, capacity_));
   return Subproblem::Solved;
+}
+
+// Anderson's mixing, type II (Walker & Ni 2011, Anderson 1965), of the
+// fixed point b = G(b), G(b) = law(p_N) of the subproblem solved with bound b:
+// with the residuals f_j = G(b_j) − b_j of the last m + 1 updates and their
+// differences ΔF, ΔG, γ minimises ‖f_k − ΔF γ‖₂ and the next bound is
+// G(b_k) − ΔG γ. Safeguards: a change that did not shrink restarts the
+// history (plain update); a mixed bound < 0 on the contact is not taken.
+bool FrictionalContact::accelerate_bound(std::vector<double>& next, double change, Iterate& state) {
+  if (acceleration_ != OuterAcceleration::Anderson) return false;
+  const std::size_t n = h_.size();
+  const double *bound = bound_.data(), *pz = p_.z.data();
+  if (!(change < state.last_change)) {
+    plain_history_.clear();
+    residual_history_.clear();
+  }
+  state.last_change = change;
+  std::vector<double> f(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < n; ++k) f[k] = next[k] - bound[k];
+  plain_history_.push_back(next);
+  residual_history_.push_back(std::move(f));
+  if (plain_history_.size() > static_cast<std::size_t>(memory_) + 1) {
+    plain_history_.erase(plain_history_.begin());
+    residual_history_.erase(residual_history_.begin());
+  }
+  const std::size_t m = plain_history_.size() - 1;
+  if (m == 0) return false;
+  // Normal equations ΔFᵀΔF γ = ΔFᵀ f_k (m ≤ 8 columns).
+  std::vector<double> sums(m * m + m, 0.0);
+  const std::vector<double>& fk = residual_history_[m];
+  std::vector<double> df(m);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t i = 0; i < m; ++i) df[i] = residual_history_[i + 1][k] - residual_history_[i][k];
+    for (std::size_t i = 0; i < m; ++i) {
+      for (std::size_t j = 0; j <= i; ++j) sums[i * m + j] += df[i] * df[j];
+      sums[m * m + i] += df[i] * fk[k];
+    }
+  }
+  body_->sum(sums);
+  std::vector<double> a(m * m), gamma(sums.begin() + static_cast<std::ptrdiff_t>(m * m), sums.end());
+  double trace = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j <= i; ++j) a[i * m + j] = a[j * m + i] = sums[i * m + j];
+    trace += a[i * m + i];
+  }
+  if (!(trace > 0.0)) return false;
+  for (std::size_t i = 0; i < m; ++i) a[i * m + i] += 1e-12 * trace;  // a tiny Tikhonov term for near-parallel columns
+  for (std::size_t i = 0; i < m; ++i) {  // Cholesky, a = L Lᵀ in the lower triangle
+    for (std::size_t j = 0; j <= i; ++j) {
+      double v = a[i * m + j];
+      for (std::size_t l = 0; l < j; ++l) v -= a[i * m + l] * a[j * m + l];
+      if (i == j) {
+        if (!(v > 0.0)) return false;
+        a[i * m + i] = std::sqrt(v);
+      } else {
+        a[i * m + j] = v / a[j * m + j];
+      }
+    }
+  }
+  for (std::size_t i = 0; i < m; ++i) {  // L y = rhs, Lᵀ γ = y
+    for (std::size_t l = 0; l < i; ++l) gamma[i] -= a[i * m + l] * gamma[l];
+    gamma[i] /= a[i * m + i];
+  }
+  for (std::size_t i = m; i-- > 0;) {
+    for (std::size_t l = i + 1; l < m; ++l) gamma[i] -= a[l * m + i] * gamma[l];
+    gamma[i] /= a[i * m + i];
+  }
+  for (double g : gamma)
+    if (!std::isfinite(g)) return false;
+  std::vector<double> mixed(n);
+  double negative = 0.0;
+#pragma omp parallel for reduction(+ : negative) schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    double b = next[k];
+    for (std::size_t i = 0; i < m; ++i) b -= gamma[i] * (plain_history_[i + 1][k] - plain_history_[i][k]);
+    mixed[k] = pz[k] > 0.0 ? b : 0.0;  // no friction out of contact
+    negative += pz[k] > 0.0 && b < 0.0 ? 1.0 : 0.0;
+  }
+  sum(negative);
+  if (negative > 0.0) return false;  // out of the admissible set: the plain update
+  next.swap(mixed);
+  return true;
 }
 
 // The normal direction t_N = d_N + β t_N,old on the contact, shifted to zero
@@ -666,9 +756,16 @@ FrictionalResult FrictionalContact::solve(const MeanTraction& load, const Fricti
     throw InputError(fmt::format("frictional contact: tolerance = {:g}; allowed: (0, {:g}] (a larger one lets a "
                                  "solve stop before it has an answer)",
                                  opt.tolerance, FrictionalOptions::max_tolerance));
+  if (!(opt.anderson_memory >= 1 && opt.anderson_memory <= FrictionalOptions::max_anderson_memory))
+    throw InputError(fmt::format("frictional contact: anderson_memory = {}; allowed: [1, {}]", opt.anderson_memory,
+                                 FrictionalOptions::max_anderson_memory));
   tolerance_ = opt.tolerance;
   history_.clear();
-  bound_updates_ = 0;
+  bound_updates_ = accelerated_updates_ = 0;
+  acceleration_ = opt.outer_acceleration;
+  memory_ = opt.anderson_memory;
+  plain_history_.clear();
+  residual_history_.clear();
   if (load.normal == 0.0) {
     reset();
     for (RealField* f : {&u_.x, &u_.y, &u_.z}) f->fill(0.0);
@@ -736,9 +833,12 @@ FrictionalResult FrictionalContact::finish(int iterations, double error, double 
     work += p_.x[k] * u_.x[k] + p_.y[k] * u_.y[k] + pn * u_.z[k];
   }
   sum(sum_x, sum_y, sum_z, contact, stick, work, unsettled);
+  plain_history_.clear();  // Anderson's history is the solve's own
+  residual_history_.clear();
   FrictionalResult r;
   r.iterations = iterations;
   r.bound_updates = bound_updates_;
+  r.accelerated_updates = accelerated_updates_;
   r.unsettled_points = static_cast<long>(unsettled);
   r.error = error;
   r.normal_error = error_n;

@@ -62,10 +62,28 @@ struct MeanTraction {
   double x = 0.0, y = 0.0;
 };
 
+/// How the lagged friction bound moves from one subproblem to the next.
+///  None:     the law's bound of the last solution, p_T,max = law(p_N) (the
+///            plain fixed point; the default);
+///  Anderson: Anderson's mixing (type II) of the last `anderson_memory` plain
+///            updates (Walker & Ni 2011), kept only while the bound's change
+///            shrinks and the mixed bound stays ≥ 0 on the contact; else the
+///            plain one. It does not save iterations (docs/bem.md, "Frictional
+///            contact"): the iterations go to the inner solves, not to the
+///            number of bound updates.
+/// Both stop on the same test (the law's bound of the solution changes by less
+/// than the tolerance), so where the bound has a fixed point (Coulomb) they
+/// reach the same answer; a Tresca bound that cycles is kept where each path
+/// leaves it.
+enum class OuterAcceleration { None, Anderson };
+
 struct FrictionalOptions {
   static constexpr double max_tolerance = 1e-3;  ///< as ContactOptions::max_tolerance
+  static constexpr int max_anderson_memory = 8;
   double tolerance = 1e-10;   ///< on FrictionalResult::error, in (0, max_tolerance]
   int max_iterations = 20000;
+  OuterAcceleration outer_acceleration = OuterAcceleration::None;
+  int anderson_memory = 4;    ///< past updates mixed, in [1, max_anderson_memory]
   /// Asked once an iteration (if set): true ends the solve with Interrupted,
   /// on every process at the same iteration (as ContactOptions::stop).
   std::function<bool()> stop = nullptr;
@@ -77,6 +95,7 @@ enum class ContactState : std::uint8_t { Open = 0, Stick = 1, Slip = 2 };
 struct FrictionalResult {
   int iterations = 0;
   int bound_updates = 0;      ///< subproblems solved before the bound held (see above)
+  int accelerated_updates = 0;  ///< of those, the ones that took Anderson's mixed bound (OuterAcceleration)
   long unsettled_points = 0;  ///< contact points whose p_T,max still differs from the law's (see above)
   /// ε = ε_N + ε_T, the cost (A.14) made relative:
   ///   ε_N = Σ p_N |g_N| / (Σ p_N · h_rms),
@@ -149,6 +168,7 @@ class FrictionalContact {
     double bound_change = 1.0, best_change = std::numeric_limits<double>::infinity();  // relative change of the friction bound
     int restarts = 0, stalled = 0;  // tangential restarts; bound updates without progress
     bool settled = false;           // the bound is kept (see the header)
+    double last_change = std::numeric_limits<double>::infinity();  // the bound's change at the last update
     double first_error = 0.0;
   };
   struct GapShifts {           // pass 1: the rigid-body shifts of the gaps
@@ -183,6 +203,9 @@ class FrictionalContact {
   // shifting only the points off the cone if `free_only` (and they can carry
   // it); returns false if the discs cannot carry it (gross sliding).
   bool project_tangential(double target_x, double target_y, int iteration, bool free_only);
+  // The bound of the next subproblem from the law's bound `next` of this
+  // solution: `next` itself, or Anderson's mix; true if mixed.
+  bool accelerate_bound(std::vector<double>& next, double change, Iterate& state);
   FrictionalResult finish(int iterations, double error, double error_n, double error_t, const MeanTraction& load);
   // Partial sums of this process → the totals over every point (body_->sum; serial: unchanged).
   template <class... T>
@@ -203,7 +226,12 @@ class FrictionalContact {
   double shift_n_ = 0.0, shift_x_ = 0.0, shift_y_ = 0.0;  // gap shifts of the last iteration
   bool all_sliding_ = false, overloaded_ = false;
   double capacity_ = 0.0;  // ⟨p_T,max⟩ at the last projection
-  int bound_updates_ = 0;
+  int bound_updates_ = 0, accelerated_updates_ = 0;
+  OuterAcceleration acceleration_ = OuterAcceleration::None;
+  int memory_ = 4;
+  // Anderson's history, oldest first: the plain updates G(b_j) = law(p_N) and
+  // their residuals G(b_j) − b_j on this process's points.
+  std::vector<std::vector<double>> plain_history_, residual_history_;
   double tolerance_ = 1e-10;  // of the solve under way
   std::vector<double> history_;
 };
