@@ -2,6 +2,7 @@
 // strength σ_m,T of each material record (Table 2.1): σ_max = σ_dyn = σ_m,T.
 #include <map>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/strength_law.hpp"
@@ -40,6 +41,7 @@ class MolecularIdeal final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_ideal) {
+  add_backend_keys("molecular", "ideal", [] { return Schema{}; });  // reads [materials] only
   registry.add({"molecular", "ideal", "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)", {},
                 {"ShearStrength(<each material of [materials]>)"}},
                [](const ScaleSetup& s) { return std::make_unique<MolecularIdeal>(s); });

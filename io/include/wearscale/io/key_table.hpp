@@ -54,7 +54,9 @@ class KeyTable {
     std::function<void(const Key&, const Config&, Spec&)> read;
     std::function<std::string(Spec&)> default_of;  ///< the member's default as text
 
+    std::function<bool(const Spec&)> required_when;  ///< required or not by the keys read before
     Range range_for(const Spec& s) const { return range_of ? range_of(s) : range; }
+    bool required_for(const Spec& s) const { return required || (required_when && required_when(s)); }
   };
 
   /// A number in SI; a string with a unit of dimension `dim` is converted.
@@ -67,7 +69,7 @@ class KeyTable {
       const Range r = self.range_for(s);
       double& v = std::invoke(at, s);
       const std::string& name = self.row.key;
-      if (self.required)
+      if (self.required_for(s))
         v = c.number(name, r, self.dimension);
       else
         v = c.number_or(name, self.number_default ? self.number_default(s) : v, r, self.dimension);
@@ -89,7 +91,7 @@ class KeyTable {
       auto& v = std::invoke(at, s);
       using I = std::remove_reference_t<decltype(v)>;
       const Range r = self.range_for(s);
-      v = static_cast<I>(self.required ? c.integer(self.row.key, r)
+      v = static_cast<I>(self.required_for(s) ? c.integer(self.row.key, r)
                                        : c.integer_or(self.row.key, static_cast<long>(v), r));
     };
     k.default_of = [at](Spec& s) { return fmt::format("{}", std::invoke(at, s)); };
@@ -101,7 +103,7 @@ class KeyTable {
     Key k = make(std::move(key), "boolean", "true | false", "", std::move(doc));
     k.read = [at](const Key& self, const Config& c, Spec& s) {
       bool& v = std::invoke(at, s);
-      v = self.required ? c.boolean(self.row.key) : c.boolean_or(self.row.key, v);
+      v = self.required_for(s) ? c.boolean(self.row.key) : c.boolean_or(self.row.key, v);
     };
     k.default_of = [at](Spec& s) { return std::invoke(at, s) ? std::string("true") : std::string("false"); };
     return add(std::move(k));
@@ -113,7 +115,7 @@ class KeyTable {
     Key k = make(std::move(key), "string", "", "", std::move(doc));
     k.read = [at](const Key& self, const Config& c, Spec& s) {
       std::string& v = std::invoke(at, s);
-      v = self.required ? c.string(self.row.key)
+      v = self.required_for(s) ? c.string(self.row.key)
                         : c.string_or(self.row.key, self.text_default ? self.text_default(s) : v);
     };
     k.default_of = [at](Spec& s) { return std::string(std::invoke(at, s)); };
@@ -133,7 +135,7 @@ class KeyTable {
     };
     k.read = [at, values, names, name_of](const Key& self, const Config& c, Spec& s) {
       auto& v = std::invoke(at, s);
-      const std::string text = self.required ? c.choice(self.row.key, names)
+      const std::string text = self.required_for(s) ? c.choice(self.row.key, names)
                                              : c.choice_or(self.row.key,
                                                            self.text_default ? self.text_default(s) : name_of(v),
                                                            names);
@@ -160,6 +162,16 @@ class KeyTable {
     return add(std::move(k));
   }
 
+  /// A non-empty array of numbers or strings, each as text (Config::values_as_text); required.
+  template <class At>
+  KeyTable& texts(std::string key, At at, std::string doc) {
+    Key k = make(std::move(key), "list", "an array of numbers or strings", "", std::move(doc));
+    k.required = true;
+    k.read = [at](const Key& self, const Config& c, Spec& s) { std::invoke(at, s) = c.values_as_text(self.row.key); };
+    k.default_of = [](Spec&) { return std::string(); };
+    return add(std::move(k));
+  }
+
   /// A sub-table read by its own reader `read(c, spec)` (`c`: this table's view).
   KeyTable& table(std::string key, std::string doc, std::function<void(const Config&, Spec&)> reader,
                   std::string allowed = {}) {
@@ -174,6 +186,11 @@ class KeyTable {
   /// No default: an absent key is an error.
   KeyTable& required() {
     last().required = true;
+    return *this;
+  }
+  /// Required when `when` holds on the keys read before (else its default applies).
+  KeyTable& required_when(std::function<bool(const Spec&)> when) {
+    last().required_when = std::move(when);
     return *this;
   }
   /// The default as the docs show it, for one the member's initializer does not give.
