@@ -188,3 +188,25 @@ TEST(KeyTable, ARequiredKeyAndAConditionalOne) {
   EXPECT_EQ(table.schema()[0].fallback, "");
   EXPECT_THROW(table.key("thickness_"), std::logic_error);
 }
+
+TEST(KeyTable, AKeyRequiredByTheKeysBeforeItAndAListOfValuesAsText) {
+  struct Named {
+    std::string default_name;  // not a key
+    std::string name;
+    std::vector<std::string> values;
+  };
+  const auto table = KeyTable<Named>()
+                         .string("name", &Named::name, "name")
+                         .computed_text([](const Named& n) { return n.default_name; }, "the study's")
+                         .required_when([](const Named& n) { return n.default_name.empty(); })
+                         .texts("values", &Named::values, "values");
+  Named with_default{.default_name = "contact", .name = {}, .values = {}};
+  const auto c = Config::from_string("values = [1, \"8 mm/s\"]", "n.toml");
+  table.read(c, with_default);
+  EXPECT_EQ(with_default.name, "contact");
+  EXPECT_EQ(with_default.values, (std::vector<std::string>{"1", "8 mm/s"}));
+  Named without;
+  EXPECT_THAT(input_error_of([&] { table.read(c, without); }), HasSubstr("missing required string"));
+  EXPECT_EQ(table.schema()[0].fallback, "the study's");
+  EXPECT_EQ(table.schema()[1].type, "list");
+}
