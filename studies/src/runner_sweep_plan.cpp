@@ -80,6 +80,7 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   SweepPlan plan;
   SweepKeys given;
   sweep_keys().read(probe.section("sweep"), given);
+  probe.section("sweep").reject_unknown_keys();  // a misspelt [sweep] key is no silent default
   const std::string key = given.key;
   const auto values = given.values;
   plan.table_name = given.table;
