@@ -272,6 +272,8 @@ std::vector<std::string> Config::keys(std::string_view table) const {
 
 void Config::mark_used(std::string_view key) const { state_->used.insert(full_key(key)); }
 
+std::vector<std::string> Config::keys_read() const { return {state_->used.begin(), state_->used.end()}; }
+
 InputError Config::error(std::string_view key, std::string_view problem, std::string_view allowed) const {
   const std::string full = full_key(key);
   if (!has(key)) {
@@ -465,8 +467,17 @@ std::string Config::string_or(std::string_view key, std::string fallback) const 
 }
 
 std::string Config::choice(std::string_view key, std::initializer_list<std::string_view> allowed) const {
+  return choice(key, std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+std::string Config::choice_or(std::string_view key, std::string fallback,
+                              std::initializer_list<std::string_view> allowed) const {
+  return choice_or(key, std::move(fallback), std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+std::string Config::choice(std::string_view key, const std::vector<std::string>& allowed) const {
   std::string list;
-  for (auto a : allowed) list += (list.empty() ? "" : ", ") + fmt::format("\"{}\"", a);
+  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + fmt::format("\"{}\"", a);
   mark_used(key);
   const toml::node* n = find(state_->root, full_key(key));
   if (n == nullptr) throw error(key, "missing required choice", list);
@@ -477,7 +488,7 @@ std::string Config::choice(std::string_view key, std::initializer_list<std::stri
 }
 
 std::string Config::choice_or(std::string_view key, std::string fallback,
-                              std::initializer_list<std::string_view> allowed) const {
+                              const std::vector<std::string>& allowed) const {
   mark_used(key);
   if (!has(key)) {
     record_default(key, fallback);

@@ -106,7 +106,7 @@ class RoughShearStudy final : public DemStudy {
     const std::string t = "dem.rough_shear";
     Schema s = material_keys({.materials = "Si, SiO2 or a [materials.define] name"});
     s.insert(s.end(),
-             {{t + ".length", "number", "> 0", "m", "", "cell length L (thesis: 25, 50, 100 d0)", "--length"},
+             {{t + ".length", "number", "≥ 10 d0", "m", "25 d0", "cell length L (thesis: 25, 50, 100 d0)", "--length"},
               {t + ".roughness", "number", "[0, 0.1]", "1", "0.02", "initial Sa / L (thesis: 0.01, 0.02, 0.04)",
                "--roughness"},
               {t + ".height", "number", "≥ 2 (wall_thickness + 2) d0", "m", "14 d0", "cell height H", ""},

@@ -97,8 +97,8 @@ class TrappedParticlesStudy final : public DemStudy {
     Schema s = material_keys({.materials = "Si, SiO2 or a [materials.define] name"});
     s.insert(s.end(),
              {{t + ".count", "integer", "1 … 16", "1", "3", "number of loose particles (thesis: 2 to 4)", "--n"},
-              {t + ".diameter", "number", "> 0", "m", "", "diameter of the loose particles (= the gap)", "--D"},
-              {t + ".length", "number", "> 0", "m", "3 n D", "cell length L", "--length"},
+              {t + ".diameter", "number", "≥ 3 d0", "m", "", "diameter of the loose particles (= the gap)", "--D"},
+              {t + ".length", "number", "≥ n (D + d0)", "m", "3 n D", "cell length L", "--length"},
               {t + ".height", "number", "≥ D + 2 (wall_thickness + 2) d0", "m", "D + 2 (wall_thickness + 3) d0",
                "cell height H", ""},
               clearance_key(t, "clearance between the loose particles and the surfaces, in d0"),

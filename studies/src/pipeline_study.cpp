@@ -9,6 +9,7 @@
 #include "wearscale/core/log.hpp"
 #include "wearscale/core/output_set.hpp"
 #include "wearscale/core/task_farm.hpp"
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/pipeline.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/studies/study.hpp"
@@ -65,7 +66,15 @@ class PipelineStudy final : public Study {
   }
   Schema schema() const override {
     Schema schema = {{"scale.<kind>.backend", "string", "see `wearscale backends`", "", "", "the backend of a scale", ""}};
+    for (auto& k : coupling::materials_schema()) schema.push_back(std::move(k));
     for (auto& k : material_schema()) schema.push_back(std::move(k));
+    // Each backend's keys, its name before the meaning (two backends of a kind may share a key).
+    for (const auto& info : scale_registry().list())
+      for (auto& k : backend_schema(info.kind, info.name))
+        if (!k.key.ends_with(".backend")) {
+          k.doc = info.name + ": " + k.doc;
+          schema.push_back(std::move(k));
+        }
     return schema;
   }
   std::string default_case_name() const override { return ""; }  // a case names itself

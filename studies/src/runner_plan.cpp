@@ -11,6 +11,7 @@
 #include "wearscale/core/fft.hpp"
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/core/utf8.hpp"
+#include "wearscale/studies/runner_keys.hpp"
 
 namespace wearscale::studies::runner {
 
@@ -71,19 +72,19 @@ PreparedRun prepare_keys(Config cfg_in, const std::optional<std::filesystem::pat
   Config& cfg = run.cfg;
   run.study = study_for(cfg, options);
   run.summary.study = run.study->name();
-  const std::string default_name = run.study->default_case_name();  // empty: the case must name itself
-  run.summary.case_name = default_name.empty() ? cfg.string("case.name") : cfg.string_or("case.name", default_name);
-  cfg.string_or("case.description", "");
-  const std::string default_dir = run.study->default_output_dir();
-  const std::string case_dir = cfg.string_or("output.dir", default_dir.empty() ? "out/" + run.summary.case_name : default_dir);
-  run.summary.output_dir = out ? *out : std::filesystem::path(case_dir);
+  CaseKeys names;
+  names.default_name = run.study->default_case_name();  // empty: the case must name itself
+  names.default_dir = run.study->default_output_dir();
+  case_keys().read(cfg, names);
+  run.summary.case_name = names.name;
+  run.summary.output_dir = out ? *out : std::filesystem::path(names.output_dir);
   require_folder_or_nothing(run.summary.output_dir, out ? "--out" : "output.dir");
   cfg.mark_used("sweep");  // read by run_case
   // [run]: how the run is carried out, not what it computes.
-  run.policy = checkpoint_policy(cfg);
-  const Config r = cfg.section("run");
-  run.fft_rigor = r.choice_or("fft_planning", "measure", {"measure", "estimate"}) == "estimate" ? PlanRigor::Estimate
-                                                                                                : PlanRigor::Measure;
+  RunKeys how;
+  run_keys().read(cfg.section("run"), how);
+  run.policy = how.checkpoints;
+  run.fft_rigor = how.fft_planning;
   // From here on: a plan made while preparing (a generated surface's) would
   // otherwise be measured, and a measured plan picks its algorithm by timing.
   FFTPlanCache::global().set_rigor(run.fft_rigor);

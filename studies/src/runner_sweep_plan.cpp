@@ -1,5 +1,7 @@
 #include "runner_sweep_plan.hpp"
 
+#include "wearscale/studies/runner_keys.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <exception>
@@ -76,13 +78,16 @@ constexpr double prepared_run_bytes = 256.0 * 1024.0;
 
 SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config& probe) {
   SweepPlan plan;
-  const std::string key = probe.string("sweep.key");
-  const auto values = probe.values_as_text("sweep.values");
-  plan.table_name = probe.string_or("sweep.table", "sweep.csv");
-  plan.parallel = probe.boolean_or("sweep.parallel", true);
+  SweepKeys given;
+  sweep_keys().read(probe.section("sweep"), given);
+  probe.section("sweep").reject_unknown_keys();  // a misspelt [sweep] key is no silent default
+  const std::string key = given.key;
+  const auto values = given.values;
+  plan.table_name = given.table;
+  plan.parallel = given.parallel;
   // [sweep.series]: the sweep once more per value of a second key.
-  plan.series_key = probe.has("sweep.series") ? probe.string("sweep.series.key") : std::string();
-  plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : probe.values_as_text("sweep.series.values");
+  plan.series_key = given.series_key;
+  plan.series = plan.series_key.empty() ? std::vector<std::string>{""} : given.series_values;
   const std::vector<std::string>& series = plan.series;
   // Every run is prepared (and held) before any starts: their number is bounded before the first.
   const double run_count = static_cast<double>(values.size()) * static_cast<double>(series.size());
@@ -102,12 +107,12 @@ SweepPlan plan_sweep(const CaseLoader& parse, const RunOptions& options, Config&
   {
     const auto study = study_for(probe, options);
     sweep.study = study->name();
-    const std::string default_name = study->default_case_name();
-    sweep.case_name = default_name.empty() ? probe.string("case.name") : probe.string_or("case.name", default_name);
-    const std::string default_dir = study->default_output_dir();
-    sweep.output_dir = options.output_dir ? *options.output_dir
-                                          : std::filesystem::path(probe.string_or(
-                                                "output.dir", default_dir.empty() ? "out/" + sweep.case_name : default_dir));
+    CaseKeys names;
+    names.default_name = study->default_case_name();
+    names.default_dir = study->default_output_dir();
+    case_keys().read(probe, names);
+    sweep.case_name = names.name;
+    sweep.output_dir = options.output_dir ? *options.output_dir : std::filesystem::path(names.output_dir);
   }
   sweep.sweep_key = key;
   sweep.series_key = plan.series_key;

@@ -54,6 +54,26 @@ TEST(Cli, BackendsListsTheRegisteredBackends) {
   EXPECT_EQ(j[0]["kind"], "macro");
 }
 
+TEST(Cli, BackendsListTheirKeysFromTheirKeyTables) {
+  const auto r = run_cli("backends --keys", work);
+  EXPECT_EQ(r.status, 0) << r.err;
+  // help_line: "meaning [unit; range; default]: key"
+  EXPECT_THAT(r.out, HasSubstr("explicit time step (the adaptive integrator's first step) [s; (0, distance/velocity]; "
+                               "default 0.02]: scale.macro.time_step"));
+  EXPECT_THAT(r.out, HasSubstr("[[8, 4096]; default 128]: scale.macro.grid"));
+  const auto j = nlohmann::json::parse(run_cli("backends --keys --json", work).out);
+  bool found = false;
+  for (const auto& b : j)
+    if (b["kind"] == "macro" && b["name"] == "hertz")
+      for (const auto& k : b["keys"])
+        if (k["key"] == "scale.macro.profile_points") {
+          found = true;
+          EXPECT_EQ(k["default"], "201");
+          EXPECT_EQ(k["allowed"], "≥ 3");
+        }
+  EXPECT_TRUE(found);
+}
+
 TEST(Cli, EverySubcommandHasHelp) {
   for (const std::string sub : {"run", "backends", "version"}) {
     const auto r = run_cli(sub + " --help", work);

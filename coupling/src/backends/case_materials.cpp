@@ -5,9 +5,30 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/io/material_definitions.hpp"
 
 namespace wearscale::coupling {
+
+const KeyTable<CaseMaterialKeys>& case_material_keys() {
+  using K = CaseMaterialKeys;
+  static const auto table =
+      KeyTable<K>()
+          .string("pin", &K::pin, "material of the pin (a built-in record or a [materials.define.<name>] table)")
+          .required()
+          .string("disc", &K::disc, "material of the disc (the substrate under its layer)")
+          .required()
+          .string("layer.material", &K::layer_material, "material of the disc's surface layer (its oxide)")
+          .computed_text([](const K& k) { return k.disc; }, "the disc's")
+          .number("layer.thickness", &K::layer_thickness, Range::non_negative().or_infinite(), units::length,
+                  "thickness h of the layer; inf: the layer's material in bulk")
+          .required()
+          .read_if([](const Config& c, const K&) { return c.has("layer"); })
+          .fallback("0 without a [materials.layer] table; required in one");
+  return table;
+}
+
+Schema materials_schema() { return case_material_keys().schema("materials"); }
 
 materials::MaterialLibrary material_library(const Config& root) {
   materials::MaterialLibrary library;

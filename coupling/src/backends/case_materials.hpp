@@ -6,10 +6,20 @@
 
 #include "wearscale/coupling/scale.hpp"
 #include "wearscale/io/config.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/materials/material.hpp"
 #include "wearscale/materials/strength_law.hpp"
 
 namespace wearscale::coupling {
+
+/// The keys of [materials] (besides define.<name>): the bodies of the
+/// pin-on-disc test and the disc's oxide layer.
+struct CaseMaterialKeys {
+  std::string pin, disc;
+  std::string layer_material;   ///< default: the disc's material
+  double layer_thickness = 0.0;  ///< 0: no layer (no [materials.layer] table)
+};
+const KeyTable<CaseMaterialKeys>& case_material_keys();
 
 /// Built-in materials plus every [materials.define.<name>] of the case.
 materials::MaterialLibrary material_library(const Config& root);

@@ -4,26 +4,52 @@
 #include <vector>
 
 #include "wearscale/bem/hertz.hpp"
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/io/csv.hpp"
 
 namespace wearscale::coupling {
 
 namespace {
 
+// The keys of [scale.macro] with backend = "hertz".
+struct HertzKeys {
+  double pin_radius = 0.0, normal_load = 0.0;
+  // Both bodies share one material here, as in the thesis' contact solve (§9.3.2).
+  double elastic_modulus = 0.0, poisson_ratio = 0.0;
+  std::size_t profile_points = 201;
+};
+
+const KeyTable<HertzKeys>& hertz_keys() {
+  using K = HertzKeys;
+  static const auto table =
+      KeyTable<K>()
+          .number("pin_radius", &K::pin_radius, Range::positive(), units::length, "pin radius R")
+          .required()
+          .number("normal_load", &K::normal_load, Range::positive(), units::force, "normal load F")
+          .required()
+          .number("elastic_modulus", &K::elastic_modulus, Range::positive(), units::pressure,
+                  "Young's modulus E of both bodies")
+          .required()
+          .number("poisson_ratio", &K::poisson_ratio, Range::closed_open(-1.0, 0.5), "Poisson's ratio ν of both bodies")
+          .required()
+          .integer("profile_points", &K::profile_points, Range::at_least(3),
+                   "points of the pressure profile, r from 0 to 1.5 a");
+  return table;
+}
+
 class MacroHertz final : public Scale {
  public:
   static inline const Ports ports{{}, {{Quantity::MacroResult, "pin/disc"}}};
 
   explicit MacroHertz(const ScaleSetup& setup) : provenance_(setup.provenance()) {
-    const Config& c = setup.section;
-    contact_.radius = c.number("pin_radius", Range::positive(), units::length);
-    contact_.load = c.number("normal_load", Range::positive(), units::force);
-    // Both bodies share one material here, as in the thesis' contact solve (§9.3.2).
-    const double e = c.number("elastic_modulus", Range::positive(), units::pressure);
-    const double nu = c.number("poisson_ratio", Range::closed_open(-1.0, 0.5));
-    contact_.e_star = bem::effective_modulus(e, nu, e, nu);
-    points_ = static_cast<std::size_t>(c.integer_or("profile_points", 201, Range::at_least(3)));
+    HertzKeys k;
+    hertz_keys().read(setup.section, k);
+    contact_.radius = k.pin_radius;
+    contact_.load = k.normal_load;
+    contact_.e_star = bem::effective_modulus(k.elastic_modulus, k.poisson_ratio, k.elastic_modulus, k.poisson_ratio);
+    points_ = k.profile_points;
   }
 
   std::vector<Key> consumes() const override { return ports.consumes; }
@@ -58,6 +84,7 @@ class MacroHertz final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_hertz) {
+  add_backend_keys("macro", "hertz", [] { return hertz_keys().schema("scale.macro"); });
   registry.add<MacroHertz>("macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)");
 }
 

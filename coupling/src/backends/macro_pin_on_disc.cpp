@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "backends/pin_on_disc_surfaces.hpp"
@@ -15,6 +16,7 @@
 #include "wearscale/core/progress.hpp"
 #include "wearscale/io/checkpoint.hpp"
 #include "wearscale/io/csv.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/io/xdmf.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
@@ -26,6 +28,188 @@ namespace wearscale::coupling {
 
 namespace {
 
+// The keys of [scale.macro] with backend = "bem-pin-on-disc", and what they
+// fill: the model's setup (its defaults, the thesis setup of §9.3.2 "Setup",
+// are PinOnDiscSetup's initializers) and the backend's own choices.
+struct PinOnDiscKeys {
+  tribometer::PinOnDiscSetup setup;
+  std::string elastic = "pin";
+  std::string integrator = "explicit";
+  tribometer::AdaptiveOptions adaptive;
+  std::size_t fields_every = 0;
+  double moving_average = 0.0;
+  std::vector<std::pair<std::string, std::string>> surfaces;  ///< key, what the initial surface is
+  // Not keys: the contact moduli `elastic` picks from (of the case's materials).
+  double e_star_pin = 0.0, e_star_pair = 0.0;
+};
+
+// The adaptive integrator by default where it is verified against the
+// converged explicit stepping (within 0.1 %: planar and tilted discs under
+// the physical reading, docs/pin_on_disc.md); the thesis' explicit step is
+// one key away, and the default where the adaptive one is not verified.
+std::string default_integrator(const PinOnDiscKeys& k) {
+  const bool verified = k.setup.track == tribometer::Track::Averaged && !k.setup.tilt_in_layer_test();
+  return verified ? "adaptive" : "explicit";
+}
+
+// The checks between the keys of the cell, the track and the time step, before
+// the initial surfaces are read on that grid.
+void warn_unverified_integrator(const Config& c, PinOnDiscKeys& k) {
+  if (k.integrator == "adaptive" && k.setup.tilt_in_layer_test())
+    log::warn("{}: the adaptive integrator with layer_test = \"tilted\" and a slope is not verified: the material "
+              "changes cell by cell as the tilt turns, and its μ_mean and wear were 2-7 % off the converged "
+              "explicit stepping (docs/pin_on_disc.md); integrator = \"explicit\" is the default there",
+              c.full_key("integrator"));
+}
+
+void check_setup(const Config& c, PinOnDiscKeys& k) {
+  auto& s = k.setup;
+  s.validate();
+  // Every step keeps a sample (the series, its copy in each checkpoint and in run.h5): a time step
+  // many orders below the distance's would exhaust memory long before the run ended.
+  const double steps = std::ceil(s.distance / s.explicit_step());
+  require_memory(steps * 3.0 * 9.0 * sizeof(double),
+                 fmt::format("{}: key '{}': {:.3g} steps of {:g} s over {:g} m", c.where("time_step"),
+                             c.full_key("time_step"), steps, s.time_step, s.distance),
+                 "a longer time_step or a shorter distance");
+  if (s.track == tribometer::Track::Resolved) {
+    const double revolution = s.tilt_period();
+    const double cell = s.size / static_cast<double>(s.grid);
+    if (c.has("nonplanarity.period") &&
+        std::lround(s.nonplanar_period / cell) != static_cast<long>(s.track_cells()))  // not the same whole track
+      throw c.error("nonplanarity.period",
+                    fmt::format("a resolved track's tilt turns with the disc, once per revolution ({:g} m: "
+                                "path_length on the {}-cell track)",
+                                revolution, s.track_cells()),
+                    fmt::format("absent, or {:g} m", revolution));
+    if (s.step_bounded() && k.integrator == "explicit")
+      log::info("{}: on a resolved track the pin moves at most one cell a step: the explicit step is {:.4g} s "
+                "(one {:.4g} m cell at {:g} m/s), not time_step = {:g} s",
+                c.full_key("track"), s.explicit_step() / s.velocity, s.size / static_cast<double>(s.grid),
+                s.velocity, s.time_step);
+  }
+}
+
+// The initial roughness of the pin (over its window) and of the disc (over the
+// resolved track's strip): a measured file or a generated surface (docs/pin_on_disc.md).
+void read_pin_surface(const Config& c, PinOnDiscKeys& k) {
+  auto& s = k.setup;
+  if (!c.has("pin_surface")) return;
+  auto surface = read_initial_surface(c, "pin_surface", Grid2D::square(s.grid, s.size), s.size);
+  s.pin_roughness = std::move(surface.heights);
+  k.surfaces.emplace_back("pin_surface", std::move(surface.description));
+}
+
+void read_disc_surface(const Config& c, PinOnDiscKeys& k) {
+  auto& s = k.setup;
+  if (!c.has("disc_surface")) return;
+  if (s.track != tribometer::Track::Resolved)
+    throw c.error("disc_surface",
+                  "the averaged track's disc is one height per x column, invariant along the sliding "
+                  "direction: it holds no roughness along it (a rough surface's mean along y is all but flat, "
+                  "so the rough disc would be a smooth one)",
+                  "track = \"resolved\" (the disc stored over the whole circumference), or no disc_surface");
+  const std::size_t cells = s.track_cells();
+  const double cell = s.size / static_cast<double>(s.grid);
+  auto surface = read_initial_surface(c, "disc_surface",
+                                      Grid2D(s.grid, cells, s.size, static_cast<double>(cells) * cell), s.size);
+  s.disc_roughness = std::move(surface.heights);
+  k.surfaces.emplace_back("disc_surface", std::move(surface.description));
+}
+
+const KeyTable<PinOnDiscKeys>& pin_on_disc_keys() {
+  using K = PinOnDiscKeys;
+  using tribometer::LayerTest;
+  using tribometer::Track;
+  using namespace units;
+  const auto setup = [](auto member) { return [member](K& k) -> auto& { return k.setup.*member; }; };
+  const auto adaptive = [](auto member) { return [member](K& k) -> auto& { return k.adaptive.*member; }; };
+  using PS = tribometer::PinOnDiscSetup;
+  using AO = tribometer::AdaptiveOptions;
+  static const auto table =
+      KeyTable<K>()
+          .integer("grid", setup(&PS::grid), Range::closed(8, 4096), "BEM cells n per side of the pin's window")
+          .number("size", setup(&PS::size), Range::positive(), length, "side L of the pin's window")
+          .number("pin_radius", setup(&PS::pin_radius), Range::positive(), length, "pin radius R (> size/√2: the sphere covers the window)")
+          .number("normal_load", setup(&PS::normal_load), Range::positive(), force, "normal load F_N")
+          .number("velocity", setup(&PS::velocity), Range::positive(), units::velocity, "sliding velocity v")
+          .number("path_length", setup(&PS::path_length), Range::positive(), length,
+                  "circumference L_path of the wear track (≥ size)")
+          .number("distance", setup(&PS::distance), Range::positive(), length, "sliding distance to cover")
+          // At least one step: a longer one would overshoot the distance (the last step is cut to land on it).
+          .number("time_step", setup(&PS::time_step), Range::positive(), time,
+                  "explicit time step (the adaptive integrator's first step)")
+          .range_from([](const K& k) { return Range::open_closed(0.0, k.setup.distance / k.setup.velocity); },
+                      "(0, distance/velocity]")
+          .number("nonplanarity.slope", setup(&PS::nonplanar_slope), Range::closed_open(0.0, 0.2),
+                  "slope of the disc's rotating tilt (§9.3.2, Figs. 9.23-9.25)")
+          .number("nonplanarity.period", setup(&PS::nonplanar_period), Range::positive(), length,
+                  "the tilt's rotation period in sliding distance (resolved track: path_length)")
+          // Which material the pin meets: the worn disc's depth ("disc", physical),
+          // or with the tilt added ("tilted", the reading that reproduces Figs. 9.23-9.25).
+          .choice("nonplanarity.layer_test", setup(&PS::layer_test),
+                  std::vector<std::pair<std::string, LayerTest>>{{"disc", LayerTest::Disc},
+                                                                 {"tilted", LayerTest::Tilted}},
+                  "depth the material is tested at: the worn disc's, or with the tilt added")
+          // The disc track: averaged along the sliding direction (§9.3.2) or the
+          // whole circumference resolved (the wear where the pin is, the tilt turning
+          // with the disc, once per revolution).
+          .choice("track", setup(&PS::track),
+                  std::vector<std::pair<std::string, Track>>{{"averaged", Track::Averaged},
+                                                             {"resolved", Track::Resolved}},
+                  "disc track averaged along the sliding direction, or the whole circumference resolved")
+          .number("tolerance", setup(&PS::tolerance), Range::open(0.0, 1e-3), "BEM orthogonality error of a solve")
+          .choice("boundary", setup(&PS::boundary),
+                  std::vector<std::pair<std::string, bem::Boundary>>{{"periodic", bem::Boundary::Periodic},
+                                                                     {"free", bem::Boundary::Free}},
+                  "BEM cell: periodic images, or an isolated pin")
+          // Elastic properties of the contact solve: the pin's for both bodies (the
+          // thesis, which could not model layered bodies), the pair's, or a value.
+          .choice("elastic", &K::elastic, std::vector<std::string>{"pin", "pair"},
+                  "elastic constants of the contact solve: the pin's for both bodies (the thesis), or the pair's")
+          .number("e_star", setup(&PS::e_star), Range::positive(), pressure, "contact modulus E* of the BEM solve")
+          .computed_default([](const K& k) { return k.elastic == "pin" ? k.e_star_pin : k.e_star_pair; },
+                            "E* of the pin on itself (elastic = \"pin\") or of the pair")
+          .choice("integrator", &K::integrator, std::vector<std::string>{"explicit", "adaptive"},
+                  "time integrator of the wear")
+          .computed_text(default_integrator,
+                           "adaptive on an averaged track without the tilt in the layer test, else explicit")
+          .then(warn_unverified_integrator)
+          .number("adaptive.contact_tolerance", setup(&PS::stage_tolerance), Range::open(0.0, 1e-3),
+                  "BEM orthogonality error of an implicit stage's solve")
+          .number("adaptive.rtol", adaptive(&AO::relative_tolerance), Range::open(0.0, 1.0),
+                  "relative tolerance of the adaptive step")
+          .number("adaptive.atol", adaptive(&AO::absolute_tolerance), Range::positive(), length,
+                  "absolute tolerance of the adaptive step (worn heights)")
+          .number("adaptive.max_step", adaptive(&AO::max_step), Range::positive(), length,
+                  "longest adaptive step in sliding distance")
+          .integer("adaptive.steps_per_period", adaptive(&AO::steps_per_period), Range::closed(4, 10000),
+                   "adaptive steps at least per tilt period")
+          .integer("fields_every", &K::fields_every, Range::non_negative(),
+                   "field snapshots every this many samples (0: first and last only)")
+          .then(check_setup)
+          .table("pin_surface", "initial roughness of the pin over its window", read_pin_surface,
+                 "a topography file, or a table: {file, dataset, missing_points, level} or a generated surface "
+                 "(docs/pin_on_disc.md)")
+          .table("disc_surface", "initial roughness of the disc over the resolved track", read_disc_surface,
+                 "as pin_surface; track = \"resolved\" only")
+          .then([](const Config&, K& k) {
+            k.setup.measure_roughness = !k.surfaces.empty();
+            k.setup.validate();
+          })
+          // The moving average of friction.csv and friction.png (Fig. 9.23): one
+          // tilt period when there is a tilt, else a twentieth of the distance.
+          .number("moving_average", &K::moving_average, Range::positive(), length,
+                  "window of friction's centred moving average")
+          .computed_default(
+              [](const K& k) {
+                const double tilt = k.setup.nonplanar_slope > 0.0 ? k.setup.tilt_period() : 0.0;
+                return tilt > 0.0 ? tilt : k.setup.distance / 20.0;
+              },
+              "one tilt period with a tilt, else distance/20");
+  return table;
+}
+
 class MacroPinOnDisc final : public Scale {
  public:
   static inline const Ports ports{{{Quantity::InterfaceLaw, "pin/disc"}, {Quantity::InterfaceLaw, "pin/layer"}},
@@ -36,115 +220,22 @@ class MacroPinOnDisc final : public Scale {
     const Config& root = setup.root;
     const auto library = material_library(root);
     case_materials(root, library);
-    pin_ = root.string("materials.pin");
-    disc_ = root.string("materials.disc");
-    layer_ = root.string_or("materials.layer.material", disc_);
-    s_.layer_thickness = root.has("materials.layer")
-                             ? root.number("materials.layer.thickness", Range::non_negative().or_infinite(), units::length)
-                             : 0.0;
-    // Defaults: the thesis setup (§9.3.2 "Setup").
-    s_.grid = static_cast<std::size_t>(c.integer_or("grid", 128, Range::closed(8, 4096)));
-    s_.size = c.number_or("size", 2e-3, Range::positive(), units::length);
-    s_.pin_radius = c.number_or("pin_radius", 3e-3, Range::positive(), units::length);
-    s_.normal_load = c.number_or("normal_load", 1.0, Range::positive(), units::force);
-    s_.velocity = c.number_or("velocity", 8e-3, Range::positive(), units::velocity);
-    s_.path_length = c.number_or("path_length", 6.28e-3, Range::positive(), units::length);
-    s_.distance = c.number_or("distance", 0.5, Range::positive(), units::length);
-    // At least one step: a longer one would overshoot the distance (the last step is cut to land on it).
-    s_.time_step = c.number_or("time_step", 0.02, Range::open_closed(0.0, s_.distance / s_.velocity), units::time);
-    s_.nonplanar_slope = c.number_or("nonplanarity.slope", 0.0, Range::closed_open(0.0, 0.2));
-    s_.nonplanar_period = c.number_or("nonplanarity.period", 0.05, Range::positive(), units::length);
-    // Which material the pin meets: the worn disc's depth ("disc", physical),
-    // or with the tilt added ("tilted", the reading that reproduces Figs. 9.23-9.25).
-    s_.layer_test = c.choice_or("nonplanarity.layer_test", "disc", {"disc", "tilted"}) == "tilted"
-                        ? tribometer::LayerTest::Tilted
-                        : tribometer::LayerTest::Disc;
-    // The disc track: averaged along the sliding direction (§9.3.2) or the
-    // whole circumference resolved (the wear where the pin is, the tilt turning
-    // with the disc, once per revolution).
-    s_.track = c.choice_or("track", "averaged", {"averaged", "resolved"}) == "resolved" ? tribometer::Track::Resolved
-                                                                                        : tribometer::Track::Averaged;
-    s_.tolerance = c.number_or("tolerance", 1e-10, Range::open(0.0, 1e-3));
-    s_.boundary = c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? bem::Boundary::Free
-                                                                                   : bem::Boundary::Periodic;
-    // Elastic properties of the contact solve: the pin's for both bodies (the
-    // thesis, which could not model layered bodies), the pair's, or a value.
-    const std::string elastic = c.choice_or("elastic", "pin", {"pin", "pair"});
-    s_.e_star = elastic == "pin" ? materials::effective_modulus(library.get(pin_), library.get(pin_))
-                                 : materials::effective_modulus(library.get(pin_), library.get(disc_));
-    s_.e_star = c.number_or("e_star", s_.e_star, Range::positive(), units::pressure);
-    // The adaptive integrator by default where it is verified against the
-    // converged explicit stepping (within 0.1 %: planar and tilted discs under
-    // the physical reading, docs/pin_on_disc.md); the thesis' explicit step is
-    // one key away, and the default where the adaptive one is not verified.
-    const bool verified = s_.track == tribometer::Track::Averaged && !s_.tilt_in_layer_test();
-    integrator_ = c.choice_or("integrator", verified ? "adaptive" : "explicit", {"explicit", "adaptive"});
-    if (integrator_ == "adaptive" && s_.tilt_in_layer_test())
-      log::warn("{}: the adaptive integrator with layer_test = \"tilted\" and a slope is not verified: the material "
-                "changes cell by cell as the tilt turns, and its μ_mean and wear were 2-7 % off the converged "
-                "explicit stepping (docs/pin_on_disc.md); integrator = \"explicit\" is the default there",
-                c.full_key("integrator"));
-    s_.stage_tolerance = c.number_or("adaptive.contact_tolerance", s_.stage_tolerance, Range::open(0.0, 1e-3));
-    const tribometer::AdaptiveOptions defaults;
-    adaptive_.relative_tolerance = c.number_or("adaptive.rtol", defaults.relative_tolerance, Range::open(0.0, 1.0));
-    adaptive_.absolute_tolerance =
-        c.number_or("adaptive.atol", defaults.absolute_tolerance, Range::positive(), units::length);
-    adaptive_.max_step = c.number_or("adaptive.max_step", defaults.max_step, Range::positive(), units::length);
-    adaptive_.steps_per_period =
-        static_cast<int>(c.integer_or("adaptive.steps_per_period", defaults.steps_per_period, Range::closed(4, 10000)));
-    fields_every_ = static_cast<std::size_t>(c.integer_or("fields_every", 0, Range::non_negative()));
-    s_.validate();
-    // Every step keeps a sample (the series, its copy in each checkpoint and in run.h5): a time step
-    // many orders below the distance's would exhaust memory long before the run ended.
-    const double steps = std::ceil(s_.distance / s_.explicit_step());
-    require_memory(steps * 3.0 * 9.0 * sizeof(double),
-                   fmt::format("{}: key '{}': {:.3g} steps of {:g} s over {:g} m", c.where("time_step"),
-                               c.full_key("time_step"), steps, s_.time_step, s_.distance),
-                   "a longer time_step or a shorter distance");
-    if (s_.track == tribometer::Track::Resolved) {
-      const double revolution = s_.tilt_period();
-      const double cell = s_.size / static_cast<double>(s_.grid);
-      if (c.has("nonplanarity.period") &&
-          std::lround(s_.nonplanar_period / cell) != static_cast<long>(s_.track_cells()))  // not the same whole track
-        throw c.error("nonplanarity.period",
-                      fmt::format("a resolved track's tilt turns with the disc, once per revolution ({:g} m: "
-                                  "path_length on the {}-cell track)",
-                                  revolution, s_.track_cells()),
-                      fmt::format("absent, or {:g} m", revolution));
-      if (s_.step_bounded() && integrator_ == "explicit")
-        log::info("{}: on a resolved track the pin moves at most one cell a step: the explicit step is {:.4g} s "
-                  "(one {:.4g} m cell at {:g} m/s), not time_step = {:g} s",
-                  c.full_key("track"), s_.explicit_step() / s_.velocity, s_.size / static_cast<double>(s_.grid),
-                  s_.velocity, s_.time_step);
-    }
-    // The initial roughness of the pin (over its window) and of the disc (over the
-    // resolved track's strip): a measured file or a generated surface (docs/pin_on_disc.md).
-    if (c.has("pin_surface")) {
-      auto surface = read_initial_surface(c, "pin_surface", Grid2D::square(s_.grid, s_.size), s_.size);
-      s_.pin_roughness = std::move(surface.heights);
-      surfaces_.emplace_back("pin_surface", std::move(surface.description));
-    }
-    if (c.has("disc_surface")) {
-      if (s_.track != tribometer::Track::Resolved)
-        throw c.error("disc_surface",
-                      "the averaged track's disc is one height per x column, invariant along the sliding "
-                      "direction: it holds no roughness along it (a rough surface's mean along y is all but flat, "
-                      "so the rough disc would be a smooth one)",
-                      "track = \"resolved\" (the disc stored over the whole circumference), or no disc_surface");
-      const std::size_t cells = s_.track_cells();
-      const double cell = s_.size / static_cast<double>(s_.grid);
-      auto surface = read_initial_surface(c, "disc_surface",
-                                          Grid2D(s_.grid, cells, s_.size, static_cast<double>(cells) * cell), s_.size);
-      s_.disc_roughness = std::move(surface.heights);
-      surfaces_.emplace_back("disc_surface", std::move(surface.description));
-    }
-    s_.measure_roughness = !surfaces_.empty();
-    s_.validate();
-    // The moving average of friction.csv and friction.png (Fig. 9.23): one
-    // tilt period when there is a tilt, else a twentieth of the distance.
-    const double tilt = s_.nonplanar_slope > 0.0 ? s_.tilt_period() : 0.0;
-    moving_window_ = c.number_or("moving_average", tilt > 0.0 ? tilt : s_.distance / 20.0, Range::positive(),
-                                 units::length);
+    CaseMaterialKeys names;
+    case_material_keys().read(root.section("materials"), names);
+    pin_ = names.pin;
+    disc_ = names.disc;
+    layer_ = names.layer_material;
+    PinOnDiscKeys k;
+    k.setup.layer_thickness = names.layer_thickness;
+    k.e_star_pin = materials::effective_modulus(library.get(pin_), library.get(pin_));
+    k.e_star_pair = materials::effective_modulus(library.get(pin_), library.get(disc_));
+    pin_on_disc_keys().read(c, k);
+    s_ = std::move(k.setup);
+    integrator_ = k.integrator;
+    adaptive_ = k.adaptive;
+    fields_every_ = k.fields_every;
+    moving_window_ = k.moving_average;
+    surfaces_ = std::move(k.surfaces);
   }
 
   std::vector<Key> consumes() const override {
@@ -605,6 +696,7 @@ class MacroPinOnDisc final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_pin_on_disc) {
+  add_backend_keys("macro", "bem-pin-on-disc", [] { return pin_on_disc_keys().schema("scale.macro"); });
   registry.add<MacroPinOnDisc>("macro", "bem-pin-on-disc",
                                "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)");
 }

@@ -3,7 +3,9 @@
 // user's file per material (§9.3.1).
 #include <map>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/io/strength_table_file.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
@@ -14,35 +16,62 @@ namespace wearscale::coupling {
 
 namespace {
 
+// The keys of [scale.molecular] with backend = "table".
+struct StrengthTableKeys {
+  std::string data = "thesis";
+  materials::OutsideTable outside = materials::OutsideTable::Error;
+  std::vector<std::string> materials;  ///< not a key: the case's materials, each one table
+  std::map<std::string, materials::StrengthTable> tables;
+};
+
+// A file given in [scale.molecular.tables] wins over the shipped set.
+void read_tables(const Config& c, StrengthTableKeys& k) {
+  for (const auto& m : k.materials) {
+    const std::string key = "tables." + m;
+    materials::StrengthTable table;
+    if (c.has(key)) {
+      try {
+        table = materials::read_strength_table(c.path(key));  // relative to the case file
+      } catch (const InputError& e) {
+        throw c.error(key, e.what());  // name the case key that points at the bad table
+      }
+    } else {
+      table = materials::shipped_table(k.data, m);
+    }
+    k.tables.emplace(m, std::move(table));
+  }
+  c.mark_used("tables");  // entries for materials the case does not use are allowed
+}
+
+const KeyTable<StrengthTableKeys>& strength_table_keys() {
+  using K = StrengthTableKeys;
+  static const auto table =
+      KeyTable<K>()
+          .choice("data", &K::data, std::vector<std::string>{"thesis", "lammps"},
+                  "shipped strength tables: the thesis' (Fig. 9.18 laws) or wearscale's own LAMMPS runs")
+          .choice("outside", &K::outside,
+                  std::vector<std::pair<std::string, materials::OutsideTable>>{
+                      {"error", materials::OutsideTable::Error}, {"clamp", materials::OutsideTable::Clamp}},
+                  "a pressure outside a table: an error, or the nearest end's strengths")
+          .table("tables", "a strength table file per material: tables.<material> = \"file.csv\"", read_tables,
+                 "file names relative to the case file")
+          // molecular/lammps' keys, kept beside (how the tables were computed)
+          .table("lammps", "the molecular/lammps keys the tables were computed with (kept, not read)",
+                 [](const Config& c, K&) { c.mark_used("lammps"); });
+  return table;
+}
+
 class MolecularTable final : public Scale {
  public:
   static inline const Ports ports{{}, {{Quantity::ShearStrength, "<each material of [materials]>"}}};
 
   explicit MolecularTable(const ScaleSetup& setup) : provenance_(setup.provenance()) {
-    const Config& c = setup.section;
     const auto library = material_library(setup.root);
-    materials_ = case_materials(setup.root, library);
-    const std::string set = c.choice_or("data", "thesis", {"thesis", "lammps"});
-    const auto outside = c.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
-                             ? materials::OutsideTable::Clamp
-                             : materials::OutsideTable::Error;
-    for (const auto& m : materials_) {
-      // A file given in [scale.molecular.tables] wins over the shipped set.
-      const std::string key = "tables." + m;
-      materials::StrengthTable table;
-      if (c.has(key)) {
-        try {
-          table = materials::read_strength_table(c.path(key));  // relative to the case file
-        } catch (const InputError& e) {
-          throw c.error(key, e.what());  // name the case key that points at the bad table
-        }
-      } else {
-        table = materials::shipped_table(set, m);
-      }
-      laws_.emplace(m, materials::StrengthLaw(std::move(table), outside));
-    }
-    c.mark_used("tables");  // entries for materials the case does not use are allowed
-    c.mark_used("lammps");  // molecular/lammps' keys, kept beside (how the tables were computed)
+    StrengthTableKeys k;
+    k.materials = case_materials(setup.root, library);
+    strength_table_keys().read(setup.section, k);
+    materials_ = k.materials;
+    for (auto& [m, table] : k.tables) laws_.emplace(m, materials::StrengthLaw(std::move(table), k.outside));
   }
 
   std::vector<Key> consumes() const override { return ports.consumes; }
@@ -65,6 +94,7 @@ class MolecularTable final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_table) {
+  add_backend_keys("molecular", "table", [] { return strength_table_keys().schema("scale.molecular"); });
   registry.add<MolecularTable>(
       "molecular", "table",
       "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables");

@@ -81,6 +81,8 @@ class Config {
   std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed) const;
   std::string choice_or(std::string_view key, std::string fallback,
                         std::initializer_list<std::string_view> allowed) const;
+  std::string choice(std::string_view key, const std::vector<std::string>& allowed) const;
+  std::string choice_or(std::string_view key, std::string fallback, const std::vector<std::string>& allowed) const;
   /// A file name: a non-empty string; relative names in a case file are
   /// relative to the folder of that file, on the command line (--set) to the
   /// working directory.
@@ -97,6 +99,8 @@ class Config {
 
   /// Marks a key (and everything under it) as read without reading it.
   void mark_used(std::string_view key) const;
+  /// Every key read so far (by a getter or mark_used), as full dotted keys.
+  std::vector<std::string> keys_read() const;
   /// InputError for the keys nobody read (every one of them, with the keys
   /// read in the same table and the closest: "did you mean …?"). On the
   /// whole case (a view without prefix) it is the point where every key has

@@ -21,28 +21,15 @@
 #include "wearscale/core/registry.hpp"
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
+#include "wearscale/io/key_spec.hpp"
 
 namespace wearscale::studies {
 
 using coupling::RunContext;
 
-/// One key of a study: what `--help`, "did you mean" and the docs' key tables show.
-struct KeySpec {
-  std::string key;       ///< full case key, "contact.mean_pressure"
-  std::string type;      ///< "number", "integer", "string", "choice", "path", "table", "boolean", "list",
-                         ///< "range" ([MIN, MAX]; its alias flag takes MIN:MAX)
-  std::string range;     ///< allowed values in words: "≥ 0", "(0, 0.5]", "none | coulomb | tresca"
-  std::string unit;      ///< SI unit of a quantity ("Pa"), "1" for a number without one, "" otherwise
-  std::string fallback;  ///< default value as text, "" when the key is required or optional
-  std::string doc;       ///< one line
-  std::string flag;      ///< the command-line alias of the key's command, "--pressure", or ""
-  std::string switch_value = {};  ///< a flag without a value sets the key to this ("--no-strengths": "false")
-  /// A "list" key whose alias flag takes plain numbers in this unit separated by commas
-  /// ("--pressures 0,10" with "GPa": ["0 GPa", "10 GPa"]); "" for a flag that takes the key's value as it is.
-  std::string list_unit = {};
-};
-
-using Schema = std::vector<KeySpec>;
+/// One key of a study (declared in io/key_spec.hpp, where the key tables produce it).
+using KeySpec = wearscale::KeySpec;
+using Schema = wearscale::Schema;
 
 /// The key of `schema` named `key` (nullptr if there is none).
 const KeySpec* find_key(const Schema& schema, const std::string& key);
