@@ -30,6 +30,7 @@ const std::map<std::string, std::vector<std::string>>& table() {
         "written",
         "wearscale check cases/oxide_thickness_sweep.toml --set scale.macro.grid=32 --json"}},
       {"backends", {"wearscale backends", "wearscale backends --json"}},
+      {"studies", {"wearscale studies", "wearscale studies dem/patch_test    # its case keys", "wearscale studies contact --json"}},
       {"version", {"wearscale version", "wearscale version --json"}},
       {"surface", {generate, "wearscale surface analyze rough/surface.h5 --no-window    # periodic: no window"}},
       {"surface generate", {generate}},

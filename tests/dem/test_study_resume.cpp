@@ -12,6 +12,7 @@
 
 #include "input_error_of.hpp"
 #include "reduced_oxide_asperity.hpp"
+#include "study_resume_support.hpp"
 #include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
@@ -24,33 +25,9 @@ using namespace wearscale::dem;
 
 namespace {
 constexpr double d0 = 6e-9;  // coarse: a few hundred particles, a second per run
-
-// Keeps every state offered (the run goes on: it is the uninterrupted
-// reference); resume(f) continues from the state a fraction f of the way.
-struct Capture {
-  std::vector<CheckpointState> states;
-  RunCheckpoints hooks() {
-    RunCheckpoints h;
-    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
-    return h;
-  }
-  RunCheckpoints resume(double fraction) const {
-    RunCheckpoints h;
-    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
-    return h;
-  }
-};
-
-SlidingCellSpec coarse_cell() {
-  SlidingCellSpec c;
-  c.material = cohesive_material(materials::silica(), 0.5);  // Table 6.5, s = ½
-  c.d0 = d0;
-  c.velocity = 100.0;
-  c.pressure = 0.5e9;
-  c.sliding_distance = 2 * d0;
-  c.settle_distance = 0.5 * d0;  // the checkpoint falls after sliding starts
-  return c;
-}
+using test_support::Capture;
+using test_support::expect_same_history;
+SlidingCellSpec coarse_cell() { return test_support::coarse_cell(d0); }
 
 // A junction of D = 20 nm slid by one d0.
 ShearedJunctionSpec coarse_junction() {
@@ -63,18 +40,6 @@ ShearedJunctionSpec coarse_junction() {
   return s;
 }
 
-void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<SlidingSample>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    EXPECT_EQ(a[k].time, b[k].time) << "sample " << k;
-    EXPECT_EQ(a[k].tangential_force, b[k].tangential_force) << "sample " << k;
-    EXPECT_EQ(a[k].normal_force, b[k].normal_force) << "sample " << k;
-    EXPECT_EQ(a[k].kinetic_energy, b[k].kinetic_energy) << "sample " << k;
-    EXPECT_EQ(a[k].worn, b[k].worn) << "sample " << k;
-    EXPECT_EQ(a[k].roughness_bottom, b[k].roughness_bottom) << "sample " << k;
-    EXPECT_EQ(a[k].roughness_top, b[k].roughness_top) << "sample " << k;
-  }
-}
 }  // namespace
 
 TEST(StudyResume, AShearedJunctionResumedMidSlideEndsBitForBitAsTheUninterruptedRun) {

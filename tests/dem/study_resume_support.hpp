@@ -1,0 +1,61 @@
+#pragma once
+// What the resume tests of the DEM studies share, on either engine: the
+// states a run offers (kept, the run going on as the uninterrupted
+// reference), a coarse sliding cell, and two histories compared bit for bit.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "wearscale/dem/cohesive_material.hpp"
+#include "wearscale/dem/run_checkpoints.hpp"
+#include "wearscale/dem/sliding_cell.hpp"
+#include "wearscale/materials/material.hpp"
+
+namespace wearscale::dem::test_support {
+
+/// Keeps every state offered; resume(f) continues from the state a fraction f of the way.
+struct Capture {
+  std::vector<CheckpointState> states;
+  RunCheckpoints hooks() {
+    RunCheckpoints h;
+    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
+    return h;
+  }
+  RunCheckpoints resume(double fraction) const {
+    RunCheckpoints h;
+    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
+    return h;
+  }
+};
+
+/// SiO2 (Table 6.5, s = ½) at d0: a few hundred particles, slid 2 d0 at 100 m/s
+/// under 0.5 GPa, the checkpoints falling after sliding starts.
+inline SlidingCellSpec coarse_cell(double d0, const std::string& engine = "wearscale") {
+  SlidingCellSpec c;
+  c.material = cohesive_material(materials::silica(), 0.5);
+  c.d0 = d0;
+  c.velocity = 100.0;
+  c.pressure = 0.5e9;
+  c.sliding_distance = 2 * d0;
+  c.settle_distance = 0.5 * d0;
+  c.engine = engine;
+  return c;
+}
+
+inline void expect_same_history(const std::vector<SlidingSample>& a, const std::vector<SlidingSample>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].time, b[k].time) << "sample " << k;
+    EXPECT_EQ(a[k].tangential_force, b[k].tangential_force) << "sample " << k;
+    EXPECT_EQ(a[k].normal_force, b[k].normal_force) << "sample " << k;
+    EXPECT_EQ(a[k].kinetic_energy, b[k].kinetic_energy) << "sample " << k;
+    EXPECT_EQ(a[k].worn, b[k].worn) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_bottom, b[k].roughness_bottom) << "sample " << k;
+    EXPECT_EQ(a[k].roughness_top, b[k].roughness_top) << "sample " << k;
+  }
+}
+
+}  // namespace wearscale::dem::test_support
