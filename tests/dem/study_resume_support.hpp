@@ -12,6 +12,7 @@
 #include "wearscale/dem/cohesive_material.hpp"
 #include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/sliding_cell.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
 #include "wearscale/materials/material.hpp"
 
 namespace wearscale::dem::test_support {
@@ -56,6 +57,26 @@ inline void expect_same_history(const std::vector<SlidingSample>& a, const std::
     EXPECT_EQ(a[k].roughness_bottom, b[k].roughness_bottom) << "sample " << k;
     EXPECT_EQ(a[k].roughness_top, b[k].roughness_top) << "sample " << k;
   }
+}
+
+/// Two particles of 3.5 d0 trapped in `cell` (its d0 and engine), resumed half
+/// way: the history and every result as the run that never stopped.
+inline void expect_trapped_particles_resume_bit_for_bit(const SlidingCellSpec& cell) {
+  const double d0 = cell.d0;
+  TrappedParticlesSpec s;
+  s.cell = cell;
+  s.count = 2;
+  s.diameter = 3.5 * d0;
+  s.cell.box = {2 * 3 * s.diameter, 3.5 * d0, s.diameter + 9 * d0};
+  Capture capture;
+  const auto straight = run_trapped_particles(s, {}, capture.hooks());
+  ASSERT_GE(capture.states.size(), 3u);
+  const auto resumed = run_trapped_particles(s, {}, capture.resume(0.5));
+  expect_same_history(resumed.history, straight.history);
+  EXPECT_EQ(resumed.loose_residual, straight.loose_residual);
+  EXPECT_EQ(resumed.friction, straight.friction);
+  EXPECT_EQ(resumed.worn_first_body, straight.worn_first_body);
+  EXPECT_EQ(resumed.band_thickness, straight.band_thickness);
 }
 
 }  // namespace wearscale::dem::test_support

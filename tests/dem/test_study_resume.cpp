@@ -90,20 +90,7 @@ TEST(StudyResume, ShearedRoughSurfacesResumedInTheWindowEndBitForBitAsTheUninter
 }
 
 TEST(StudyResume, TrappedParticlesResumedMidSlideEndBitForBitAsTheUninterruptedRun) {
-  TrappedParticlesSpec s;
-  s.cell = coarse_cell();
-  s.count = 2;
-  s.diameter = 3.5 * d0;
-  s.cell.box = {2 * 3 * s.diameter, 3.5 * d0, s.diameter + 9 * d0};
-  Capture capture;
-  const auto straight = run_trapped_particles(s, {}, capture.hooks());
-  ASSERT_GE(capture.states.size(), 3u);
-  const auto resumed = run_trapped_particles(s, {}, capture.resume(0.5));
-  expect_same_history(resumed.history, straight.history);
-  EXPECT_EQ(resumed.loose_residual, straight.loose_residual);
-  EXPECT_EQ(resumed.friction, straight.friction);
-  EXPECT_EQ(resumed.worn_first_body, straight.worn_first_body);
-  EXPECT_EQ(resumed.band_thickness, straight.band_thickness);
+  test_support::expect_trapped_particles_resume_bit_for_bit(coarse_cell());
 }
 
 // The patch tests run one after the other (elastic, tension, shear); a state
