@@ -66,14 +66,6 @@ void require_fresh_start(const std::filesystem::path& checkpoint) {
                                 dir.string(), dir.string(), checkpoint.string()));
 }
 
-CheckpointPolicy checkpoint_policy(const Config& root) {
-  const Config r = root.section("run");
-  CheckpointPolicy policy;
-  policy.interval = r.number_or("checkpoint_interval", 600.0, Range::non_negative(), units::time);
-  policy.every_steps = r.integer_or("checkpoint_steps", 0, Range::non_negative());
-  return policy;
-}
-
 std::string case_fingerprint(const nlohmann::json& parameters) {
   nlohmann::json p = parameters;
   if (p.is_object())

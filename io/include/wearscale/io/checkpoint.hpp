@@ -90,10 +90,6 @@ std::filesystem::path resume_folder(const std::filesystem::path& resume, const s
 /// one: OutputError naming `checkpoint` (and how to continue) if it exists.
 void require_fresh_start(const std::filesystem::path& checkpoint);
 
-/// The [run] keys checkpoint_interval (s, default 600) and checkpoint_steps
-/// (default 0), range-checked.
-CheckpointPolicy checkpoint_policy(const Config& root);
-
 /// The fingerprint of a resolved case (JSON): the case without what does not
 /// change its results ([run]: how often to checkpoint; [output]: where to
 /// write; [sweep]: the sweep around a run), as JSON text.
