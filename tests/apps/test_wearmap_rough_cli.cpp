@@ -1,6 +1,6 @@
 // `wearscale wearmap rough`: the numerical wear map of rough contacts (ch. 5)
 // on a small grid: its files, the three regimes along the load at one d*,
-// the naive baseline agreeing with the fast model, the case file
+// the naive baseline agreeing with the fast model (the whole map), the case file
 // ([wearmap.rough]) giving the same map as the flags, the XDMF sidecar, and
 // bad flags or keys → status 2 naming them, with nothing written.
 #include <gmock/gmock.h>
@@ -75,6 +75,46 @@ TEST(WearmapRoughCli, SmallMapWritesFilesAndShowsTheRegimes) {
   }
   EXPECT_GT(found, 0u);
   EXPECT_NEAR(j["results"]["max_count_smoothed"]["value"].get<double>(), largest, 1e-8 * largest);  // CSV: 10 digits
+}
+
+// The naive baseline (one full solve per candidate) and the fast evaluator
+// make the same map: every pixel's particle count, volume, largest particle
+// and validity, and every particle, to the last printed digit — on a map that
+// holds the three regimes (no particle, particles, invalid pixels).
+TEST(WearmapRoughCli, TheNaiveMapIsTheFastMap) {
+  const std::string map = "wearmap rough --n 64 --ql 4 --qs 16 --seeds 2 --loads 0.005:0.3 --n-loads 6 "
+                          "--dstar-over-l 0.02:0.2 --n-dstar 4 -q --json ";
+  const auto fast = run_cli(map + "--out same-fast", work);
+  const auto naive = run_cli(map + "--naive --out same-naive", work);
+  ASSERT_EQ(fast.status, 0) << fast.err;
+  ASSERT_EQ(naive.status, 0) << naive.err;
+  const auto text = [](const fs::path& f) {
+    std::ifstream in(f);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* f : {"wearmap_rough.csv", "wearmap_rough_particles.csv"})
+    EXPECT_EQ(text(work / "same-fast" / f), text(work / "same-naive" / f)) << f;
+  // The naive run did evaluate in full what the fast one rejects by its bound.
+  const auto evaluations = [](const std::string& out) {
+    return nlohmann::json::parse(out)["results"]["energy_evaluations"]["value"].get<double>();
+  };
+  EXPECT_GT(evaluations(naive.out), 2.0 * evaluations(fast.out));
+  // The map holds every regime: pixels without particles, valid pixels with some, invalid ones.
+  const auto csv = text(work / "same-fast" / "wearmap_rough.csv");
+  std::size_t none = 0, some = 0, invalid = 0;
+  std::stringstream rows(csv);
+  for (std::string line; std::getline(rows, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 'p') continue;
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
+    if (row[8] == 0.0) ++invalid;
+    else if (row[2] == 0.0) ++none;
+    else ++some;
+  }
+  EXPECT_GT(none, 0u);
+  EXPECT_GT(some, 0u);
+  EXPECT_GT(invalid, 0u);
 }
 
 struct BadRough {
