@@ -12,6 +12,10 @@ std::string default_text(double v) {
   return fmt::format("{}", v);
 }
 
+std::string joined(const std::vector<std::string>& texts, const std::string& separator) {
+  return fmt::format("{}", fmt::join(texts, separator));
+}
+
 std::string joined_choices(const std::vector<std::string>& names) { return fmt::format("{}", fmt::join(names, " | ")); }
 
 }  // namespace wearscale::key_table_detail

@@ -25,10 +25,6 @@ namespace wearscale::studies {
 
 using namespace bem;
 
-long read_gather_limit(const Config& config) {
-  return config.section("run").integer_or("gather_limit", static_cast<long>(default_gather_limit), Range::at_least(1));
-}
-
 namespace {
 // Serial: memory per grid point, measured (peak RSS at 1024², with the
 // outputs): normal contact about 120 B, frictional with stresses about 580 B.
@@ -89,9 +85,11 @@ ContactCase read_contact_case(const Config& config, int ranks) {
     s.normal = read_normal_case(c, s.grid);
   else
     s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
-  s.measured_plans = config.section("run").choice_or("fft_planning", "measure", {"measure", "estimate"}) == "measure" &&
+  RunKeys how;  // [run], as the runner reads it
+  run_keys().read(config.section("run"), how);
+  s.measured_plans = how.fft_planning == PlanRigor::Measure &&
                      s.grid.size() >= std::size_t{512} * 512;  // planning times transforms across the ranks
-  s.gather_limit = static_cast<std::size_t>(read_gather_limit(config));
+  s.gather_limit = how.gather_limit;
   const bool file = s.measured.size() > 0;
   const char* size_key = file ? "surface" : "grid";  // what sets the grid
   const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);

@@ -17,6 +17,7 @@
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
 #include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/studies/runner_keys.hpp"
 
 namespace wearscale::studies {
 
@@ -141,14 +142,6 @@ struct FrictionalFields {
 void write_frictional_study(const Config& config, const FrictionalCase& f, const FrictionalFields& fields,
                             const bem::FrictionalResult& r, coupling::RunContext& context);
 
-/// `[run] gather_limit` by default: grids above this many points are not
-/// gathered on rank 0 under mpirun (88 B a point there for the fields and micro-contacts).
-inline constexpr std::size_t default_gather_limit = std::size_t{4096} * 4096;
-
-/// `[run] gather_limit` (grid points, at least 1), read and checked: every
-/// run reads it (the contact study's Study::read_run_limits), the slabs use it.
-long read_gather_limit(const Config& config);
-
 /// A [contact] case, every key read and checked, before any work.
 struct ContactCase {
   Grid2D grid;
@@ -158,7 +151,7 @@ struct ContactCase {
   std::optional<RoughCase> rough;
   double sphere_radius = 0.0;  ///< 0: no sphere
   bool measured_plans = true;  ///< slabs: FFTW MEASURE plans ([run] fft_planning, and from 512²)
-  std::size_t gather_limit = default_gather_limit;  ///< slabs: [run] gather_limit, larger grids written in place
+  std::size_t gather_limit = RunKeys{}.gather_limit;  ///< slabs: [run] gather_limit, larger grids written in place
 };
 
 /// Reads and checks [contact] for a run on `ranks` ranks (the slabs refuse a

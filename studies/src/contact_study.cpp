@@ -97,8 +97,6 @@ class ContactStudy final : public Study {
     return "normal or frictional contact of a rigid surface (file, rough, sphere) on an elastic flat (BEM)";
   }
   Schema schema() const override;
-  // [run] gather_limit: used on MPI ranks, read on every run (serial runs and other studies' too).
-  void read_run_limits(const Config& config) const override { read_gather_limit(config); }
   // Under mpirun (P > 1) the case is read and checked on every rank before any
   // work; serial runs read it in run(), so a sweep holds no surface.
   std::vector<std::string> prepare(Config& config) override {

@@ -40,7 +40,10 @@ const KeyTable<RunKeys>& run_keys() {
           .choice("fft_planning", &K::fft_planning,
                   std::vector<std::pair<std::string, PlanRigor>>{{"measure", PlanRigor::Measure},
                                                                  {"estimate", PlanRigor::Estimate}},
-                  "FFTW plans measured (fastest) or estimated (no planning time, results alike to rounding)");
+                  "FFTW plans measured (fastest) or estimated (no planning time, results alike to rounding)")
+          .integer("gather_limit", &K::gather_limit, Range::at_least(1),
+                   "grid points rank 0 gathers under mpirun (the contact study's fields); above it every rank writes "
+                   "its rows");
   return table;
 }
 

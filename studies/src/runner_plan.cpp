@@ -88,7 +88,6 @@ PreparedRun prepare_keys(Config cfg_in, const std::optional<std::filesystem::pat
   // From here on: a plan made while preparing (a generated surface's) would
   // otherwise be measured, and a measured plan picks its algorithm by timing.
   FFTPlanCache::global().set_rigor(run.fft_rigor);
-  study_registry().read_run_limits(cfg);  // every study's limits (contact: gather_limit), on every run
   run.summary.scales = run.study->prepare(cfg);
   run.summary.parameters = cfg.to_json();
   run.fingerprint = case_fingerprint(run.summary.parameters);

@@ -119,60 +119,24 @@ class StrengthTableStudy final : public Study {
 };
 
 Schema StrengthTableStudy::schema() const {
-  const std::string preset = "from the preset";
   Schema schema = {
       {"md.backend", "choice", "lammps", "", "lammps", "molecular backend", "--backend"},
-      {"md.material", "string", "Si | SiO2 | a [materials.define.<name>] with an interatomic table", "", "",
-       "material of the shear test", "--material"},
-      {"md.pressures", "list", "≥ 0, increasing, at least two", "Pa", "", "normal pressures of the table",
-       "--pressures", "", "GPa"},
-      {"md.preset", "choice", "smoke | thesis", "", "smoke",
-       "smoke (small boxes, 100 m/s: seconds to a minute per pressure) or thesis (10 nm boxes, 10 m/s: hours per "
-       "pressure); the keys below override it",
-       "--preset"},
-      {"md.lmp", "string", "", "", "lmp on PATH", "LAMMPS executable", "--lmp"},
-      {"md.ranks", "integer", "1 … 1024", "1", "1",
-       "MPI ranks of each LAMMPS run, through mpirun when > 1 (per point: under `mpirun -np N wearscale` the points "
-       "are spread over the N ranks, each point's lmp on md.ranks ranks of its own)",
-       "--ranks"},
       {"output.file", "string", "a file name ending in .csv or .h5", "", "lammps_<preset>_<material>.csv",
        "the table's name in the output folder", "--table"},
-      {"md.lateral_size", "number", "> 0", "m", preset, "box side x = y, rounded to whole lattice cells", ""},
-      {"md.height", "number", "> 0", "m", preset, "box height", ""},
-      {"md.lattice_constant", "number", "> 0", "m", "the material's", "lattice constant of the sample", ""},
-      {"md.wall_thickness", "number", "> 0", "m", preset, "thickness of the rigid walls", ""},
-      {"md.thermostat_thickness", "number", "> 0", "m", preset, "thickness of the thermostatted layers", ""},
-      {"md.shear_velocity", "number", "> 0", "m/s", preset, "imposed shear velocity", ""},
-      {"md.temperature", "number", "> 0", "K", preset, "thermostat temperature", ""},
-      {"md.langevin_damp", "number", "> 0", "s", preset, "Langevin damping time", ""},
-      {"md.timestep", "number", "(0, 1e-14]", "s", preset, "time step", ""},
-      {"md.compression_time", "number", "≥ 0", "s", preset, "time under load before shearing", ""},
-      {"md.strain_end", "number", "(0, 10]", "1", preset, "shear strain at the end of the run", ""},
-      {"md.window", "list", "[begin, end] within [0, 10]", "1", preset,
-       "strain range over which σ_dyn is the mean shear stress", ""},
-      {"md.sample_steps", "integer", "1 … 1e7", "1", preset, "steps between thermo samples", ""},
-      {"md.seed", "integer", "1 … 9e8", "1", preset, "random seed of the velocities", ""},
-      {"md.potential", "path", "", "", "the material's",
-       "interatomic potential file (a name in LAMMPS' potentials folder, or relative to the case file)", ""},
-      {"md.cutoff", "number", "≥ 0", "m", "the material's", "two-body cutoff r_c (pair_style vashishta only)", ""},
-      {"md.modulus_strain", "number", "(0, 1)", "1", "0.1",
-       "the elastic shear modulus is the slope of the shear curve over strains up to this", ""},
-      {"md.cache", "boolean", "true | false", "", "true", "read identical runs from the result cache", ""},
-      {"md.cache_dir", "string", "", "", "$WEARSCALE_CACHE/lammps, else ~/.cache/wearscale/lammps", "result cache folder",
-       ""},
-      {"md.quench.temperatures", "list", "> 0", "K", "the material's, else the thesis' SiO2 schedule",
-       "melt-quench (amorphous samples): temperature schedule", ""},
-      {"md.quench.constant_volume", "boolean", "true | false", "", "the material's",
-       "melt-quench at the crystal's volume, no barostat", ""},
-      {"md.quench.hold_time", "number", "> 0", "s", preset, "melt-quench: time held at each temperature", ""},
-      {"md.quench.cooling_rate", "number", "> 0", "K/s", preset, "melt-quench: cooling rate", ""},
-      {"md.quench.final_cooling_rate", "number", "> 0", "K/s", preset, "melt-quench: last cooling rate", ""},
-      {"md.quench.timestep", "number", "(0, 1e-14]", "s", preset, "melt-quench: time step", ""},
-      {"md.quench.pressure", "number", "any", "Pa", preset, "melt-quench: barostat pressure", ""},
-      {"md.quench.barostat_damp", "number", "> 0", "s", preset, "melt-quench: barostat damping time", ""},
-      {"md.quench.bulk_modulus", "number", "> 0", "Pa", preset, "melt-quench: bulk modulus of the barostat", ""},
-      {"md.quench.thermostat_damp", "number", "> 0", "s", preset, "melt-quench: thermostat damping time", ""},
   };
+  // The shear test's keys as its key table declares them, with the command's aliases.
+  for (auto& k : coupling::md_schema()) {
+    if (k.key == "md.material") k.flag = "--material";
+    if (k.key == "md.pressures") {
+      k.range += ", at least two";  // a table's (prepare)
+      k.flag = "--pressures";
+      k.list_unit = "GPa";
+    }
+    if (k.key == "md.preset") k.flag = "--preset";
+    if (k.key == "md.lmp") k.flag = "--lmp";
+    if (k.key == "md.ranks") k.flag = "--ranks";
+    schema.push_back(std::move(k));
+  }
   for (auto& k : material_schema()) schema.push_back(std::move(k));
   return schema;
 }

@@ -92,10 +92,6 @@ std::string StudyInfo::unknown(const std::string&, const std::string& name, cons
                      best.empty() ? "" : fmt::format(" (did you mean '{}'?)", best));
 }
 
-void StudyRegistry::read_run_limits(const Config& inputs) const {
-  for (const auto& n : names()) create(n)->read_run_limits(inputs);
-}
-
 std::string study_of(const Config& cfg) {
   const auto& registry = study_registry();
   if (cfg.has("case.study")) {

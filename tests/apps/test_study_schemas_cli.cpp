@@ -75,6 +75,7 @@ TEST(StudySchemas, TheRunnersAndTheBackendsKeysAreTheirTables) {
       {"scale.macro", pin_on_disc},
       {"scale.macro", "run '" + cases + "hertz_pin.toml'"},
       {"scale.molecular", "run '" + cases + "scale_link.toml'"},
+      {"scale.nano", "run '" + cases + "junction_sio2.toml'"},
       {"materials", pin_on_disc},
   };
   for (const auto& p : probes) {
@@ -83,9 +84,8 @@ TEST(StudySchemas, TheRunnersAndTheBackendsKeysAreTheirTables) {
     const auto keys = keys_read(r.err, p.table);
     EXPECT_FALSE(keys.empty()) << p.table << ": " << r.err;
     for (const auto& k : keys)
-      // define, layer: tables whose keys are listed under them; gather_limit: the contact study's own
-      // limit of [run], read by every run but declared in no table yet.
-      if (k != "define" && k != "layer" && k != "gather_limit")
+      // define, layer: tables whose keys are listed under them
+      if (k != "define" && k != "layer")
         EXPECT_THAT(keys_md, HasSubstr("`" + p.table + "." + k + "`")) << "not in its table";
   }
   EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";

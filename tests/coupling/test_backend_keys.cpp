@@ -31,7 +31,9 @@ std::vector<fs::path> pipeline_cases() {
   return out;
 }
 
-bool declared(const Schema& schema, const std::string& key) {
+// `key` as read, an element of an array ("pressures[1]") as its array.
+bool declared(const Schema& schema, std::string key) {
+  if (const auto bracket = key.find('['); bracket != std::string::npos) key.resize(bracket);
   for (const auto& row : schema)
     if (row.key == key || (row.type == "table" && key.starts_with(row.key + "."))) return true;
   return false;
@@ -82,7 +84,7 @@ TEST(BackendKeys, TheShippedCasesReadOnlyDeclaredKeysAndEveryDeclaredOne) {
         EXPECT_TRUE(declared(materials, key)) << file << ": reads undeclared " << key;
     }
   }
-  for (const char* b : {"macro/bem-pin-on-disc", "macro/hertz", "molecular/table"})
+  for (const char* b : {"macro/bem-pin-on-disc", "macro/hertz", "molecular/table", "nano/dem"})
     EXPECT_EQ(backends_seen.count(b), 1u) << b << " is read by no shipped case";
 }
 
@@ -123,4 +125,84 @@ TEST(BackendKeys, EachSchemaNamesItsKeysOnceWithATypeAndAMeaning) {
       EXPECT_TRUE(row.key.starts_with("scale." + info.kind + ".")) << row.key;
     }
   }
+}
+
+namespace {
+// The error of making scale `kind` of `cfg` (its key table reading every key).
+std::string scale_error(const Config& cfg, const std::string& kind) {
+  const Config section = cfg.section("scale." + kind);
+  const std::string backend = section.string("backend");
+  return input_error_of(
+      [&] { (void)scale_registry().create(kind, backend, ScaleSetup{kind, backend, section, cfg}); });
+}
+}  // namespace
+
+TEST(BackendKeys, TheDemNanoscaleRefusesAJunctionNarrowerThanOneParticleOfItsCell) {
+  // L = 25 d0: the narrowest junction is one particle, D/L = 1/25 = 0.04.
+  Config cfg = Config::load(fs::path(WEARSCALE_CASES_DIR) / "junction_sio2.toml");
+  cfg.override_value("scale.nano.contact_ratios=[0.03, 1.0]");
+  const std::string e = scale_error(cfg, "nano");
+  EXPECT_THAT(e, HasSubstr("--set"));  // where the value came from
+  EXPECT_THAT(e, HasSubstr("scale.nano.contact_ratios"));
+  EXPECT_THAT(e, HasSubstr("D/L = 0.03 is less than one particle of the 25-particle cell"));
+  EXPECT_THAT(e, HasSubstr("[0.04, 1]"));
+  cfg.override_value("scale.nano.contact_ratios=[0.04, 1.0]");
+  EXPECT_NO_THROW(make_declared_scales(cfg));
+}
+
+TEST(BackendKeys, TheDemNanoscaleRefusesAnEmptyListAndAnUnknownAmorphousMaterial) {
+  Config empty = Config::load(fs::path(WEARSCALE_CASES_DIR) / "junction_sio2.toml");
+  empty.override_value("scale.nano.pressures=[]");
+  const std::string e = scale_error(empty, "nano");
+  EXPECT_THAT(e, HasSubstr("scale.nano.pressures"));
+  EXPECT_THAT(e, HasSubstr("an empty list"));
+  EXPECT_THAT(e, HasSubstr("≥ 0 Pa"));
+  Config unknown = Config::load(fs::path(WEARSCALE_CASES_DIR) / "junction_sio2.toml");
+  unknown.override_value("scale.nano.amorphous=\"Cu\"");
+  const std::string u = scale_error(unknown, "nano");
+  EXPECT_THAT(u, HasSubstr("scale.nano.amorphous"));
+  EXPECT_THAT(u, HasSubstr("no material 'Cu'"));
+  Config none = Config::load(fs::path(WEARSCALE_CASES_DIR) / "junction_sio2.toml");
+  none.override_value("scale.nano.amorphous=\"none\"");
+  EXPECT_NO_THROW(make_declared_scales(none));
+}
+
+// A SiO2 pin on SiO2 with the LAMMPS shear test and its melt-quench: the
+// backend reads only declared keys (those of the shear test's key table) and
+// every declared one; a bad value names its key and what is allowed.
+TEST(BackendKeys, TheLammpsMolecularScaleReadsTheShearTestsKeyTable) {
+  const std::string text = R"(
+[materials]
+pin = "SiO2"
+disc = "SiO2"
+[scale.molecular]
+backend = "lammps"
+outside = "clamp"
+pressures = ["0 GPa", "10 GPa"]
+strain_end = 0.6
+[scale.molecular.quench]
+hold_time = "45 ps"
+)";
+  const Config cfg = Config::from_string(text, "lammps.toml");
+  ASSERT_EQ(make_declared_scales(cfg).size(), 1u);
+  const Schema schema = backend_schema("molecular", "lammps");
+  const auto read = cfg.keys_read();
+  for (const auto& key : read) {
+    if (key.starts_with("scale.molecular.")) {
+      EXPECT_TRUE(declared(schema, key)) << "reads undeclared " << key;
+    }
+  }
+  for (const auto& row : schema) {
+    if (row.type != "table") {
+      EXPECT_TRUE(std::find(read.begin(), read.end(), row.key) != read.end()) << "declares " << row.key
+                                                                              << " but reads it not";
+    }
+  }
+  EXPECT_NO_THROW(cfg.section("scale.molecular").reject_unknown_keys());
+
+  Config bad = Config::from_string(text, "lammps.toml");
+  bad.override_value("scale.molecular.strain_end=20");
+  const std::string e = scale_error(bad, "molecular");
+  EXPECT_THAT(e, HasSubstr("scale.molecular.strain_end"));
+  EXPECT_THAT(e, HasSubstr("(0, 10]"));
 }

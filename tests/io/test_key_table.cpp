@@ -210,3 +210,83 @@ TEST(KeyTable, AKeyRequiredByTheKeysBeforeItAndAListOfValuesAsText) {
   EXPECT_EQ(table.schema()[0].fallback, "the study's");
   EXPECT_EQ(table.schema()[1].type, "list");
 }
+
+TEST(KeyTable, ListsOfNumbersAndOfNamesKeepTheirInitializerWhenAbsent) {
+  struct Runs {
+    std::vector<double> pressures{1e9, 2e9};
+    std::vector<std::string> amorphous;
+  };
+  const auto table = KeyTable<Runs>()
+                         .numbers("pressures", &Runs::pressures, Range::non_negative(), units::pressure, "p_N")
+                         .names("amorphous", &Runs::amorphous, "amorphous materials");
+  Runs absent;
+  const auto none = Config::from_string("", "r.toml");
+  table.read(none, absent);
+  EXPECT_EQ(absent.pressures, (std::vector<double>{1e9, 2e9}));
+  EXPECT_TRUE(absent.amorphous.empty());
+  EXPECT_NO_THROW(none.reject_unknown_keys());
+  const auto read = none.keys_read();
+  EXPECT_EQ(read.size(), 2u) << "both are read, to be suggested for a misspelt one";
+
+  Runs given;
+  table.read(Config::from_string("pressures = [\"0 GPa\", 4e9]\namorphous = \"Si\"", "r.toml"), given);
+  EXPECT_EQ(given.pressures, (std::vector<double>{0.0, 4e9}));
+  EXPECT_EQ(given.amorphous, (std::vector<std::string>{"Si"}));
+  table.read(Config::from_string("amorphous = [\"Si\", \"SiO2\"]", "r.toml"), given);
+  EXPECT_EQ(given.amorphous, (std::vector<std::string>{"Si", "SiO2"}));
+
+  const std::string empty = input_error_of([&] { table.read(Config::from_string("pressures = []", "r.toml"), given); });
+  EXPECT_THAT(empty, HasSubstr("r.toml"));
+  EXPECT_THAT(empty, HasSubstr("pressures"));
+  EXPECT_THAT(empty, HasSubstr("an empty list"));
+  EXPECT_THAT(empty, HasSubstr("≥ 0 Pa"));
+  EXPECT_THAT(input_error_of([&] { table.read(Config::from_string("pressures = [\"1 m\"]", "r.toml"), given); }),
+              HasSubstr("pressures"));
+  EXPECT_THAT(input_error_of([&] { table.read(Config::from_string("amorphous = 3", "r.toml"), given); }),
+              HasSubstr("not a list of names"));
+
+  const auto schema = table.schema("nano");
+  EXPECT_EQ(schema[0].type, "list");
+  EXPECT_EQ(schema[0].unit, "Pa");
+  EXPECT_EQ(schema[0].fallback, "[1000000000, 2000000000]");
+  EXPECT_EQ(schema[1].fallback, "[]");
+}
+
+TEST(KeyTable, AnOptionalNumberAComputedIntegerAndAKeyWithItsOwnReader) {
+  struct Run {
+    std::optional<double> working_pressure;
+    int jobs = 1;
+    std::string potential;
+  };
+  const auto table =
+      KeyTable<Run>()
+          .optional_number("working_pressure", &Run::working_pressure, Range::positive(), units::pressure, "p_work")
+          .fallback("p_crit")
+          .integer("jobs", &Run::jobs, Range::closed(1, 256), "threads")
+          .computed_default([](const Run&) { return 3.0; }, "the threads")
+          .custom("potential", "path", "a file name", "", "potential file",
+                  [](const Config& c, const std::string& key, Run& r) {
+                    if (c.has(key)) r.potential = "found:" + c.string(key);
+                  })
+          .fallback("the material's")
+          .allowed("a file beside the case, or in LAMMPS' folder");
+  Run absent;
+  table.read(Config::from_string("", "r.toml"), absent);
+  EXPECT_FALSE(absent.working_pressure.has_value());
+  EXPECT_EQ(absent.jobs, 3);
+  EXPECT_EQ(absent.potential, "");
+  Run given;
+  table.read(Config::from_string("working_pressure = \"2 GPa\"\njobs = 2\npotential = \"Si.sw\"", "r.toml"), given);
+  EXPECT_EQ(given.working_pressure.value_or(0.0), 2e9);
+  EXPECT_EQ(given.jobs, 2);
+  EXPECT_EQ(given.potential, "found:Si.sw");
+  EXPECT_THAT(input_error_of([&] { table.read(Config::from_string("working_pressure = 0", "r.toml"), given); }),
+              HasSubstr("> 0"));
+  const auto schema = table.schema();
+  EXPECT_EQ(schema[0].fallback, "p_crit");
+  EXPECT_EQ(schema[0].unit, "Pa");
+  EXPECT_EQ(schema[1].fallback, "the threads");
+  EXPECT_EQ(schema[2].type, "path");
+  EXPECT_EQ(schema[2].range, "a file beside the case, or in LAMMPS' folder");
+  EXPECT_EQ(schema[2].fallback, "the material's");
+}

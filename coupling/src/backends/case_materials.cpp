@@ -28,6 +28,16 @@ const KeyTable<CaseMaterialKeys>& case_material_keys() {
   return table;
 }
 
+const KeyTable<StrengthLawKeys>& strength_law_keys() {
+  using K = StrengthLawKeys;
+  static const auto table = KeyTable<K>().choice(
+      "outside", &K::outside,
+      std::vector<std::pair<std::string, materials::OutsideTable>>{{"error", materials::OutsideTable::Error},
+                                                                   {"clamp", materials::OutsideTable::Clamp}},
+      "a pressure outside a table: an error, or the nearest end's strengths");
+  return table;
+}
+
 Schema materials_schema() { return case_material_keys().schema("materials"); }
 
 materials::MaterialLibrary material_library(const Config& root) {

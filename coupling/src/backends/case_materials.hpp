@@ -21,6 +21,13 @@ struct CaseMaterialKeys {
 };
 const KeyTable<CaseMaterialKeys>& case_material_keys();
 
+/// [scale.molecular] outside, of the backends that give strengths from a
+/// table (molecular/table, molecular/lammps): a pressure outside the table.
+struct StrengthLawKeys {
+  materials::OutsideTable outside = materials::OutsideTable::Error;
+};
+const KeyTable<StrengthLawKeys>& strength_law_keys();
+
 /// Built-in materials plus every [materials.define.<name>] of the case.
 materials::MaterialLibrary material_library(const Config& root);
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
@@ -56,9 +57,9 @@ class MolecularLammps final : public Scale {
       specs_.emplace(m, read_shear_test_spec(keys, m, *record.interatomic));
       register_served_shear_study(m, specs_.at(m));  // under mpirun any rank may run its points
     }
-    outside_ = setup.section.choice_or("outside", "error", {"error", "clamp"}) == "clamp"
-                   ? materials::OutsideTable::Clamp
-                   : materials::OutsideTable::Error;
+    StrengthLawKeys law;
+    strength_law_keys().read(setup.section, law);
+    outside_ = law.outside;
   }
 
   std::vector<Key> consumes() const override { return ports.consumes; }
@@ -99,7 +100,24 @@ class MolecularLammps final : public Scale {
 
 }  // namespace
 
+namespace {
+
+// The keys of [scale.molecular] with backend = "lammps": the shear test's
+// (read by read_shear_test_spec, here or in a [scale.molecular.lammps] table)
+// and the strength law's.
+Schema lammps_keys() {
+  const std::string prefix = "scale.molecular";
+  Schema rows = strength_law_keys().schema(prefix);
+  for (auto& row : shear_test_schema(prefix)) rows.push_back(std::move(row));
+  rows.push_back({prefix + ".lammps", "table", "the keys above", "", "",
+                  "the keys above in a table of their own, beside molecular/table's data and tables", ""});
+  return rows;
+}
+
+}  // namespace
+
 WEARSCALE_BACKEND(molecular_lammps) {
+  add_backend_keys("molecular", "lammps", lammps_keys);
   registry.add<MolecularLammps>(
       "molecular", "lammps",
       "σ_max(p), σ_dyn(p) from live LAMMPS shear tests (§9.3.1) of each material with an interatomic model "

@@ -19,7 +19,7 @@ namespace {
 // The keys of [scale.molecular] with backend = "table".
 struct StrengthTableKeys {
   std::string data = "thesis";
-  materials::OutsideTable outside = materials::OutsideTable::Error;
+  StrengthLawKeys law;
   std::vector<std::string> materials;  ///< not a key: the case's materials, each one table
   std::map<std::string, materials::StrengthTable> tables;
 };
@@ -49,10 +49,7 @@ const KeyTable<StrengthTableKeys>& strength_table_keys() {
       KeyTable<K>()
           .choice("data", &K::data, std::vector<std::string>{"thesis", "lammps"},
                   "shipped strength tables: the thesis' (Fig. 9.18 laws) or wearscale's own LAMMPS runs")
-          .choice("outside", &K::outside,
-                  std::vector<std::pair<std::string, materials::OutsideTable>>{
-                      {"error", materials::OutsideTable::Error}, {"clamp", materials::OutsideTable::Clamp}},
-                  "a pressure outside a table: an error, or the nearest end's strengths")
+          .then([](const Config& c, K& k) { strength_law_keys().read(c, k.law); })
           .table("tables", "a strength table file per material: tables.<material> = \"file.csv\"", read_tables,
                  "file names relative to the case file")
           // molecular/lammps' keys, kept beside (how the tables were computed)
@@ -71,7 +68,7 @@ class MolecularTable final : public Scale {
     k.materials = case_materials(setup.root, library);
     strength_table_keys().read(setup.section, k);
     materials_ = k.materials;
-    for (auto& [m, table] : k.tables) laws_.emplace(m, materials::StrengthLaw(std::move(table), k.outside));
+    for (auto& [m, table] : k.tables) laws_.emplace(m, materials::StrengthLaw(std::move(table), k.law.outside));
   }
 
   std::vector<Key> consumes() const override { return ports.consumes; }
@@ -94,7 +91,11 @@ class MolecularTable final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_table) {
-  add_backend_keys("molecular", "table", [] { return strength_table_keys().schema("scale.molecular"); });
+  add_backend_keys("molecular", "table", [] {
+    Schema rows = strength_table_keys().schema("scale.molecular");
+    for (auto& row : strength_law_keys().schema("scale.molecular")) rows.insert(rows.begin() + 1, std::move(row));
+    return rows;
+  });
   registry.add<MolecularTable>(
       "molecular", "table",
       "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables");

@@ -23,7 +23,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "backends/case_materials.hpp"
 #include "backends/junction_messages.hpp"
 #include "wearscale/core/atomic_file.hpp"
@@ -164,6 +166,123 @@ class JunctionRuns {
   std::map<std::string, std::shared_future<JunctionStrengthResult>> runs_;
 };
 
+// --- The keys of [scale.nano] with backend = "dem" ---------------------------
+
+// What the keys fill: the junction run every (D/L, p_N) pair starts from
+// (its cell and loading, with dem::JunctionStrengthSpec's defaults), the
+// runs to make, and how the particles are taken from the materials.
+struct NanoDemKeys {
+  JunctionStrengthSpec run;
+  std::vector<double> contact_ratios{0.25, 1.0};
+  std::vector<double> pressures{1e9, 2e9, 4e9};
+  std::vector<std::string> amorphous;  ///< materials built amorphous; {"none"}: none
+  std::string strength = "dynamic";
+  std::optional<double> working_pressure;
+  double scaling_exponent = 0.5;
+  double restitution = 0.9;
+  bool clamp_poisson = true;
+  double max_poisson = 0.25;
+  bool cache = true;
+  std::string cache_dir;  ///< "": the user cache folder's dem/
+  int jobs = 1;
+};
+
+// A case that lists some materials turned off by --set: amorphous = "none".
+void none_means_no_material(const Config&, NanoDemKeys& k) {
+  if (k.amorphous.size() == 1 && k.amorphous.front() == "none") k.amorphous.clear();
+}
+
+void check_engine([[maybe_unused]] const Config& c, [[maybe_unused]] NanoDemKeys& k) {
+#ifndef WEARSCALE_DEM_LAMMPS
+  if (k.run.engine == "lammps")
+    throw c.error("engine", "this build has no LAMMPS engine (it is built when CMake finds Debian's liblammps-dev, "
+                  "option WEARSCALE_DEM_LAMMPS)", "wearscale");
+#endif
+}
+
+// Each junction at least one particle wide.
+void check_contact_ratios(const Config& c, NanoDemKeys& k) {
+  const int length = k.run.cell.length;
+  for (double r : k.contact_ratios)
+    if (r * length < 1.0)
+      throw c.error("contact_ratios",
+                    fmt::format("D/L = {:g} is less than one particle of the {}-particle cell", r, length),
+                    fmt::format("[{:.3g}, 1]", 1.0 / length));
+}
+
+const KeyTable<NanoDemKeys>& nano_dem_keys() {
+  using K = NanoDemKeys;
+  using Cell = dem::JunctionCell;
+  const auto cell = [](auto member) { return [member](K& k) -> auto& { return k.run.cell.*member; }; };
+  const auto run = [](auto member) { return [member](K& k) -> auto& { return k.run.*member; }; };
+  static const auto table =
+      KeyTable<K>()
+          // The cell (§7.1.1) and the loading.
+          .number("d0", cell(&Cell::d0), Range::positive(), units::length, "particle diameter d0")
+          .integer("length", cell(&Cell::length), Range::closed(6, 400),
+                   "cell length L in d0 (the periodic sliding direction)")
+          .integer("height", cell(&Cell::height), Range::closed(4, 400), "cell height in HCP double rows of √3 d0")
+          .integer("depth", cell(&Cell::depth), Range::closed(1, 50),
+                   "cell depth in HCP cells of √(8/3) d0 (1: the thesis' 2.4 nm)")
+          .number("gap", cell(&Cell::gap), Range::open(0.0, 0.8),
+                  "height of the gap the junction bridges, as a fraction of the cell height")
+          .number("wall_thickness", cell(&Cell::wall_thickness), Range::closed(0.5, 10.0),
+                  "in d0: the particles this close to the top and bottom faces form the rigid walls")
+          .number("velocity", run(&JunctionStrengthSpec::velocity), Range::positive(), units::velocity,
+                  "sliding velocity of the top wall")
+          .number("time_step", run(&JunctionStrengthSpec::time_step), Range::open(0.0, 1.0),
+                  "time step in Δt_c (6.6)")
+          .number("settle_distance", run(&JunctionStrengthSpec::settle_distance), Range::non_negative(),
+                  "loading before sliding: the time to slide this many L at the velocity")
+          .number("sliding_distance", run(&JunctionStrengthSpec::sliding_distance), Range::positive(),
+                  "sliding distance in L")
+          .number("steady_from", run(&JunctionStrengthSpec::steady_from), Range::closed_open(0.0, 1.0),
+                  "the steady window: the slide after this fraction of it")
+          .integer("record_every", run(&JunctionStrengthSpec::record_every), Range::at_least(1),
+                   "steps per sample of a run's history")
+          .choice("history", run(&JunctionStrengthSpec::history_of_touching_pairs_only),
+                  std::vector<std::pair<std::string, bool>>{{"kept", false}, {"touching", true}},
+                  "tangential histories over neighbour rebuilds: every contact keeps its own (6.4), or touching "
+                  "pairs only, as LAMMPS did in the thesis' runs")
+          .choice("engine", run(&JunctionStrengthSpec::engine), std::vector<std::string>{"wearscale", "lammps"},
+                  "the engine of the junction runs: wearscale's own, or LAMMPS (a build with liblammps-dev), each "
+                  "run on the rank the farm hands it to")
+          .then(check_engine)
+          .names("amorphous", &K::amorphous,
+                 "materials whose interfaces are built amorphous (§6.2.2) instead of on the HCP lattice of §7.1.1; "
+                 "\"none\": none")
+          .then(none_means_no_material)
+          .integer("seed", run(&JunctionStrengthSpec::seed), Range::closed(0, 4294967295.0),
+                   "seed of the amorphous samples")
+          .allowed("[0, 4294967295]")
+          .numbers("contact_ratios", &K::contact_ratios, Range::open_closed(0.0, 1.0), units::dimensionless,
+                   "junction sizes D/L, one run each under each pressure")
+          .then(check_contact_ratios)
+          .numbers("pressures", &K::pressures, Range::non_negative(), units::pressure,
+                   "normal pressures p_N of the runs")
+          // DEM particles from the material records and the molecular strengths.
+          .choice("strength", &K::strength, std::vector<std::string>{"dynamic", "peak"},
+                  "σ_m,T of the particles: σ_dyn or σ_max of the molecular law at the working pressure")
+          .optional_number("working_pressure", &K::working_pressure, Range::positive(), units::pressure,
+                           "pressure at which the molecular law gives σ_m,T")
+          .fallback("p_crit of the molecular law (7.5)")
+          .number("scaling_exponent", &K::scaling_exponent, Range::closed(0.0, 1.0),
+                  "scaling exponent of the particles' strengths (6.62)")
+          .number("restitution", &K::restitution, Range::open_closed(0.0, 1.0),
+                  "coefficient of restitution η of a material whose record has none")
+          .boolean("clamp_poisson", &K::clamp_poisson,
+                   "model a material with ν above max_poisson with ν = max_poisson (false: refuse it)")
+          .number("max_poisson", &K::max_poisson, Range::open_closed(-1.0, 0.25),
+                  "the largest ν modelled: pair forces give ν ≤ 1/4 (6.52), where the tangential spring vanishes")
+          .boolean("cache", &K::cache, "keep each run in the cache and reuse it")
+          .string("cache_dir", &K::cache_dir, "folder of the cached runs")
+          .fallback("~/.cache/wearscale/dem ($WEARSCALE_CACHE/dem)")
+          .integer("jobs", &K::jobs, Range::closed(1, 256), "junction runs side by side (threads)")
+          .computed_default([](const K&) { return std::max(1, omp_get_max_threads()); },
+                            "the OpenMP threads (OMP_NUM_THREADS)");
+  return table;
+}
+
 // --- The backend --------------------------------------------------------------
 
 struct Interface {
@@ -191,81 +310,25 @@ class NanoDem final : public Scale {
     for (const auto& cf : counterfaces) interfaces_.push_back({pin_, cf});
     e_star_ = materials::effective_modulus(library_.get(pin_), library_.get(pin_));
 
-    // The cell (§7.1.1) and the loading.
-    auto& cell = base_.cell;
-    cell.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
-    cell.length = c.integer_or("length", 25, Range::closed(6, 400));
-    cell.height = c.integer_or("height", 14, Range::closed(4, 400));
-    cell.depth = c.integer_or("depth", 1, Range::closed(1, 50));
-    cell.gap = c.number_or("gap", 0.25, Range::open(0.0, 0.8));
-    cell.wall_thickness = c.number_or("wall_thickness", 1.5, Range::closed(0.5, 10.0));
-    base_.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
-    base_.time_step = c.number_or("time_step", 0.1, Range::open(0.0, 1.0));
-    base_.settle_distance = c.number_or("settle_distance", 0.1, Range::non_negative());
-    base_.sliding_distance = c.number_or("sliding_distance", 1.0, Range::positive());
-    base_.steady_from = c.number_or("steady_from", 0.5, Range::closed_open(0.0, 1.0));
-    base_.record_every = c.integer_or("record_every", 200, Range::at_least(1));
-    // "touching": carry tangential histories over neighbour rebuilds for
-    // touching pairs only, as LAMMPS did in the thesis' runs (its
-    // gran/cohesive/history); "kept": every contact keeps its history (6.4).
-    base_.history_of_touching_pairs_only = c.choice_or("history", "kept", {"kept", "touching"}) == "touching";
-    // The engine of the junction runs (dem/engine.hpp): wearscale's own, or
-    // LAMMPS (a build with liblammps-dev), each run a LAMMPS instance on the
-    // rank the farm hands it to.
-    base_.engine = c.choice_or("engine", "wearscale", {"wearscale", "lammps"});
+    NanoDemKeys k;
+    nano_dem_keys().read(c, k);
+    base_ = k.run;
+    ratios_ = k.contact_ratios;
+    pressures_ = k.pressures;
+    for (const auto& name : k.amorphous) {
+      if (!library_.contains(name))
+        throw c.error("amorphous", fmt::format("no material '{}'", name), "names of the case's materials, or \"none\"");
+      amorphous_.push_back(name);
+    }
+    strength_ = k.strength;
+    working_pressure_ = k.working_pressure;
+    scaling_exponent_ = k.scaling_exponent;
+    restitution_ = k.restitution;
+    clamp_poisson_ = k.clamp_poisson;
+    max_poisson_ = k.max_poisson;
 #ifdef WEARSCALE_DEM_LAMMPS
     if (base_.engine == "lammps") dem::register_lammps_engine();
-#else
-    if (base_.engine == "lammps")
-      throw c.error("engine", "this build has no LAMMPS engine (it is built when CMake finds Debian's liblammps-dev, "
-                    "option WEARSCALE_DEM_LAMMPS)", "wearscale");
 #endif
-    // Interfaces with a material listed here are built amorphous (§6.2.2)
-    // instead of on the HCP lattice of §7.1.1: the weakened, amorphous state
-    // the thesis suggests for Si (§9.3.3).
-    if (c.has("amorphous")) {
-      std::vector<std::string> names;
-      try {
-        names = c.values_as_text("amorphous");
-      } catch (const InputError&) {
-        // One name, or "none" (a case that lists some turned off by --set).
-        std::string one;
-        try {
-          one = c.string("amorphous");
-        } catch (const InputError&) {
-          throw c.error("amorphous", "not a list of material names", "[\"Si\", ...] or \"none\"");
-        }
-        if (one != "none") names.push_back(one);
-      }
-      for (const auto& name : names) {
-        if (!library_.contains(name))
-          throw c.error("amorphous", fmt::format("no material '{}'", name), "names of the case's materials, or \"none\"");
-        amorphous_.push_back(name);
-      }
-    }
-    base_.seed = static_cast<unsigned>(c.integer_or("seed", 1, Range::closed(0, 4294967295.0)));
-    ratios_ = c.has("contact_ratios") ? c.numbers("contact_ratios", Range::open_closed(0.0, 1.0))
-                                      : std::vector<double>{0.25, 1.0};
-    pressures_ = c.has("pressures") ? c.numbers("pressures", Range::non_negative(), units::pressure)
-                                    : std::vector<double>{1e9, 2e9, 4e9};
-    if (ratios_.empty()) throw c.error("contact_ratios", "no junction size", "a list of D/L in (0, 1]");
-    if (pressures_.empty()) throw c.error("pressures", "no normal pressure", "a list of p_N ≥ 0");
-    for (double r : ratios_)
-      if (r * cell.length < 1.0)
-        throw c.error("contact_ratios", fmt::format("D/L = {:g} is less than one particle of the {}-particle cell", r,
-                                                    cell.length),
-                      fmt::format("[{:.3g}, 1]", 1.0 / cell.length));
-
-    // DEM particles from the material records and the molecular strengths.
-    strength_ = c.choice_or("strength", "dynamic", {"dynamic", "peak"});
-    if (c.has("working_pressure")) working_pressure_ = c.number("working_pressure", Range::positive(), units::pressure);
-    scaling_exponent_ = c.number_or("scaling_exponent", 0.5, Range::closed(0.0, 1.0));
-    restitution_ = c.number_or("restitution", 0.9, Range::open_closed(0.0, 1.0));
-    clamp_poisson_ = c.boolean_or("clamp_poisson", true);
-    // ν is modelled as at most this: at 1/4 the tangential cross section
-    // (6.52) vanishes and with it the tangential spring and F_m,T, so a
-    // material at the cap (Si, ν = 0.27) would carry no σ_m,T at all.
-    max_poisson_ = c.number_or("max_poisson", 0.25, Range::open_closed(-1.0, 0.25));
     for (const auto& name : case_materials(root, library_)) {
       const auto& m = library_.get(name);
       if (m.poisson > max_poisson_ && !clamp_poisson_)
@@ -275,11 +338,9 @@ class NanoDem final : public Scale {
                                   name, m.poisson, max_poisson_),
                       fmt::format("true (model it with ν = {})", max_poisson_));
     }
-
-    cache_ = c.boolean_or("cache", true);
-    cache_dir_ = c.has("cache_dir") ? expand_home(c.string("cache_dir")) : cache_folder("dem");
-    const long threads = std::max(1, omp_get_max_threads());
-    jobs_ = static_cast<int>(c.integer_or("jobs", threads, Range::closed(1, 256)));
+    cache_ = k.cache;
+    cache_dir_ = k.cache_dir.empty() ? cache_folder("dem") : expand_home(k.cache_dir);
+    jobs_ = k.jobs;
     // Under mpirun any rank may be handed a junction run (run_all).
     mpi::register_task_kind(kJunctionTask, [](const std::string& spec) {
       return to_message(dem::run_junction_strength(spec_from_message(spec)));
@@ -655,6 +716,7 @@ class NanoDem final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(nano_dem) {
+  add_backend_keys("nano", "dem", [] { return nano_dem_keys().schema("scale.nano"); });
   registry.add<NanoDem>("nano", "dem",
                         "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear "
                         "rate per interface, cached");

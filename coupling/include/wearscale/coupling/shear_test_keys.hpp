@@ -22,7 +22,10 @@
 //   pressures = [...]               #   materials: [scale.molecular.<material>])
 //   [md.quench]                     # amorphous: temperatures = [5000, …, 300], hold_time,
 //                                   # cooling_rate = "166 K/ps", final_cooling_rate, timestep, constant_volume
+#include <string>
+
 #include "wearscale/io/config.hpp"
+#include "wearscale/io/key_spec.hpp"
 #include "wearscale/md/shear_test.hpp"
 
 namespace wearscale::coupling {
@@ -36,5 +39,13 @@ md::ShearTestSpec read_shear_test_spec(const Config& root);
 /// given apart with its interatomic model.
 md::ShearTestSpec read_shear_test_spec(const Config& section, const std::string& material,
                                        const materials::InteratomicModel& model);
+
+/// The rows of the shear test's keys in the table `prefix` ("md",
+/// "scale.molecular"): the preset, the protocol, the model's overrides, the
+/// melt-quench and a table per material; one key table declares them and
+/// read_shear_test_spec reads them.
+Schema shear_test_schema(const std::string& prefix);
+/// The rows of [md]: its material, then shear_test_schema("md").
+Schema md_schema();
 
 }  // namespace wearscale::coupling

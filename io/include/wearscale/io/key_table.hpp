@@ -16,7 +16,9 @@
 // A member is a pointer to member or any callable giving a reference into the
 // struct (`[](Setup& s) -> double& { return s.inner.size; }`).
 #include <filesystem>
+#include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -35,6 +37,7 @@ namespace wearscale {
 namespace key_table_detail {
 std::string default_text(double v);
 std::string joined_choices(const std::vector<std::string>& names);
+std::string joined(const std::vector<std::string>& texts, const std::string& separator);
 }  // namespace key_table_detail
 
 template <class Spec>
@@ -91,10 +94,79 @@ class KeyTable {
       auto& v = std::invoke(at, s);
       using I = std::remove_reference_t<decltype(v)>;
       const Range r = self.range_for(s);
-      v = static_cast<I>(self.required_for(s) ? c.integer(self.row.key, r)
-                                       : c.integer_or(self.row.key, static_cast<long>(v), r));
+      const long fallback = self.number_default ? std::lround(self.number_default(s)) : static_cast<long>(v);
+      v = static_cast<I>(self.required_for(s) ? c.integer(self.row.key, r) : c.integer_or(self.row.key, fallback, r));
     };
     k.default_of = [at](Spec& s) { return fmt::format("{}", std::invoke(at, s)); };
+    return add(std::move(k));
+  }
+
+  /// A number that may be absent (a std::optional<double> member, empty when
+  /// it is); give its meaning when absent with fallback().
+  template <class At>
+  KeyTable& optional_number(std::string key, At at, Range range, units::Dimension dim, std::string doc) {
+    Key k = make(std::move(key), "number", range.describe(), dim.to_string(), std::move(doc));
+    k.range = range;
+    k.dimension = dim;
+    k.read = [at](const Key& self, const Config& c, Spec& s) {
+      std::optional<double>& v = std::invoke(at, s);
+      c.mark_used(self.row.key);
+      if (c.has(self.row.key)) v = c.number(self.row.key, self.range_for(s), self.dimension);
+    };
+    k.default_of = [](Spec&) { return std::string(); };
+    return add(std::move(k));
+  }
+
+  /// A non-empty array of numbers in SI (strings with a unit of dimension
+  /// `dim` converted), each in `range`; absent: the member's initializer.
+  template <class At>
+  KeyTable& numbers(std::string key, At at, Range range, units::Dimension dim, std::string doc) {
+    Key k = make(std::move(key), "list", range.describe(), dim.to_string(), std::move(doc));
+    k.range = range;
+    k.dimension = dim;
+    k.read = [at](const Key& self, const Config& c, Spec& s) {
+      std::vector<double>& v = std::invoke(at, s);
+      const std::string& name = self.row.key;
+      c.mark_used(name);
+      if (!self.required_for(s) && !c.has(name)) return;
+      const Range r = self.range_for(s);
+      v = c.numbers(name, r, self.dimension);
+      if (v.empty())
+        throw c.error(name, "an empty list",
+                      "a non-empty array of numbers in " + r.describe() +
+                          (self.dimension == units::dimensionless ? "" : " " + self.dimension.to_string()));
+    };
+    k.default_of = [at](Spec& s) {
+      std::vector<std::string> texts;
+      for (double x : std::invoke(at, s)) texts.push_back(key_table_detail::default_text(x));
+      return "[" + key_table_detail::joined(texts, ", ") + "]";
+    };
+    return add(std::move(k));
+  }
+
+  /// Names: an array of strings, or one string; absent: the member's initializer.
+  template <class At>
+  KeyTable& names(std::string key, At at, std::string doc) {
+    Key k = make(std::move(key), "list", "an array of names, or one name", "", std::move(doc));
+    k.read = [at](const Key& self, const Config& c, Spec& s) {
+      std::vector<std::string>& v = std::invoke(at, s);
+      const std::string& name = self.row.key;
+      c.mark_used(name);
+      if (!self.required_for(s) && !c.has(name)) return;
+      try {
+        v = c.values_as_text(name);
+      } catch (const InputError&) {
+        try {
+          v = {c.string(name)};
+        } catch (const InputError&) {
+          throw c.error(name, "not a list of names", "an array of names, or one name");
+        }
+      }
+    };
+    k.default_of = [at](Spec& s) {
+      const auto& v = std::invoke(at, s);
+      return v.empty() ? std::string("[]") : "[\"" + key_table_detail::joined(v, "\", \"") + "\"]";
+    };
     return add(std::move(k));
   }
 
@@ -172,6 +244,20 @@ class KeyTable {
     return add(std::move(k));
   }
 
+  /// A key read by its own reader `read(c, key, spec)`, for a value no other
+  /// kind describes (`type`, `allowed` and `unit` as the docs show them);
+  /// give its default with fallback().
+  KeyTable& custom(std::string key, std::string type, std::string allowed, std::string unit, std::string doc,
+                   std::function<void(const Config&, const std::string&, Spec&)> reader) {
+    Key k = make(std::move(key), std::move(type), std::move(allowed), std::move(unit), std::move(doc));
+    k.read = [reader](const Key& self, const Config& c, Spec& s) {
+      c.mark_used(self.row.key);
+      reader(c, self.row.key, s);
+    };
+    k.default_of = [](Spec&) { return std::string(); };
+    return add(std::move(k));
+  }
+
   /// A sub-table read by its own reader `read(c, spec)` (`c`: this table's view).
   KeyTable& table(std::string key, std::string doc, std::function<void(const Config&, Spec&)> reader,
                   std::string allowed = {}) {
@@ -207,6 +293,16 @@ class KeyTable {
   KeyTable& computed_text(std::function<std::string(const Spec&)> f, std::string text) {
     last().text_default = std::move(f);
     return fallback(std::move(text));
+  }
+  /// The allowed values in words, for a key whose type does not say them all.
+  KeyTable& allowed(std::string text) {
+    last().row.range = std::move(text);
+    return *this;
+  }
+  /// The unit as the docs write it ("K/s"), for one its dimension spells otherwise.
+  KeyTable& unit(std::string text) {
+    last().row.unit = std::move(text);
+    return *this;
   }
   /// A range from the keys read before (`text` says which, for the docs).
   KeyTable& range_from(std::function<Range(const Spec&)> f, std::string text) {

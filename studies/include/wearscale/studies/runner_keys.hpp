@@ -1,9 +1,10 @@
 #pragma once
 // The keys the runner reads in every case, whatever its study: [case] (its
 // name), [output] (its folder), [run] (how the run is carried out: checkpoints,
-// FFT planning) and [sweep] (the values of a key to run the case over). Each is
+// FFT planning, what rank 0 gathers) and [sweep] (the values of a key to run the case over). Each is
 // declared once in a key table beside the struct it fills; the runner reads
 // them through these tables and docs/keys.md lists them.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -24,11 +25,13 @@ struct CaseKeys {
 };
 const KeyTable<CaseKeys>& case_keys();
 
-/// [run]: how the run is carried out, not what it computes (the keys of a
-/// study's own limits, such as the contact study's gather_limit, are in its schema).
+/// [run]: how the run is carried out, not what it computes.
 struct RunKeys {
   CheckpointPolicy checkpoints;
   PlanRigor fft_planning = PlanRigor::Measure;
+  /// Under mpirun, grids above this many points are not gathered on rank 0
+  /// (88 B a point there for the fields and micro-contacts): every rank writes its rows.
+  std::size_t gather_limit = std::size_t{4096} * 4096;
 };
 const KeyTable<RunKeys>& run_keys();
 

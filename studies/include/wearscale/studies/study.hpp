@@ -57,12 +57,6 @@ class Study {
   virtual std::string default_case_name() const { return name(); }
   /// The output folder of a case that names none; empty: out/<case name>.
   virtual std::string default_output_dir() const { return {}; }
-  /// Reads and checks the keys of [run] that bound the study's own work (the
-  /// contact study's gather_limit), InputError naming a bad one. [run] is the
-  /// runner's table, one for every study: each run reads the limits of every
-  /// study of the build (StudyRegistry::read_run_limits) before prepare(), so
-  /// that a case means the same under any study and any number of ranks.
-  virtual void read_run_limits(const Config& /*inputs*/) const {}
   /// Reads and checks every key the study uses before anything is written
   /// (InputError on a bad one), and may record the values it resolved
   /// (defaults included) in `inputs`, so that summary.json's parameters and
@@ -141,8 +135,6 @@ class StudyRegistry : public NamedRegistry<StudyInfo, Study> {
     const std::unique_ptr<Study> s = std::make_unique<S>();
     add({s->name(), s->summary(), s->schema()}, [] { return std::unique_ptr<Study>(std::make_unique<S>()); });
   }
-  /// Every study's Study::read_run_limits on `inputs`: the limits of [run], read on every run.
-  void read_run_limits(const Config& inputs) const;
 };
 
 /// Every study of the build (each registered by its WEARSCALE_STUDY line).
