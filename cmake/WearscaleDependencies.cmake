@@ -54,12 +54,6 @@ target_include_directories(wearscale_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS
 target_link_libraries(wearscale_hdf5 INTERFACE ${HDF5_C_LIBRARIES})
 target_compile_definitions(wearscale_hdf5 INTERFACE ${HDF5_C_DEFINITIONS} ${HDF5_DEFINITIONS})
 
-# --- Boost (headers: math) ----------------------------------------------------
-find_package(Boost 1.74 QUIET)
-if(NOT Boost_FOUND)
-  wearscale_missing("Boost" "libboost-dev")
-endif()
-
 # --- toml++ (case files) ------------------------------------------------------
 find_package(tomlplusplus QUIET)
 if(NOT TARGET tomlplusplus::tomlplusplus)
@@ -108,6 +102,11 @@ if(WEARSCALE_BUILD_TESTS)
   find_package(GTest QUIET)
   if(NOT TARGET GTest::gtest_main)
     wearscale_missing("GoogleTest" "libgtest-dev libgmock-dev")
+  endif()
+  # Boost's headers (property_tree): the tests read the XDMF files back with them.
+  find_package(Boost 1.74 QUIET)
+  if(NOT Boost_FOUND)
+    wearscale_missing("Boost (headers, for the tests)" "libboost-dev")
   endif()
 endif()
 if(WEARSCALE_BUILD_BENCH)

@@ -6,6 +6,18 @@
 # DEPENDS: a solver that includes a coupling header fails to compile.
 # Installed (cmake/WearscaleInstall.cmake) as wearscale::<name> of find_package(wearscale).
 include(GNUInstallDirs)
+
+# wearscale_unity(<target>): compiles the target's sources in batches of
+# WEARSCALE_UNITY_BATCH_SIZE (one translation unit a batch) when WEARSCALE_UNITY
+# is ON. Most sources are a few hundred lines behind the same standard-library,
+# fmt and JSON headers: parsed once a batch instead of once a file. A source
+# that cannot share a batch carries SKIP_UNITY_BUILD_INCLUSION, with the reason.
+function(wearscale_unity target)
+  if(WEARSCALE_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${WEARSCALE_UNITY_BATCH_SIZE})
+  endif()
+endfunction()
+
 function(wearscale_layer)
   cmake_parse_arguments(L "" "NAME;DIR" "DEPENDS;LIBS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${L_DIR}/src/*.cpp)
@@ -19,6 +31,7 @@ function(wearscale_layer)
   endforeach()
   target_link_libraries(wearscale_${L_NAME} PUBLIC ${deps} ${L_LIBS} PRIVATE wearscale_flags)
   set_target_properties(wearscale_${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${L_NAME})
+  wearscale_unity(wearscale_${L_NAME})
   # Installed by cmake/WearscaleInstall.cmake: the library and its include/ folder as a whole.
   set_property(GLOBAL PROPERTY WEARSCALE_LAYER_${L_NAME}_DIR ${L_DIR})
   set_property(GLOBAL APPEND PROPERTY WEARSCALE_LAYERS ${L_NAME})
