@@ -1,19 +1,28 @@
 // The DEM drivers on the LAMMPS engine over the ranks of `mpirun -np P`: one
 // run spread over every rank by LAMMPS' domain decomposition (rank 0 drives
 // it, the others serve its calls), against the same driver on wearscale's
-// own engine (on rank 0). Reduced sizes; exit 0 when the figures agree.
+// own engine (on rank 0); and each study's state saved mid-run and restored
+// into a system set up again, on the same ranks, against the run that never
+// stopped. Reduced sizes; exit 0 when the figures agree.
 //   mpirun -np P mpi_dem_lammps patch | junction-kept | junction-touching | rough-shear | resume
+//                               | resume-rough-shear | resume-trapped | resume-oxide
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
+#include <map>
 #include <string>
+#include <vector>
 
+#include "../dem/reduced_oxide_asperity.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/dem/engine.hpp"
 #include "wearscale/dem/junction_strength.hpp"
 #include "wearscale/dem/lammps_engine.hpp"
+#include "wearscale/dem/oxide_asperity.hpp"
 #include "wearscale/dem/patch_test.hpp"
 #include "wearscale/dem/rough_shear.hpp"
+#include "wearscale/dem/trapped_particles.hpp"
 #include "wearscale/materials/material.hpp"
 
 using namespace wearscale;
@@ -114,13 +123,159 @@ bool resume() {
   return same && undisturbed && saved_at > 0;
 }
 
+// --- The sliding cells and the oxidized asperity resumed on P ranks ---------------
+
+// Every state a run offers, kept; from(f) continues from the one a fraction f of the way.
+struct Capture {
+  std::vector<CheckpointState> states;
+  RunCheckpoints hooks() {
+    RunCheckpoints h;
+    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
+    return h;
+  }
+  RunCheckpoints from(double fraction) const {
+    RunCheckpoints h;
+    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
+    return h;
+  }
+};
+
+// The snapshot of the particles at each sample (positions, velocities, spins,
+// images: what a dump writes and more), as a hash of their bits by step.
+using Snapshots = std::map<long, std::uint64_t>;
+std::uint64_t hash_bytes(std::uint64_t h, const void* data, std::size_t n) {
+  const auto* b = static_cast<const unsigned char*>(data);
+  for (std::size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ULL;  // FNV-1a
+  return h;
+}
+std::uint64_t snapshot(const Particles& p) {
+  std::uint64_t h = 14695981039346656037ULL;
+  h = hash_bytes(h, p.position.data(), p.position.size() * sizeof(p.position[0]));
+  h = hash_bytes(h, p.velocity.data(), p.velocity.size() * sizeof(p.velocity[0]));
+  h = hash_bytes(h, p.omega.data(), p.omega.size() * sizeof(p.omega[0]));
+  return hash_bytes(h, p.image.data(), p.image.size() * sizeof(p.image[0]));
+}
+
+// The resumed run's snapshots are those of the run that never stopped, at the
+// same steps (it takes fewer: those after the state's step).
+bool same_snapshots(const Snapshots& whole, const Snapshots& resumed) {
+  if (resumed.empty()) return false;
+  for (const auto& [step, h] : resumed) {
+    const auto at = whole.find(step);
+    if (at == whole.end() || at->second != h) return false;
+  }
+  return true;
+}
+
+template <class Sample>
+bool same_bits(const std::vector<Sample>& a, const std::vector<Sample>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Sample)) == 0;
+}
+
+bool report(const char* study, double at, bool history, bool results, bool snapshots, std::size_t resumed_snapshots,
+            double last_whole, double last_resumed) {
+  std::printf("%s resumed %.2g of the way on %d rank(s): history %s, results %s, snapshots %s (%zu compared); "
+              "last F_T %.17g / %.17g\n",
+              study, at, mpi::size(), history ? "the same bits" : "DIFFERENT", results ? "the same" : "DIFFERENT",
+              snapshots ? "the same bits" : "DIFFERENT", resumed_snapshots, last_whole, last_resumed);
+  return history && results && snapshots;
+}
+
+SlidingCellSpec coarse_cell(double d0) {
+  SlidingCellSpec c;
+  c.material = cohesive_material(materials::silica(), 0.5);
+  c.d0 = d0;
+  c.velocity = 100.0;
+  c.pressure = 0.5e9;
+  c.sliding_distance = 2 * d0;
+  c.settle_distance = 0.5 * d0;
+  c.engine = "lammps";
+  return c;
+}
+
+constexpr double coarse_d0 = 6e-9;  // a few hundred particles
+
+// Sheared rough surfaces (§7.2), resumed mid-slide and in the rigid-fit window (the last fifth).
+bool resume_rough_shear() {
+  RoughShearSpec s;
+  s.cell = coarse_cell(coarse_d0);
+  s.cell.box = {10 * coarse_d0, 3.5 * coarse_d0, 10 * coarse_d0};
+  s.roughness = 0.04;
+  Capture capture;
+  Snapshots whole_snapshots;
+  const auto whole = run_rough_shear(
+      s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { whole_snapshots[step] = snapshot(c.engine().particles()); },
+      capture.hooks());
+  if (capture.states.size() < 3) return false;
+  bool ok = true;
+  for (const double at : {0.5, 1.0}) {
+    Snapshots snapshots;
+    const auto r = run_rough_shear(
+        s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { snapshots[step] = snapshot(c.engine().particles()); },
+        capture.from(at));
+    const bool results = r.peak_tangential_force == whole.peak_tangential_force && r.friction == whole.friction &&
+                         r.worn == whole.worn && r.wear_particle == whole.wear_particle &&
+                         r.wear_particle_residual == whole.wear_particle_residual && r.regime == whole.regime;
+    ok &= report("rough shear", at, same_bits(r.history, whole.history), results,
+                 same_snapshots(whole_snapshots, snapshots), snapshots.size(), whole.history.back().tangential_force,
+                 r.history.back().tangential_force);
+  }
+  return ok;
+}
+
+// Two particles of 3.5 d0 trapped between the surfaces (§7.3), resumed half way.
+bool resume_trapped() {
+  TrappedParticlesSpec s;
+  s.cell = coarse_cell(coarse_d0);
+  s.count = 2;
+  s.diameter = 3.5 * coarse_d0;
+  s.cell.box = {2 * 3 * s.diameter, 3.5 * coarse_d0, s.diameter + 9 * coarse_d0};
+  Capture capture;
+  Snapshots whole_snapshots, snapshots;
+  const auto whole = run_trapped_particles(
+      s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { whole_snapshots[step] = snapshot(c.engine().particles()); },
+      capture.hooks());
+  if (capture.states.size() < 3) return false;
+  const auto r = run_trapped_particles(
+      s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { snapshots[step] = snapshot(c.engine().particles()); },
+      capture.from(0.5));
+  const bool results = r.loose_residual == whole.loose_residual && r.friction == whole.friction &&
+                       r.worn_first_body == whole.worn_first_body && r.band_thickness == whole.band_thickness &&
+                       r.peak_tangential_force == whole.peak_tangential_force;
+  return report("trapped particles", 0.5, same_bits(r.history, whole.history), results,
+                same_snapshots(whole_snapshots, snapshots), snapshots.size(), whole.history.back().tangential_force,
+                r.history.back().tangential_force);
+}
+
+// The oxidized asperity (§9.3.3, reduced to d0 = 6 nm), resumed while sliding.
+bool resume_oxide() {
+  auto s = test_support::reduced_oxide_asperity(coarse_d0);
+  s.engine = "lammps";
+  Capture capture;
+  Snapshots whole_snapshots, snapshots;
+  const auto whole = run_oxide_asperity(
+      s, [&](const Engine& e, const OxideAsperitySample&, long step, long, const std::vector<double>&) { whole_snapshots[step] = snapshot(e.particles()); },
+      capture.hooks());
+  if (capture.states.size() < 5) return false;
+  const auto r = run_oxide_asperity(
+      s, [&](const Engine& e, const OxideAsperitySample&, long step, long, const std::vector<double>&) { snapshots[step] = snapshot(e.particles()); },
+      capture.from(0.7));
+  const bool results = r.rotation == whole.rotation && r.travel == whole.travel && r.final_body == whole.final_body &&
+                       r.friction == whole.friction && r.reached_substrate_at == whole.reached_substrate_at &&
+                       r.trench_depth == whole.trench_depth;
+  return report("oxide asperity", 0.7, same_bits(r.history, whole.history), results,
+                same_snapshots(whole_snapshots, snapshots), snapshots.size(), whole.history.back().tangential_force,
+                r.history.back().tangential_force);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   mpi::Session session(argc, argv);
   register_lammps_engine();
   if (argc != 2) {
-    std::fprintf(stderr, "usage: mpi_dem_lammps patch|junction-kept|junction-touching|rough-shear|resume\n");
+    std::fprintf(stderr, "usage: mpi_dem_lammps patch|junction-kept|junction-touching|rough-shear|resume|"
+                         "resume-rough-shear|resume-trapped|resume-oxide\n");
     return 2;
   }
   if (mpi::rank() != 0) {
@@ -136,6 +291,9 @@ int main(int argc, char** argv) {
     else if (what == "junction-touching") ok = junction(true);
     else if (what == "rough-shear") ok = rough_shear();
     else if (what == "resume") ok = resume();
+    else if (what == "resume-rough-shear") ok = resume_rough_shear();
+    else if (what == "resume-trapped") ok = resume_trapped();
+    else if (what == "resume-oxide") ok = resume_oxide();
     else std::fprintf(stderr, "unknown case %s\n", argv[1]);
   }
   return ok ? 0 : 1;

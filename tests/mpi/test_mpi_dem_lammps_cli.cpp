@@ -1,9 +1,10 @@
 // `wearscale dem STUDY … --set dem.engine=lammps`: every DEM study on the
 // LAMMPS engine without mpirun and as one run over three ranks (LAMMPS'
-// domain decomposition; rank 0 alone prints and writes); a run on two ranks
-// whose worker rank is killed resumes to the outputs of the uninterrupted one
-// bit for bit; nano/dem's junction runs on the LAMMPS engine over the task
-// farm give the serial law. Reduced cases (seconds each); label "mpi".
+// domain decomposition; rank 0 alone prints and writes); a run of each study
+// on two ranks whose worker rank is killed resumes to the outputs of the
+// uninterrupted one bit for bit; nano/dem's junction runs on the LAMMPS
+// engine over the task farm give the serial law. Reduced cases (seconds
+// each); label "mpi".
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -78,11 +79,10 @@ INSTANTIATE_TEST_SUITE_P(EveryStudy, MpiDemLammpsCli, ::testing::ValuesIn(dem_st
 
 // A worker rank killed (SIGKILL) after the first checkpoint ends the job; the
 // run resumed on two ranks ends with the outputs of the uninterrupted run on
-// two ranks, results, history and snapshots bit for bit. (The junction and
-// the patch test: the other studies do not yet resume bit for bit on this
-// engine, tests/apps/test_reliability_cli.cpp.)
+// two ranks, results, history and snapshots bit for bit: every study.
 TEST(MpiDemLammpsResume, AKilledRunOnTwoRanksResumesBitForBit) {
-  for (const auto& study : {dem_studies[0], dem_studies[3]}) {
+  for (const auto& study : dem_studies) {
+    SCOPED_TRACE(study.label);
     const std::string args = "-j 1 " + study.args + on_lammps + " --set run.checkpoint_steps=200";
     const std::string reference = study.label + "_np2_reference", part = study.label + "_np2_part";
     const auto r = run(2, args + " --out " + reference);
