@@ -27,7 +27,8 @@ struct KilledJob {
 };
 
 /// Starts `wearscale args` under `mpirun -np ranks` in `cwd` (one thread a
-/// rank, output to killed.out/err there), waits (up to 30 s) until `ready()`,
+/// rank, output to killed.out/err there), waits (up to 120 s: a loaded CI
+/// machine sets a DEM cell up slowly) until `ready()`,
 /// then kills (SIGKILL) one worker rank: a wearscale process of the job whose
 /// OMPI_COMM_WORLD_RANK is not 0 (the job is found by `marker`, a word of its
 /// command line such as its output folder); returns once the job has ended.
@@ -39,7 +40,7 @@ inline KilledJob kill_a_worker_rank(const std::string& cwd, int ranks, const std
   KilledJob out;
   const pid_t job = spawn_shell(cmd);
   if (job < 0) return out;
-  for (int wait = 0; wait < 600 && !out.killed; ++wait) {
+  for (int wait = 0; wait < 2400 && !out.killed; ++wait) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     if (!ready()) continue;
     const std::string find = "for p in $(pgrep -f -- '" + marker + "'); do "
