@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "captured_states.hpp"
 #include "wearscale/dem/cohesive_material.hpp"
 #include "wearscale/dem/run_checkpoints.hpp"
 #include "wearscale/dem/sliding_cell.hpp"
@@ -16,21 +17,6 @@
 #include "wearscale/materials/material.hpp"
 
 namespace wearscale::dem::test_support {
-
-/// Keeps every state offered; resume(f) continues from the state a fraction f of the way.
-struct Capture {
-  std::vector<CheckpointState> states;
-  RunCheckpoints hooks() {
-    RunCheckpoints h;
-    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
-    return h;
-  }
-  RunCheckpoints resume(double fraction) const {
-    RunCheckpoints h;
-    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
-    return h;
-  }
-};
 
 /// SiO2 (Table 6.5, s = ½) at d0: a few hundred particles, slid 2 d0 at 100 m/s
 /// under 0.5 GPa, the checkpoints falling after sliding starts.

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../dem/captured_states.hpp"
 #include "../dem/reduced_oxide_asperity.hpp"
 #include "wearscale/core/mpi.hpp"
 #include "wearscale/dem/engine.hpp"
@@ -125,20 +126,7 @@ bool resume() {
 
 // --- The sliding cells and the oxidized asperity resumed on P ranks ---------------
 
-// Every state a run offers, kept; from(f) continues from the one a fraction f of the way.
-struct Capture {
-  std::vector<CheckpointState> states;
-  RunCheckpoints hooks() {
-    RunCheckpoints h;
-    h.at_sample = [this](long, const std::function<CheckpointState()>& make) { states.push_back(make()); };
-    return h;
-  }
-  RunCheckpoints from(double fraction) const {
-    RunCheckpoints h;
-    h.from = &states.at(static_cast<std::size_t>(fraction * static_cast<double>(states.size() - 1)));
-    return h;
-  }
-};
+using test_support::Capture;
 
 // The snapshot of the particles at each sample (positions, velocities, spins,
 // images: what a dump writes and more), as a hash of their bits by step.
@@ -212,7 +200,7 @@ bool resume_rough_shear() {
     Snapshots snapshots;
     const auto r = run_rough_shear(
         s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { snapshots[step] = snapshot(c.engine().particles()); },
-        capture.from(at));
+        capture.resume(at));
     const bool results = r.peak_tangential_force == whole.peak_tangential_force && r.friction == whole.friction &&
                          r.worn == whole.worn && r.wear_particle == whole.wear_particle &&
                          r.wear_particle_residual == whole.wear_particle_residual && r.regime == whole.regime;
@@ -238,7 +226,7 @@ bool resume_trapped() {
   if (capture.states.size() < 3) return false;
   const auto r = run_trapped_particles(
       s, [&](const SlidingCell& c, const SlidingSample&, long step, long) { snapshots[step] = snapshot(c.engine().particles()); },
-      capture.from(0.5));
+      capture.resume(0.5));
   const bool results = r.loose_residual == whole.loose_residual && r.friction == whole.friction &&
                        r.worn_first_body == whole.worn_first_body && r.band_thickness == whole.band_thickness &&
                        r.peak_tangential_force == whole.peak_tangential_force;
@@ -259,7 +247,7 @@ bool resume_oxide() {
   if (capture.states.size() < 5) return false;
   const auto r = run_oxide_asperity(
       s, [&](const Engine& e, const OxideAsperitySample&, long step, long, const std::vector<double>&) { snapshots[step] = snapshot(e.particles()); },
-      capture.from(0.7));
+      capture.resume(0.7));
   const bool results = r.rotation == whole.rotation && r.travel == whole.travel && r.final_body == whole.final_body &&
                        r.friction == whole.friction && r.reached_substrate_at == whole.reached_substrate_at &&
                        r.trench_depth == whole.trench_depth;
