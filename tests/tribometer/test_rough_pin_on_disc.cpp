@@ -160,10 +160,7 @@ TEST(RoughPinOnDisc, OnARoughPinTheAdaptiveIntegratorMatchesTheConvergedExplicit
   auto fine = setup;
   fine.time_step = setup.time_step / 4.0;
   const auto adaptive = test_support::run_outcome(setup, true), explicit_ = test_support::run_outcome(fine, false);
-  EXPECT_NEAR(adaptive.mu_mean, explicit_.mu_mean, 1e-3 * explicit_.mu_mean);
-  EXPECT_NEAR(adaptive.mu_final, explicit_.mu_final, 1e-3 * explicit_.mu_final);
-  EXPECT_NEAR(adaptive.pin, explicit_.pin, 1e-3 * explicit_.pin);
-  EXPECT_NEAR(adaptive.disc, explicit_.disc, 1e-3 * explicit_.disc);
+  test_support::expect_same_friction_and_wear(adaptive, explicit_, 1e-3);
   // The explicit crossing is the first step boundary past it: one step (0.04 mm) is its resolution.
   EXPECT_NEAR(adaptive.reached, explicit_.reached, setup.velocity * fine.time_step);
   EXPECT_LT(adaptive.solves, explicit_.solves / 4);

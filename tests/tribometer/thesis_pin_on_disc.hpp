@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "wearscale/io/shipped_data.hpp"
 #include "wearscale/tribometer/adaptive_wear.hpp"
 #include "wearscale/tribometer/friction_average.hpp"
@@ -76,6 +78,14 @@ inline Outcome run_outcome(const PinOnDiscSetup& setup, bool adaptive) {
   out.solves = model.contact_solves();
   out.iterations = model.contact_iterations();
   return out;
+}
+
+// The adaptive run's μ_mean, μ_final and both worn volumes within `rtol` of the reference run's.
+inline void expect_same_friction_and_wear(const Outcome& a, const Outcome& reference, double rtol) {
+  EXPECT_NEAR(a.mu_mean, reference.mu_mean, rtol * reference.mu_mean);
+  EXPECT_NEAR(a.mu_final, reference.mu_final, rtol * reference.mu_final);
+  EXPECT_NEAR(a.pin, reference.pin, rtol * reference.pin);
+  EXPECT_NEAR(a.disc, reference.disc, rtol * reference.disc);
 }
 
 }  // namespace wearscale::tribometer::test_support
