@@ -30,7 +30,7 @@
 #include "wearscale/core/range.hpp"
 #include "wearscale/core/units.hpp"
 #include "wearscale/io/config.hpp"
-#include "wearscale/io/key_spec.hpp"
+#include "wearscale/core/key_spec.hpp"
 
 namespace wearscale {
 
@@ -140,6 +140,36 @@ class KeyTable {
       std::vector<std::string> texts;
       for (double x : std::invoke(at, s)) texts.push_back(key_table_detail::default_text(x));
       return "[" + key_table_detail::joined(texts, ", ") + "]";
+    };
+    return add(std::move(k));
+  }
+
+  /// A range [MIN, MAX] of two numbers in SI, each in `element`, MIN < MAX (a
+  /// std::pair<double, double> member); absent: the member's initializer.
+  /// `what` names the quantity in errors ("d*/l").
+  template <class At>
+  KeyTable& interval(std::string key, At at, Range element, units::Dimension dim, std::string what, std::string doc) {
+    const std::string each = element.describe();
+    const bool bounded = !each.empty() && (each.front() == '[' || each.front() == '(');
+    Key k = make(std::move(key), "range", bounded ? "[MIN, MAX] within " + each : "[MIN, MAX], each " + each,
+                 dim.to_string(), std::move(doc));
+    k.range = element;
+    k.dimension = dim;
+    k.read = [at, what](const Key& self, const Config& c, Spec& s) {
+      std::pair<double, double>& v = std::invoke(at, s);
+      const std::string& name = self.row.key;
+      c.mark_used(name);
+      if (!self.required_for(s) && !c.has(name)) return;
+      const Range r = self.range_for(s);
+      const std::vector<double> x = c.numbers(name, r, self.dimension);
+      if (x.size() != 2 || !(x[0] < x[1]))
+        throw c.error(name, "not a range [MIN, MAX] with MIN < MAX",
+                      fmt::format("[MIN, MAX] of {} with MIN < MAX, each {}", what, r.describe()));
+      v = {x[0], x[1]};
+    };
+    k.default_of = [at](Spec& s) {
+      const std::pair<double, double>& v = std::invoke(at, s);
+      return "[" + key_table_detail::default_text(v.first) + ", " + key_table_detail::default_text(v.second) + "]";
     };
     return add(std::move(k));
   }
@@ -258,6 +288,21 @@ class KeyTable {
     return add(std::move(k));
   }
 
+  /// A string read by its own reader `read(c, key, spec)` (a value the
+  /// reader checks further: an output file name), its default the member's
+  /// initializer; `allowed` says what it takes.
+  template <class At>
+  KeyTable& checked_string(std::string key, At at, std::string allowed, std::string doc,
+                           std::function<void(const Config&, const std::string&, Spec&)> reader) {
+    Key k = make(std::move(key), "string", std::move(allowed), "", std::move(doc));
+    k.read = [reader](const Key& self, const Config& c, Spec& s) {
+      c.mark_used(self.row.key);
+      reader(c, self.row.key, s);
+    };
+    k.default_of = [at](Spec& s) { return std::string(std::invoke(at, s)); };
+    return add(std::move(k));
+  }
+
   /// A sub-table read by its own reader `read(c, spec)` (`c`: this table's view).
   KeyTable& table(std::string key, std::string doc, std::function<void(const Config&, Spec&)> reader,
                   std::string allowed = {}) {
@@ -302,6 +347,19 @@ class KeyTable {
   /// The unit as the docs write it ("K/s"), for one its dimension spells otherwise.
   KeyTable& unit(std::string text) {
     last().row.unit = std::move(text);
+    return *this;
+  }
+  /// The command-line alias flag of the key ("--pressure"); with `switch_value`
+  /// a flag without a value that sets the key to it ("--naive": "naive").
+  KeyTable& flag(std::string name, std::string switch_value = {}) {
+    last().row.flag = std::move(name);
+    last().row.switch_value = std::move(switch_value);
+    return *this;
+  }
+  /// A "list" key whose alias flag takes plain numbers in `unit_text`
+  /// separated by commas ("--pressures 0,10" with "GPa").
+  KeyTable& flag_list_unit(std::string unit_text) {
+    last().row.list_unit = std::move(unit_text);
     return *this;
   }
   /// A range from the keys read before (`text` says which, for the docs).
