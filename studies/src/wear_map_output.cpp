@@ -8,23 +8,8 @@ namespace wearscale::studies {
 
 namespace fs = std::filesystem;
 
-std::pair<double, double> read_range(const Config& cfg, const std::string& key, std::pair<double, double> fallback,
-                                     const Range& element, const std::string& what) {
-  if (!cfg.has(key)) {
-    cfg.mark_used(key);
-    return fallback;
-  }
-  const auto v = cfg.numbers(key, element);
-  if (v.size() != 2 || !(v[0] < v[1]))
-    throw cfg.error(key, "not a range [MIN, MAX] with MIN < MAX",
-                    fmt::format("[MIN, MAX] of {} with MIN < MAX, each {}", what, element.describe()));
-  return {v[0], v[1]};
-}
-
-wear::MapAxis read_axis(const Config& cfg, const std::string& key, wear::MapAxis axis, std::size_t n,
-                        const Range& element) {
-  const auto [min, max] = read_range(cfg, key, {axis.min, axis.max}, element, axis.label);
-  axis.min = min, axis.max = max, axis.n = n;
+wear::MapAxis axis_over(wear::MapAxis axis, std::pair<double, double> range, std::size_t n) {
+  axis.min = range.first, axis.max = range.second, axis.n = n;
   return axis;
 }
 

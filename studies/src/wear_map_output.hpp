@@ -1,6 +1,6 @@
 #pragma once
 // What the wear-map studies (wearmap/analytic2d, wearmap/analytic3d,
-// wearmap/rough) share: axis-range keys [MIN, MAX], recording the values a
+// wearmap/rough) share: axes over the ranges their keys give, recording the values a
 // study resolved (defaults included) in its case, and the files of an
 // analytic map (HDF5 + XDMF, CSV, the heat map of its regions).
 #include <filesystem>
@@ -16,14 +16,8 @@
 
 namespace wearscale::studies {
 
-/// An axis range key: two numbers [MIN, MAX], each in `element`, MIN < MAX;
-/// `fallback` when absent. `what` (e.g. "d/l") names the quantity in errors.
-std::pair<double, double> read_range(const Config& cfg, const std::string& key, std::pair<double, double> fallback,
-                                     const Range& element, const std::string& what);
-
-/// `axis` with the range of the case key `key` (when set) and `n` points.
-wear::MapAxis read_axis(const Config& cfg, const std::string& key, wear::MapAxis axis, std::size_t n,
-                        const Range& element);
+/// `axis` over `range` ([MIN, MAX], as its key table read it) with `n` points.
+wear::MapAxis axis_over(wear::MapAxis axis, std::pair<double, double> range, std::size_t n);
 
 /// Records a resolved value in the case (so that to_json()/to_toml() hold
 /// every parameter the run used, defaults included).

@@ -13,9 +13,25 @@
 #include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/studies/study.hpp"
+#include "wearscale/studies/wearmap_keys.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 
 namespace wearscale::studies {
+
+const KeyTable<WearmapAnalytic2dKeys>& wearmap_analytic2d_keys() {
+  using K = WearmapAnalytic2dKeys;
+  static const auto table =
+      KeyTable<K>()
+          .interval("dr_over_dstar", &K::dr_over_dstar, Range::non_negative(), units::dimensionless,
+                    wear::default_real_size_axis().label, "range of the real contact size d_r/d*")
+          .flag("--dr-over-dstar")
+          .interval("da_over_dstar", &K::da_over_dstar, Range::non_negative(), units::dimensionless,
+                    wear::default_apparent_size_axis().label, "range of the apparent contact size d_a/d*")
+          .flag("--da-over-dstar")
+          .integer("n", &K::n, Range::closed(2, 4096), "points along each axis")
+          .flag("--n");
+  return table;
+}
 
 namespace {
 
@@ -46,22 +62,15 @@ class WearmapAnalytic2d final : public Study {
   }
   std::string default_case_name() const override { return "wearmap"; }
   std::string default_output_dir() const override { return "out/wearmap-analytic2d"; }  // each map its own folder
-  Schema schema() const override {
-    return {
-        {"wearmap.analytic2d.dr_over_dstar", "range", "[MIN, MAX], each ≥ 0", "1", "[0, 3]",
-         "range of the real contact size d_r/d*", "--dr-over-dstar"},
-        {"wearmap.analytic2d.da_over_dstar", "range", "[MIN, MAX], each ≥ 0", "1", "[0, 6]",
-         "range of the apparent contact size d_a/d*", "--da-over-dstar"},
-        {"wearmap.analytic2d.n", "integer", "2 … 4096", "1", "301", "points along each axis", "--n"},
-    };
-  }
+  Schema schema() const override { return wearmap_analytic2d_keys().schema("wearmap.analytic2d"); }
 
   std::vector<std::string> prepare(Config& cfg) override {
     const std::string k = "wearmap.analytic2d.";
-    const long points = long(wear::default_real_size_axis().n);
-    const auto n = static_cast<std::size_t>(cfg.integer_or(k + "n", points, Range::closed(2, 4096)));
-    x_ = read_axis(cfg, k + "dr_over_dstar", wear::default_real_size_axis(), n, Range::non_negative());
-    y_ = read_axis(cfg, k + "da_over_dstar", wear::default_apparent_size_axis(), n, Range::non_negative());
+    WearmapAnalytic2dKeys keys;
+    wearmap_analytic2d_keys().read(cfg.section("wearmap.analytic2d"), keys);
+    const std::size_t n = keys.n;
+    x_ = axis_over(wear::default_real_size_axis(), keys.dr_over_dstar, n);
+    y_ = axis_over(wear::default_apparent_size_axis(), keys.da_over_dstar, n);
     cfg.reject_unknown_keys();
     record(cfg, k + "n", fmt::format("{}", n));
     record(cfg, k + "dr_over_dstar", toml_range({x_.min, x_.max}));

@@ -17,10 +17,49 @@
 #include "wearscale/coupling/palette.hpp"
 #include "wearscale/coupling/plots.hpp"
 #include "wearscale/studies/study.hpp"
+#include "wearscale/studies/wearmap_keys.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/two_contacts_3d.hpp"
 
 namespace wearscale::studies {
+
+const KeyTable<WearmapAnalytic3dKeys>& wearmap_analytic3d_keys() {
+  using K = WearmapAnalytic3dKeys;
+  static const auto table =
+      KeyTable<K>()
+          .interval("d_over_l", &K::d_over_l, Range::closed(0.0, 1.0), units::dimensionless,
+                    wear::default_d_over_l_axis().label, "range of d/l, contact diameter over centre distance")
+          .flag("--d-over-l")
+          .interval("dstar_over_l", &K::dstar_over_l, Range::non_negative(), units::dimensionless,
+                    wear::default_dstar_over_l_axis().label,
+                    "range of d*/l, critical diameter (4.35) over centre distance")
+          .flag("--dstar-over-l")
+          .integer("n", &K::n, Range::closed(2, 4096), "points along each axis")
+          .flag("--n")
+          .custom("interaction", "choice", "max | min", "",
+                  "max (ν = 0.5, θ = 0: C_inter = 2/3) or min (ν = 0.5, θ = π/2: 1/3) (Fig. 4.6); excludes nu and "
+                  "theta",
+                  [](const Config& c, const std::string& key, K& k) {
+                    if (c.has(key)) k.interaction = c.choice(key, {"max", "min"});
+                  })
+          .flag("--interaction")
+          .number("nu", &K::nu, Range::open_closed(-1.0, 0.5), "Poisson's ratio ν")
+          .flag("--nu")
+          .number("theta", &K::theta, Range::any(), "angle θ between the load and the line of the centres")
+          .unit("rad")
+          .flag("--theta")
+          .then([](const Config& c, K& k) {
+            if (k.interaction.empty()) return;
+            // Fig. 4.6: ν = ½ with θ = 0 (most) or π/2 (least)
+            for (const char* fixed : {"nu", "theta"})
+              if (c.has(fixed))
+                throw c.error(fixed, "cannot be set together with interaction (which fixes ν = 0.5 and θ)",
+                              "either interaction, or nu and theta");
+            k.nu = 0.5;
+            k.theta = k.interaction == "max" ? 0.0 : std::numbers::pi / 2;
+          });
+  return table;
+}
 
 namespace {
 
@@ -63,41 +102,17 @@ class WearmapAnalytic3d final : public Study {
   }
   std::string default_case_name() const override { return "wearmap"; }
   std::string default_output_dir() const override { return "out/wearmap-analytic3d"; }  // each map its own folder
-  Schema schema() const override {
-    return {
-        {"wearmap.analytic3d.d_over_l", "range", "[MIN, MAX] within [0, 1]", "1", "[0, 1]",
-         "range of d/l, contact diameter over centre distance", "--d-over-l"},
-        {"wearmap.analytic3d.dstar_over_l", "range", "[MIN, MAX], each ≥ 0", "1", "[0, 2]",
-         "range of d*/l, critical diameter (4.35) over centre distance", "--dstar-over-l"},
-        {"wearmap.analytic3d.n", "integer", "2 … 4096", "1", "201", "points along each axis", "--n"},
-        {"wearmap.analytic3d.interaction", "choice", "max | min", "", "",
-         "max (ν = 0.5, θ = 0: C_inter = 2/3) or min (ν = 0.5, θ = π/2: 1/3) (Fig. 4.6); excludes nu and theta",
-         "--interaction"},
-        {"wearmap.analytic3d.nu", "number", "(-1, 0.5]", "1", "0.5", "Poisson's ratio ν", "--nu"},
-        {"wearmap.analytic3d.theta", "number", "any", "rad", "0",
-         "angle θ between the load and the line of the centres", "--theta"},
-    };
-  }
+  Schema schema() const override { return wearmap_analytic3d_keys().schema("wearmap.analytic3d"); }
 
   std::vector<std::string> prepare(Config& cfg) override {
     const std::string k = "wearmap.analytic3d.";
-    const long points = long(wear::default_d_over_l_axis().n);
-    const auto n = static_cast<std::size_t>(cfg.integer_or(k + "n", points, Range::closed(2, 4096)));
-    x_ = read_axis(cfg, k + "d_over_l", wear::default_d_over_l_axis(), n, Range::closed(0.0, 1.0));
-    y_ = read_axis(cfg, k + "dstar_over_l", wear::default_dstar_over_l_axis(), n, Range::non_negative());
-    double nu = cfg.number_or(k + "nu", 0.5, Range::open_closed(-1.0, 0.5));
-    double theta = cfg.number_or(k + "theta", 0.0, Range::any());
-    cfg.mark_used(k + "interaction");
-    const bool interaction = cfg.has(k + "interaction");
-    if (interaction) {  // Fig. 4.6: ν = ½ with θ = 0 (most) or π/2 (least)
-      const std::string i = cfg.choice(k + "interaction", {"max", "min"});
-      for (const char* fixed : {"nu", "theta"})
-        if (cfg.has(k + fixed))
-          throw cfg.error(k + fixed, "cannot be set together with interaction (which fixes ν = 0.5 and θ)",
-                          "either interaction, or nu and theta");
-      nu = 0.5;
-      theta = i == "max" ? 0.0 : std::numbers::pi / 2;
-    }
+    WearmapAnalytic3dKeys keys;
+    wearmap_analytic3d_keys().read(cfg.section("wearmap.analytic3d"), keys);
+    const std::size_t n = keys.n;
+    x_ = axis_over(wear::default_d_over_l_axis(), keys.d_over_l, n);
+    y_ = axis_over(wear::default_dstar_over_l_axis(), keys.dstar_over_l, n);
+    const double nu = keys.nu, theta = keys.theta;
+    const bool interaction = !keys.interaction.empty();
     cfg.reject_unknown_keys();
     record(cfg, k + "n", fmt::format("{}", n));
     record(cfg, k + "d_over_l", toml_range({x_.min, x_.max}));

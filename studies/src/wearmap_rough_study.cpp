@@ -26,10 +26,80 @@
 #include "wearscale/io/hdf5_file.hpp"
 #include "wearscale/io/xdmf.hpp"
 #include "wearscale/studies/study.hpp"
+#include "wearscale/studies/wearmap_keys.hpp"
 #include "wearscale/wear/rough_wear_map.hpp"
 #include "wearscale/wear/wear_curves.hpp"
 
 namespace wearscale::studies {
+
+const KeyTable<WearmapRoughKeys>& wearmap_rough_keys() {
+  using K = WearmapRoughKeys;
+  using wear::EnergyReleaseMethod;
+  static const auto table =
+      KeyTable<K>()
+          .integer("n", [](K& k) -> std::size_t& { return k.map.surface.n; }, Range::closed(16, 4096),
+                   "grid points per side (§5.3: 512)")
+          .flag("--n")
+          .integer("seeds", &K::seeds, Range::closed(1, 1000), "random surfaces to average, seeds 1…S")
+          .flag("--seeds")
+          .number("hurst", [](K& k) -> double& { return k.map.surface.hurst; }, Range::open_closed(0.0, 1.0),
+                  "Hurst exponent H")
+          .flag("--hurst")
+          .number("q_l", [](K& k) -> double& { return k.map.surface.k_l; }, Range::at_least(1.0),
+                  "q_l in units of 2π/L (= q_r)")
+          .flag("--ql")
+          .number("q_s", [](K& k) -> double& { return k.map.surface.k_s; }, Range::at_least(1.0),
+                  "q_s in units of 2π/L")
+          .computed_default([](const K& k) { return static_cast<double>(k.map.surface.n) / 8.0; }, "n/8")
+          .allowed("[q_l, n/2]")
+          .flag("--qs")
+          .then([](const Config& c, K& k) {
+            const auto& surface = k.map.surface;
+            if (!(surface.k_l <= surface.k_s && surface.k_s <= static_cast<double>(surface.n) / 2.0))
+              throw c.error(c.has("q_s") ? "q_s" : "q_l",
+                            fmt::format("not allowed with q_l = {}, q_s = {} and n = {}", surface.k_l, surface.k_s,
+                                        surface.n),
+                            fmt::format("1 ≤ q_l ≤ q_s ≤ n/2 = {} (in 2π/L; q_s defaults to n/8)", surface.n / 2));
+          })
+          .interval("loads", &K::loads, Range::open(0.0, 1.0), units::dimensionless, "p̃_N (5.1)",
+                    "normalized loads p̃_N (5.1), evenly spaced")
+          .flag("--loads")
+          .integer("n_loads", &K::n_loads, Range::closed(1, 1000), "points along p̃_N")
+          .flag("--n-loads")
+          .interval("dstar_over_l", &K::dstar_over_l, Range::positive(), units::dimensionless, "d*/L (4.35)",
+                    "critical diameters d*/L (4.35), geometric")
+          .flag("--dstar-over-l")
+          .integer("n_dstar", &K::n_dstar, Range::closed(1, 1000), "points along d*/L")
+          .flag("--n-dstar")
+          .number("nu", [](K& k) -> double& { return k.map.surface.poisson; }, Range::open_closed(-1.0, 0.5),
+                  "Poisson's ratio ν")
+          .flag("--nu")
+          .number("tensile_strength", [](K& k) -> double& { return k.map.tensile_strength; }, Range::positive(),
+                  "σ_m/σ_j of the crack criterion (4.25)")
+          .flag("--tensile-strength")
+          .number("spot", [](K& k) -> double& { return k.map.spot; }, Range::closed(0.0, 1.0),
+                  "crack sites within this fraction of each micro-contact's peak edge stress (1: every edge past σ_m)")
+          .flag("--spot")
+          .number("invalid_diameter", [](K& k) -> double& { return k.map.invalid_diameter; },
+                  Range::open_closed(0.0, 1.0), "pixels whose mean largest particle is ≥ this × L are invalid")
+          .flag("--invalid-diameter")
+          .choice("energy_balance", [](K& k) -> bool& { return k.map.options.cumulative; },
+                  std::vector<std::pair<std::string, bool>>{{"cumulative", true}, {"per_particle", false}},
+                  "cumulative balance, or each particle pays for itself")
+          .flag("--per-particle", "per_particle")
+          .choice("method", [](K& k) -> EnergyReleaseMethod& { return k.map.options.method; },
+                  std::vector<std::pair<std::string, EnergyReleaseMethod>>{{"fast", EnergyReleaseMethod::Fast},
+                                                                           {"naive", EnergyReleaseMethod::Naive}},
+                  "energy release: fast, or one full solve per candidate (the slow baseline)")
+          .flag("--naive", "naive")
+          .integer("naive_pixels", &K::naive_pixels, Range::closed(0, 1000),
+                   "also time the naive baseline against the fast model on K pixels of the first seed (middle d*)")
+          .flag("--naive-pixels")
+          .integer("naive_max_solves", &K::naive_max_solves, Range::non_negative(),
+                   "stop each naive pixel after this many solves and extrapolate its time (0: run it through)")
+          .flag("--naive-max-solves");
+  return table;
+}
 
 namespace {
 
@@ -297,78 +367,26 @@ class WearmapRough final : public Study {
   std::size_t naive_pixels_ = 0, naive_max_solves_ = 0;
 };
 
-Schema WearmapRough::schema() const {
-  const std::string k = "wearmap.rough.";
-  return {
-      {k + "n", "integer", "16 … 4096", "1", "512", "grid points per side (§5.3: 512)", "--n"},
-      {k + "seeds", "integer", "1 … 1000", "1", "5", "random surfaces to average, seeds 1…S", "--seeds"},
-      {k + "hurst", "number", "(0, 1]", "1", "0.8", "Hurst exponent H", "--hurst"},
-      {k + "q_l", "number", "≥ 1", "1", "8", "q_l in units of 2π/L (= q_r)", "--ql"},
-      {k + "q_s", "number", "[q_l, n/2]", "1", "n/8", "q_s in units of 2π/L", "--qs"},
-      {k + "loads", "range", "[MIN, MAX] within (0, 1)", "1", "[0.01, 0.3]",
-       "normalized loads p̃_N (5.1), evenly spaced", "--loads"},
-      {k + "n_loads", "integer", "1 … 1000", "1", "20", "points along p̃_N", "--n-loads"},
-      {k + "dstar_over_l", "range", "[MIN, MAX], each > 0", "1", "[0.01, 0.2]",
-       "critical diameters d*/L (4.35), geometric", "--dstar-over-l"},
-      {k + "n_dstar", "integer", "1 … 1000", "1", "20", "points along d*/L", "--n-dstar"},
-      {k + "nu", "number", "(-1, 0.5]", "1", "0.3", "Poisson's ratio ν", "--nu"},
-      {k + "tensile_strength", "number", "> 0", "1", "1", "σ_m/σ_j of the crack criterion (4.25)",
-       "--tensile-strength"},
-      {k + "spot", "number", "[0, 1]", "1", "0.05",
-       "crack sites within this fraction of each micro-contact's peak edge stress (1: every edge past σ_m)", "--spot"},
-      {k + "invalid_diameter", "number", "(0, 1]", "1", "0.25",
-       "pixels whose mean largest particle is ≥ this × L are invalid", "--invalid-diameter"},
-      {k + "energy_balance", "choice", "cumulative | per_particle", "", "cumulative",
-       "cumulative balance, or each particle pays for itself", "--per-particle", "per_particle"},
-      {k + "method", "choice", "fast | naive", "", "fast",
-       "energy release: fast, or one full solve per candidate (the slow baseline)", "--naive", "naive"},
-      {k + "naive_pixels", "integer", "0 … 1000", "1", "0",
-       "also time the naive baseline against the fast model on K pixels of the first seed (middle d*)",
-       "--naive-pixels"},
-      {k + "naive_max_solves", "integer", "≥ 0", "1", "0",
-       "stop each naive pixel after this many solves and extrapolate its time (0: run it through)",
-       "--naive-max-solves"},
-  };
-}
+Schema WearmapRough::schema() const { return wearmap_rough_keys().schema("wearmap.rough"); }
 
 std::vector<std::string> WearmapRough::prepare(Config& cfg) {
   const std::string k = "wearmap.rough.";
-  const auto count = [&](const char* key, std::size_t fallback, double lo, double hi) {
-    return static_cast<std::size_t>(cfg.integer_or(k + key, long(fallback), Range::closed(lo, hi)));
-  };
-  auto& surface = spec_.surface;
-  surface.n = count("n", 512, 16, 4096);
-  const std::size_t seeds = count("seeds", 5, 1, 1000);
-  surface.hurst = cfg.number_or(k + "hurst", 0.8, Range::open_closed(0.0, 1.0));
-  surface.k_l = cfg.number_or(k + "q_l", 8.0, Range::at_least(1.0));
-  surface.k_s = cfg.number_or(k + "q_s", static_cast<double>(surface.n) / 8.0, Range::at_least(1.0));
-  if (!(surface.k_l <= surface.k_s && surface.k_s <= static_cast<double>(surface.n) / 2.0)) {
-    const std::string key = k + (cfg.has(k + "q_s") ? "q_s" : "q_l");
-    throw cfg.error(key,
-                    fmt::format("not allowed with q_l = {}, q_s = {} and n = {}", surface.k_l, surface.k_s, surface.n),
-                    fmt::format("1 ≤ q_l ≤ q_s ≤ n/2 = {} (in 2π/L; q_s defaults to n/8)", surface.n / 2));
-  }
-  const auto loads = read_range(cfg, k + "loads", {0.01, 0.3}, Range::open(0.0, 1.0), "p̃_N (5.1)");
-  const std::size_t n_loads = count("n_loads", 20, 1, 1000);
-  const auto dstar = read_range(cfg, k + "dstar_over_l", {0.01, 0.2}, Range::positive(), "d*/L (4.35)");
-  const std::size_t n_dstar = count("n_dstar", 20, 1, 1000);
-  surface.poisson = cfg.number_or(k + "nu", 0.3, Range::open_closed(-1.0, 0.5));
-  spec_.tensile_strength = cfg.number_or(k + "tensile_strength", 1.0, Range::positive());
-  spec_.spot = cfg.number_or(k + "spot", 0.05, Range::closed(0.0, 1.0));
-  spec_.invalid_diameter = cfg.number_or(k + "invalid_diameter", 0.25, Range::open_closed(0.0, 1.0));
-  const bool per_particle =
-      cfg.choice_or(k + "energy_balance", "cumulative", {"cumulative", "per_particle"}) == "per_particle";
-  const bool naive = cfg.choice_or(k + "method", "fast", {"fast", "naive"}) == "naive";
-  naive_pixels_ = count("naive_pixels", 0, 0, 1000);
-  naive_max_solves_ = static_cast<std::size_t>(cfg.integer_or(k + "naive_max_solves", 0, Range::non_negative()));
+  WearmapRoughKeys keys;
+  wearmap_rough_keys().read(cfg.section("wearmap.rough"), keys);
   cfg.reject_unknown_keys();
+  spec_ = keys.map;
+  const auto& surface = spec_.surface;
+  const std::size_t seeds = keys.seeds, n_loads = keys.n_loads, n_dstar = keys.n_dstar;
+  const auto loads = keys.loads, dstar = keys.dstar_over_l;
+  const bool per_particle = !spec_.options.cumulative;
+  const bool naive = spec_.options.method == wear::EnergyReleaseMethod::Naive;
+  naive_pixels_ = keys.naive_pixels;
+  naive_max_solves_ = keys.naive_max_solves;
 
   spec_.seeds.clear();
   for (std::size_t s = 1; s <= seeds; ++s) spec_.seeds.push_back(s);
   spec_.loads = linear(loads, n_loads);
   spec_.critical_diameters = geometric(dstar, n_dstar);
-  spec_.options.cumulative = !per_particle;
-  spec_.options.method = naive ? wear::EnergyReleaseMethod::Naive : wear::EnergyReleaseMethod::Fast;
   wear::validate(spec_);
   // The resolved values, defaults included, for summary.json and the HDF5 files.
   for (const auto& [key, value] :
