@@ -13,6 +13,7 @@
 //   q_min = 2.5e5        # the fit band [rad/m]; default: the k_r … k_s a generated surface records
 //   psd = "psd.csv"
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -26,11 +27,67 @@
 #include "wearscale/core/memory_limit.hpp"
 #include "wearscale/io/csv.hpp"
 #include "wearscale/io/topography_io.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {
 
 namespace {
+
+// [surface.analyze]: the file and how to read it, the fit band, the window and the PSD's table.
+struct SurfaceAnalyzeKeys {
+  std::filesystem::path file;
+  bem::TopographyOptions read;    // dataset, size (as the file's when not given), missing
+  std::optional<double> q_min, q_max;  // the fit band (absent: from the file, else the PSD's bins)
+  bool window = true;
+  std::string psd;                // "" : no table
+};
+
+const KeyTable<SurfaceAnalyzeKeys>& surface_analyze_keys() {
+  using K = SurfaceAnalyzeKeys;
+  using bem::MissingPoints;
+  static const auto table =
+      KeyTable<K>()
+          .path("file", &K::file,
+                "topography: " + bem::supported_topography_formats() +
+                    "; text grids have rows along x, columns along y (see docs/topography.md)")
+          .flag("file")
+          .choice("missing", [](K& k) -> MissingPoints& { return k.read.missing; },
+                  std::vector<std::pair<std::string, MissingPoints>>{{"refuse", MissingPoints::Refuse},
+                                                                     {"fill", MissingPoints::Fill}},
+                  bem::MissingPointsChoice::doc)
+          .flag("--missing")
+          .string("dataset", [](K& k) -> std::string& { return k.read.dataset; }, "HDF5 dataset holding the heights")
+          .flag("--dataset")
+          .custom("size", "number", "> 0", "m",
+                  "side Lx (\"877 um\" also works; Ly from square pixels), or Lx,Ly; needed for text files without "
+                  "'# lx = ...'",
+                  [](const Config& c, const std::string& key, K& k) { k.read.size = read_sides(c, key); })
+          .fallback("the file's")
+          .flag("--size")
+          .optional_number("q_min", &K::q_min, Range::non_negative(), units::dimensionless,
+                           "lower end of the fit band (default: the k_r a generated surface records)")
+          .unit("rad/m")
+          .fallback("2π k_r/L, else above the first 2 PSD bins")
+          .flag("--qmin")
+          .optional_number("q_max", &K::q_max, Range::non_negative(), units::dimensionless,
+                           "upper end of the fit band (default: the k_s a generated surface records)")
+          .unit("rad/m")
+          .fallback("2π k_s/L, else the last bin")
+          .flag("--qmax")
+          .boolean("window", &K::window,
+                   "level the data and apply a radial Hann window before the PSD (measured data); false for periodic "
+                   "surfaces such as generated ones")
+          .flag("--no-window", "false")
+          .checked_string("psd", &K::psd, "a file name ending in .csv",
+                          "write the radial PSD as this CSV table in the output folder (columns q_rad_per_m, C_m4, "
+                          "count)",
+                          [](const Config& c, const std::string& key, K& k) {
+                            if (c.has(key)) k.psd = output_file_name(c, key, "", {".csv"});
+                          })
+          .flag("--psd-out");
+  return table;
+}
 
 class SurfaceAnalyze final : public Study {
  public:
@@ -40,51 +97,20 @@ class SurfaceAnalyze final : public Study {
            "Zygo; or HDF5, text grid)";
   }
   std::string default_case_name() const override { return "surface-analyze"; }
-  Schema schema() const override {
-    const std::string k = "surface.analyze.";
-    return {
-        {k + "file", "path", "", "", "",
-         "topography: " + bem::supported_topography_formats() +
-             "; text grids have rows along x, columns along y (see docs/topography.md)",
-         "file"},
-        {k + "missing", "choice", "refuse | fill", "", bem::MissingPointsChoice::fallback,
-         bem::MissingPointsChoice::doc, "--missing"},
-        {k + "dataset", "string", "", "", std::string(bem::default_surface_dataset), "HDF5 dataset holding the heights",
-         "--dataset"},
-        {k + "size", "number", "> 0", "m", "the file's",
-         "side Lx (\"877 um\" also works; Ly from square pixels), or Lx,Ly; needed for text files without "
-         "'# lx = ...'",
-         "--size"},
-        {k + "q_min", "number", "≥ 0", "rad/m", "2π k_r/L, else above the first 2 PSD bins",
-         "lower end of the fit band (default: the k_r a generated surface records)", "--qmin"},
-        {k + "q_max", "number", "≥ 0", "rad/m", "2π k_s/L, else the last bin",
-         "upper end of the fit band (default: the k_s a generated surface records)", "--qmax"},
-        {k + "window", "boolean", "", "", "true",
-         "level the data and apply a radial Hann window before the PSD (measured data); false for periodic "
-         "surfaces such as generated ones",
-         "--no-window", "false"},
-        {k + "psd", "string", "a file name ending in .csv", "", "",
-         "write the radial PSD as this CSV table in the output folder (columns q_rad_per_m, C_m4, count)",
-         "--psd-out"},
-    };
-  }
+  Schema schema() const override { return surface_analyze_keys().schema("surface.analyze"); }
 
   // Reads the topography and checks it has a roughness to analyse, before anything is written.
   std::vector<std::string> prepare(Config& cfg) override {
-    const Config c = cfg.section("surface.analyze");
-    file_ = c.path("file");
-    bem::TopographyOptions read;
-    read.dataset = dataset_ = c.string_or("dataset", std::string(bem::default_surface_dataset));
-    read.size = read_sides(c, "size");
-    read.missing = bem::missing_points_from(
-        c.choice_or("missing", bem::MissingPointsChoice::fallback, {"refuse", "fill"}), c.full_key("missing"));
-    window_ = c.boolean_or("window", true);
-    c.mark_used("q_min");
-    c.mark_used("q_max");
-    if (c.has("q_min")) q_min_ = c.number("q_min", Range::non_negative());
-    if (c.has("q_max")) q_max_ = c.number("q_max", Range::non_negative());
-    c.mark_used("psd");  // checked once the topography is read
+    SurfaceAnalyzeKeys keys;
+    surface_analyze_keys().read(cfg.section("surface.analyze"), keys);
     cfg.reject_unknown_keys();
+    file_ = keys.file;
+    const bem::TopographyOptions& read = keys.read;
+    dataset_ = read.dataset;
+    window_ = keys.window;
+    q_min_ = keys.q_min;
+    q_max_ = keys.q_max;
+    psd_ = keys.psd;
 
     measured_ = bem::read_measured_topography(file_, read);
     missing_ = read.missing;
@@ -110,7 +136,6 @@ class SurfaceAnalyze final : public Study {
       throw InputError(fmt::format("{}: the topography is flat: h_RMS = {:g} m {}, rounding noise of heights up to {:g} "
                                    "m; allowed: a rough surface",
                                    file_.string(), bem::h_rms(h_), window_ ? "once levelled" : "about its mean", largest));
-    if (c.has("psd")) psd_ = output_file_name(c, "psd", "", {".csv"});
     return {};
   }
 
