@@ -27,11 +27,36 @@
 #include "wearscale/io/strength_table_file.hpp"
 #include "wearscale/materials/strength_table.hpp"
 #include "wearscale/md/shear_study.hpp"
+#include "wearscale/io/key_table.hpp"
 #include "wearscale/studies/study.hpp"
 
 namespace wearscale::studies {
 
 namespace {
+
+// The study's own keys besides the shear test's [md] (coupling/shear_test_keys.hpp).
+struct StrengthTableKeys {
+  std::string backend = "lammps";
+  std::string file;
+  // Not a key: the file's default, from the shear test's preset and material.
+  std::string default_file;
+};
+
+const KeyTable<StrengthTableKeys>& strength_table_keys() {
+  using K = StrengthTableKeys;
+  static const auto table =
+      KeyTable<K>()
+          .choice("md.backend", &K::backend, {"lammps"}, "molecular backend")
+          .flag("--backend")
+          .custom("output.file", "string", "a file name ending in .csv or .h5", "",
+                  "the table's name in the output folder",
+                  [](const Config& c, const std::string& key, K& k) {
+                    k.file = output_file_name(c, key, k.default_file, {".csv", ".h5"});
+                  })
+          .fallback("lammps_<preset>_<material>.csv")
+          .flag("--table");
+  return table;
+}
 
 class StrengthTableStudy final : public Study {
  public:
@@ -45,13 +70,13 @@ class StrengthTableStudy final : public Study {
   Schema schema() const override;
 
   std::vector<std::string> prepare(Config& cfg) override {
-    cfg.choice_or("md.backend", "lammps", {"lammps"});
     spec_ = coupling::read_shear_test_spec(cfg);
     if (spec_.pressures.size() < 2)
       throw cfg.error("md.pressures", "a strength table needs at least two pressures", "two or more pressures");
-    file_ = output_file_name(cfg, "output.file",
-                             fmt::format("lammps_{}_{}.csv", spec_.preset, spec_.material),
-                             {".csv", ".h5"});
+    StrengthTableKeys keys;
+    keys.default_file = fmt::format("lammps_{}_{}.csv", spec_.preset, spec_.material);
+    strength_table_keys().read(cfg, keys);
+    file_ = keys.file;
     cfg.reject_unknown_keys();
     return {};
   }
@@ -119,11 +144,7 @@ class StrengthTableStudy final : public Study {
 };
 
 Schema StrengthTableStudy::schema() const {
-  Schema schema = {
-      {"md.backend", "choice", "lammps", "", "lammps", "molecular backend", "--backend"},
-      {"output.file", "string", "a file name ending in .csv or .h5", "", "lammps_<preset>_<material>.csv",
-       "the table's name in the output folder", "--table"},
-  };
+  Schema schema = strength_table_keys().schema();
   // The shear test's keys as its key table declares them, with the command's aliases.
   for (auto& k : coupling::md_schema()) {
     if (k.key == "md.material") k.flag = "--material";
