@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "wearscale/bem/hertz.hpp"
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "wearscale/io/key_table.hpp"
 #include "wearscale/io/csv.hpp"
@@ -84,8 +83,8 @@ class MacroHertz final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_hertz) {
-  add_backend_keys("macro", "hertz", [] { return hertz_keys().schema("scale.macro"); });
-  registry.add<MacroHertz>("macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)");
+  registry.add<MacroHertz>("macro", "hertz", "Hertz contact of the unworn pin on the disc (closed form, §8.1)",
+                           [] { return hertz_keys().schema("scale.macro"); });
 }
 
 }  // namespace wearscale::coupling

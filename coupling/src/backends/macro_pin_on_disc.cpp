@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "backends/pin_on_disc_surfaces.hpp"
@@ -705,9 +704,9 @@ class MacroPinOnDisc final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(macro_pin_on_disc) {
-  add_backend_keys("macro", "bem-pin-on-disc", [] { return pin_on_disc_keys().schema("scale.macro"); });
   registry.add<MacroPinOnDisc>("macro", "bem-pin-on-disc",
-                               "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)");
+                               "pin-on-disc wear with the BEM contact of pin and oxidized disc (§9.3.2)",
+                               [] { return pin_on_disc_keys().schema("scale.macro"); });
 }
 
 }  // namespace wearscale::coupling

@@ -2,7 +2,6 @@
 // strength σ_m,T of each material record (Table 2.1): σ_max = σ_dyn = σ_m,T.
 #include <map>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/strength_law.hpp"
@@ -43,9 +42,9 @@ class MolecularIdeal final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_ideal) {
-  add_backend_keys("molecular", "ideal", [] { return Schema{}; });  // reads [materials] only
   registry.add<MolecularIdeal>("molecular", "ideal",
-                                "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)");
+                                "pressure-independent strengths σ_max = σ_dyn = σ_m,T (Table 2.1 records)",
+                                [] { return Schema{}; });  // reads [materials] only
 }
 
 }  // namespace wearscale::coupling

@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/core/errors.hpp"
@@ -117,11 +116,11 @@ Schema lammps_keys() {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_lammps) {
-  add_backend_keys("molecular", "lammps", lammps_keys);
   registry.add<MolecularLammps>(
       "molecular", "lammps",
       "σ_max(p), σ_dyn(p) from live LAMMPS shear tests (§9.3.1) of each material with an interatomic model "
-      "(Si: SW, SiO2: Vashishta, or [materials.define.<name>.interatomic]), cached");
+      "(Si: SW, SiO2: Vashishta, or [materials.define.<name>.interatomic]), cached",
+      lammps_keys);
 }
 
 }  // namespace wearscale::coupling

@@ -3,7 +3,6 @@
 // user's file per material (§9.3.1).
 #include <map>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "wearscale/io/key_table.hpp"
 #include "wearscale/io/strength_table_file.hpp"
@@ -91,14 +90,13 @@ class MolecularTable final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(molecular_table) {
-  add_backend_keys("molecular", "table", [] {
-    Schema rows = strength_table_keys().schema("scale.molecular");
-    for (auto& row : strength_law_keys().schema("scale.molecular")) rows.insert(rows.begin() + 1, std::move(row));
-    return rows;
-  });
   registry.add<MolecularTable>(
       "molecular", "table",
-      "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables");
+      "shear strengths σ_max(p), σ_dyn(p) from shipped (thesis Fig. 9.18, wearscale LAMMPS) or user tables", [] {
+        Schema rows = strength_table_keys().schema("scale.molecular");
+        for (auto& row : strength_law_keys().schema("scale.molecular")) rows.insert(rows.begin() + 1, std::move(row));
+        return rows;
+      });
 }
 
 }  // namespace wearscale::coupling

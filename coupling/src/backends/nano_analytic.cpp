@@ -5,7 +5,6 @@
 // with the junction's strength σ_max(p_crit) = p_crit.
 #include <map>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "backends/case_materials.hpp"
 #include "wearscale/materials/junction_model.hpp"
@@ -78,9 +77,9 @@ class NanoAnalytic final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(nano_analytic) {
-  add_backend_keys("nano", "analytic", [] { return Schema{}; });  // reads [materials] only
   registry.add<NanoAnalytic>("nano", "analytic",
-                             "junction model of §7.1.2: p_crit, μ0, A/A0 and wear rate per interface");
+                             "junction model of §7.1.2: p_crit, μ0, A/A0 and wear rate per interface",
+                             [] { return Schema{}; });  // reads [materials] only
 }
 
 }  // namespace wearscale::coupling

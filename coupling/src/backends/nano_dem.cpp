@@ -23,7 +23,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "wearscale/coupling/backend_keys.hpp"
 #include "wearscale/coupling/scale.hpp"
 #include "wearscale/io/key_table.hpp"
 #include "backends/case_materials.hpp"
@@ -716,10 +715,10 @@ class NanoDem final : public Scale {
 }  // namespace
 
 WEARSCALE_BACKEND(nano_dem) {
-  add_backend_keys("nano", "dem", [] { return nano_dem_keys().schema("scale.nano"); });
   registry.add<NanoDem>("nano", "dem",
                         "sheared DEM junctions of §7.1.1 fitted to the model of §7.1.2: p_crit, μ0, A/A0 and wear "
-                        "rate per interface, cached");
+                        "rate per interface, cached",
+                        [] { return nano_dem_keys().schema("scale.nano"); });
 }
 
 }  // namespace wearscale::coupling

@@ -2,7 +2,8 @@
 // One key of a case as `--help`, "did you mean", completion and docs/keys.md
 // show it: its full dotted name, type, allowed values, unit, default and
 // meaning. Key tables (io/key_table.hpp) produce these rows; so may a study
-// for a key it reads by hand.
+// for a key it reads by hand. In core because a scale backend's registry entry
+// (core/registry.hpp) holds the rows of its keys.
 #include <string>
 #include <vector>
 

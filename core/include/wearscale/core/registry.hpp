@@ -9,7 +9,9 @@
 //
 // Generic over what it makes and what it shows, so core knows nothing of the
 // layers above: Info holds `name` (and `kind` when entries have kinds) and
-// words its own "unknown name" message (Info::unknown).
+// words its own "unknown name" message (Info::unknown). A scale backend's
+// entry holds its keys too (BackendInfo::keys, from its key table), so a
+// backend is one file: its class, its key table and its registration.
 #include <functional>
 #include <map>
 #include <memory>
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "wearscale/core/errors.hpp"
+#include "wearscale/core/key_spec.hpp"
 
 namespace wearscale {
 
@@ -32,6 +35,10 @@ struct BackendInfo {
   std::string summary;  ///< one line: what it computes and from what (with thesis section)
   std::vector<std::string> consumes;
   std::vector<std::string> provides;
+  /// The rows of the keys it reads in its [scale.<kind>] table, named
+  /// "scale.<kind>.<key>", as its key table declares them (empty: it reads
+  /// none there; [materials] is declared apart).
+  std::function<Schema()> keys = {};
   std::string id() const { return kind + "/" + name; }
   /// The message of an unknown kind or backend, listing the known ones.
   static std::string unknown(const std::string& kind, const std::string& name, const std::vector<std::string>& kinds,

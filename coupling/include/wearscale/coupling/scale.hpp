@@ -57,10 +57,12 @@ class ScaleRegistry : public Registry<Scale, const ScaleSetup&> {
  public:
   using NamedRegistry::add;
   /// Registers backend class B (made by B(setup)) under kind/name, with
-  /// what it exchanges from B::ports.
+  /// what it exchanges from B::ports and the rows of its keys, `keys()`
+  /// (its key table's schema("scale.<kind>"); no rows: it reads none there).
   template <class B>
-  void add(std::string kind, std::string name, std::string summary) {
-    add({std::move(kind), std::move(name), std::move(summary), texts(B::ports.consumes), texts(B::ports.provides)},
+  void add(std::string kind, std::string name, std::string summary, std::function<Schema()> keys) {
+    add({std::move(kind), std::move(name), std::move(summary), texts(B::ports.consumes), texts(B::ports.provides),
+         std::move(keys)},
         [](const ScaleSetup& s) -> std::unique_ptr<Scale> { return checked(std::make_unique<B>(s), B::ports, s); });
   }
 
@@ -79,7 +81,7 @@ const ScaleRegistry& scale_registry();
 /// and inside namespace wearscale::coupling; the body adds it to `registry`:
 ///
 ///   WEARSCALE_BACKEND(macro_hertz) {
-///     registry.add<MacroHertz>("macro", "hertz", "one line");
+///     registry.add<MacroHertz>("macro", "hertz", "one line", [] { return hertz_keys().schema("scale.macro"); });
 ///   }
 ///
 /// The build collects these lines (cmake/WearscaleRegistrations.cmake) into

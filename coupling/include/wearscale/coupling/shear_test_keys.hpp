@@ -25,7 +25,7 @@
 #include <string>
 
 #include "wearscale/io/config.hpp"
-#include "wearscale/io/key_spec.hpp"
+#include "wearscale/core/key_spec.hpp"
 #include "wearscale/md/shear_test.hpp"
 
 namespace wearscale::coupling {

@@ -21,13 +21,13 @@
 #include "wearscale/core/registry.hpp"
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
-#include "wearscale/io/key_spec.hpp"
+#include "wearscale/core/key_spec.hpp"
 
 namespace wearscale::studies {
 
 using coupling::RunContext;
 
-/// One key of a study (declared in io/key_spec.hpp, where the key tables produce it).
+/// One key of a study (declared in core/key_spec.hpp; the key tables, io/key_table.hpp, produce it).
 using KeySpec = wearscale::KeySpec;
 using Schema = wearscale::Schema;
 
