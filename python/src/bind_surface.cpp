@@ -141,8 +141,12 @@ py::tuple read(const std::filesystem::path& file, const std::string& dataset, st
 }  // namespace
 
 void bind_surface(py::module_& m) {
-  m.def("generate", &generate, py::arg("n"), py::arg("size"), py::arg("hurst") = 0.8, py::arg("k_l") = 1.0,
-        py::arg("k_r") = py::none(), py::arg("k_s") = 16.0, py::arg("seed") = 0, py::arg("ny") = py::none(),
+  // The keyword defaults: the surface spec's and the topography reader's.
+  static const RoughSurfaceSpec spec_defaults{};
+  static const TopographyOptions read_defaults{};
+  m.def("generate", &generate, py::arg("n"), py::arg("size"), py::arg("hurst") = spec_defaults.hurst,
+        py::arg("k_l") = spec_defaults.k_l, py::arg("k_r") = py::none(), py::arg("k_s") = spec_defaults.k_s,
+        py::arg("seed") = spec_defaults.seed, py::arg("ny") = py::none(),
         py::arg("ly") = py::none(), py::arg("sa") = py::none(), py::arg("rms") = py::none(),
         py::arg("slope_rms") = py::none(),
         R"(Random self-affine surface with the PSD of Fig. 1.3 (same parameters as `wearscale surface generate`).
@@ -163,8 +167,8 @@ and the Hurst exponent fitted on C ~ q^-2(H+1) in [q_min, q_max] rad/m (every bi
 hurst, hurst_error (standard error), psd_slope, psd_slope_error, fit_bins; hurst_fit: {status: "done"
 or "failed", reason}: a fit outside 0 < H <= 1 (a band that is not self-affine) gives no hurst.
 detrend: subtract the least-squares plane first; window: radial Hann window (measured data).)");
-  m.def("read", &read, py::arg("file"), py::arg("dataset") = default_surface_dataset, py::arg("lx") = py::none(),
-        py::arg("ly") = py::none(), py::arg("missing") = "refuse",
+  m.def("read", &read, py::arg("file"), py::arg("dataset") = read_defaults.dataset, py::arg("lx") = py::none(),
+        py::arg("ly") = py::none(), py::arg("missing") = std::string(name(read_defaults.missing)),
         R"(A measured or saved topography, its format recognised by content.
 
 Formats: see supported_formats(). dataset: the HDF5 dataset of wearscale's own files; lx, ly [m]

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "wearscale/core/errors.hpp"
 #include "wearscale/core/memory_limit.hpp"
+#include "wearscale/studies/wearmap_keys.hpp"
 #include "wearscale/wear/analytic_wear_maps.hpp"
 #include "wearscale/wear/candidate_particles.hpp"
 #include "wearscale/wear/energy_release.hpp"
@@ -124,7 +125,10 @@ py::dict energy_release(const BoolArray& contact, double lx, double shear_modulu
 }  // namespace
 
 void bind_wear(py::module_& m) {
-  static const RoughWearMapSpec map_defaults{};  // the defaults of rough_wear_map's keywords
+  // The keyword defaults: the wear-map studies' (their keys' structs), and the map's spec.
+  static const studies::WearmapAnalytic2dKeys map_2d{};
+  static const studies::WearmapAnalytic3dKeys map_3d{};
+  static const RoughWearMapSpec map_defaults{};
   m.def("analytic_map_2d", [](double x_max, double y_max, std::size_t nx, std::size_t ny) {
           WearMap map;
           {
@@ -132,7 +136,8 @@ void bind_wear(py::module_& m) {
             map = analytic_map_2d(axis(default_real_size_axis(), 0, x_max, nx), axis(default_apparent_size_axis(), 0, y_max, ny));
           }
           return to_dict(map);
-        }, py::arg("x_max") = 3.0, py::arg("y_max") = 6.0, py::arg("nx") = 301, py::arg("ny") = 301,
+        }, py::arg("x_max") = map_2d.dr_over_dstar.second, py::arg("y_max") = map_2d.da_over_dstar.second,
+        py::arg("nx") = map_2d.n, py::arg("ny") = map_2d.n,
         R"(The 2D analytic wear map of Fig. 3.7 over d_r/d* in [0, x_max] and d_a/d* in [0, y_max] (cell centres).
 
 Returns a dict: x, y (axes), region (nx, ny) int codes with region_names, layers {name: (nx, ny)}.)");
@@ -143,8 +148,9 @@ Returns a dict: x, y (axes), region (nx, ny) int codes with region_names, layers
             map = analytic_map_3d(axis(default_d_over_l_axis(), 0, x_max, nx), axis(default_dstar_over_l_axis(), 0, y_max, ny), c_inter);
           }
           return to_dict(map);
-        }, py::arg("c_inter") = max_interaction_constant, py::arg("x_max") = 1.0, py::arg("y_max") = 2.0,
-        py::arg("nx") = 201, py::arg("ny") = 201,
+        }, py::arg("c_inter") = interaction_constant(map_3d.nu, map_3d.theta),
+        py::arg("x_max") = map_3d.d_over_l.second, py::arg("y_max") = map_3d.dstar_over_l.second,
+        py::arg("nx") = map_3d.n, py::arg("ny") = map_3d.n,
         R"(The two-micro-contact wear map of Fig. 4.6 over d/l in [0, x_max <= 1] and d*/l in [0, y_max].
 
 c_inter in [1/3, 2/3]: the interaction constant (4.49) (interaction_constant(nu, theta)); the
@@ -212,8 +218,8 @@ of the whole loading elastic_energy_J = 1/2 dA sum p u (4.2). shear_modulus [Pa]
           d["particles"] = map.particles.size();
           d["candidates"] = map.candidates;
           return d;
-        }, py::arg("n") = 128, py::arg("hurst") = 0.8, py::arg("k_l") = 8.0, py::arg("k_s") = 16.0,
-        py::arg("poisson") = 0.3, py::arg("seeds") = std::vector<std::uint64_t>{1}, py::kw_only(), py::arg("loads"),
+        }, py::arg("n") = 128, py::arg("hurst") = map_defaults.surface.hurst, py::arg("k_l") = map_defaults.surface.k_l,
+        py::arg("k_s") = 16.0, py::arg("poisson") = map_defaults.surface.poisson, py::arg("seeds") = std::vector<std::uint64_t>{1}, py::kw_only(), py::arg("loads"),
         py::arg("critical_diameters"), py::arg("tensile_strength") = map_defaults.tensile_strength,
         R"(The numerical wear map of rough surfaces (§5.3): particles detached by sheared micro-contacts.
 
