@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <set>
 #include <sstream>
 
 #include "cli_runner.hpp"
@@ -48,6 +49,8 @@ TEST(StudySchemas, ListEveryKeyTheirDriversRead) {
       {"wearmap.analytic3d", "wearmap analytic3d"},
       {"wearmap.rough", "wearmap rough"},
       {"surface.generate", "surface generate --n 16 --size 1e-3 --hurst 0.8 --kl 1 --ks 4 --sa 1e-6"},
+      {"surface.analyze", "surface analyze not_read_before_the_keys.h5"},
+      {"output", "strength-table --material Si --pressures 0,10"},
       {"contact", "contact --set contact.grid=16 --set contact.size=1e-3 --set contact.sphere.radius=1e-2 "
                   "--e-star 1e9 --pressure 1e6"},
   };
@@ -57,6 +60,46 @@ TEST(StudySchemas, ListEveryKeyTheirDriversRead) {
     const auto keys = keys_read(r.err, p.table);
     EXPECT_FALSE(keys.empty()) << p.table << ": " << r.err;
     for (const auto& k : keys) EXPECT_THAT(keys_md, HasSubstr("`" + p.table + "." + k + "`")) << "not in its schema";
+  }
+  EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";
+}
+
+namespace {
+// The keys docs/keys.md lists in [table] itself (not in a sub-table), by their leaf names.
+std::set<std::string> keys_listed(const std::string& keys_md, const std::string& table) {
+  std::set<std::string> out;
+  const std::string head = "| `" + table + ".";
+  std::stringstream ss(keys_md);
+  for (std::string line; std::getline(ss, line);) {
+    if (!line.starts_with(head)) continue;
+    const std::string key = line.substr(head.size(), line.find('`', head.size()) - head.size());
+    if (key.find('.') == std::string::npos) out.insert(key);
+  }
+  return out;
+}
+}  // namespace
+
+// The studies whose keys are their key tables (wear maps, surfaces, the
+// strength table's [output]): the keys a case's driver reads in its table
+// are exactly those its schema lists, so that every declared key is read
+// and only declared ones.
+TEST(StudySchemas, TheKeyTableStudiesReadEveryKeyTheyDeclareAndNoOther) {
+  const std::string keys_md = slurp(fs::path(WEARSCALE_SOURCE_DIR) / "docs" / "keys.md");
+  const Probe probes[] = {
+      {"wearmap.analytic2d", "wearmap analytic2d"},
+      {"wearmap.analytic3d", "wearmap analytic3d"},
+      {"wearmap.rough", "wearmap rough"},
+      {"surface.generate", "surface generate --n 16 --size 1e-3 --hurst 0.8 --kl 1 --ks 4 --sa 1e-6"},
+      {"surface.analyze", "surface analyze not_read_before_the_keys.h5"},
+  };
+  for (const auto& p : probes) {
+    const auto r = run_cli(p.args + " --set " + p.table + ".zz_not_a_key=1 --out out", work);
+    EXPECT_EQ(r.status, 2) << p.table << ": " << r.err;
+    const auto read = keys_read(r.err, p.table);
+    const std::set<std::string> read_set(read.begin(), read.end());
+    const auto listed = keys_listed(keys_md, p.table);
+    EXPECT_GE(listed.size(), 3u) << p.table << ": not in docs/keys.md";
+    EXPECT_EQ(read_set, listed) << p.table << ": " << r.err;
   }
   EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";
 }
