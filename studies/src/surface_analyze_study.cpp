@@ -82,9 +82,7 @@ const KeyTable<SurfaceAnalyzeKeys>& surface_analyze_keys() {
           .checked_string("psd", &K::psd, "a file name ending in .csv",
                           "write the radial PSD as this CSV table in the output folder (columns q_rad_per_m, C_m4, "
                           "count)",
-                          [](const Config& c, const std::string& key, K& k) {
-                            if (c.has(key)) k.psd = output_file_name(c, key, "", {".csv"});
-                          })
+                          [](const Config&, const std::string&, K&) {})  // checked once the topography is read
           .flag("--psd-out");
   return table;
 }
@@ -110,7 +108,6 @@ class SurfaceAnalyze final : public Study {
     window_ = keys.window;
     q_min_ = keys.q_min;
     q_max_ = keys.q_max;
-    psd_ = keys.psd;
 
     measured_ = bem::read_measured_topography(file_, read);
     missing_ = read.missing;
@@ -136,6 +133,9 @@ class SurfaceAnalyze final : public Study {
       throw InputError(fmt::format("{}: the topography is flat: h_RMS = {:g} m {}, rounding noise of heights up to {:g} "
                                    "m; allowed: a rough surface",
                                    file_.string(), bem::h_rms(h_), window_ ? "once levelled" : "about its mean", largest));
+    // The table's name, after the topography's refusals (output_file_name: what the key allows).
+    const Config c = cfg.section("surface.analyze");
+    if (c.has("psd")) psd_ = output_file_name(c, "psd", "", {".csv"});
     return {};
   }
 
