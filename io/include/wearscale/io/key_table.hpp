@@ -304,6 +304,13 @@ class KeyTable {
     last().row.unit = std::move(text);
     return *this;
   }
+  /// The command-line alias of the key ("--d0"); `switch_value`: what the
+  /// alias sets when given without a value ("--no-strengths": "false").
+  KeyTable& flag(std::string alias, std::string switch_value = {}) {
+    last().row.flag = std::move(alias);
+    last().row.switch_value = std::move(switch_value);
+    return *this;
+  }
   /// A range from the keys read before (`text` says which, for the docs).
   KeyTable& range_from(std::function<Range(const Spec&)> f, std::string text) {
     last().range_of = std::move(f);
