@@ -35,6 +35,9 @@ function(wearscale_registrations)
   set(out ${CMAKE_CURRENT_BINARY_DIR}/${R_TARGET}_${R_FUNCTION}.cpp)
   file(CONFIGURE OUTPUT ${out} CONTENT "${text}" @ONLY)
   target_sources(${R_TARGET} PRIVATE ${out})
+  # An object of its own: a program that registers more (wearscale_program_with_studies)
+  # defines the function itself, and the linker must be able to leave the library's out.
+  set_source_files_properties(${out} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 endfunction()
 
 # wearscale_program_with_studies(<target> PROGRAM wearscale|keys_doc SOURCES <files...>)

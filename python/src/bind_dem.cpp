@@ -3,7 +3,9 @@
 // material targets of the cohesive model (§6.1).
 #include <pybind11/stl.h>
 
+#include <deque>
 #include <optional>
+#include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -36,13 +38,41 @@ CohesiveMaterial material_of(const std::string& name, std::optional<double> pois
   return m;
 }
 
-// The default of a study's case key that no spec struct holds (the sliding
-// cell's p_N): the study's schema's, so that a call and a case without the key agree.
-double case_default(const std::string& study, const std::string& key) {
+// The keys of a DEM study's case as its key tables declare them (the rows of
+// its schema: key, type, allowed values, unit, default in words), for the
+// test that the keyword defaults are the case's.
+py::list case_keys(const std::string& study) {
+  py::list out;
+  for (const auto& row : studies::study_registry().create(study)->schema()) {
+    py::dict d;
+    d["key"] = row.key;
+    d["type"] = row.type;
+    d["allowed"] = row.range;
+    d["unit"] = row.unit;
+    d["default"] = row.fallback;
+    out.append(d);
+  }
+  return out;
+}
+
+// The default of a study's case key as its key table gives it, for a keyword
+// whose spec struct has no member for it (the [dem] material's name).
+std::string case_default(const std::string& study, const std::string& key) {
   const auto schema = studies::study_registry().create(study)->schema();
   const auto* spec = studies::find_key(schema, key);
   if (spec == nullptr || spec->fallback.empty()) throw std::logic_error(study + " declares no default for " + key);
-  return std::stod(spec->fallback);
+  return spec->fallback;
+}
+
+// A docstring with each `{study|key}` replaced by that key's default as the
+// study's key table words it ("1.5 D"), kept for the module's lifetime.
+const char* docstring(std::string text) {
+  static std::deque<std::string> kept;
+  for (std::size_t at; (at = text.find("{dem/")) != std::string::npos;) {
+    const auto bar = text.find('|', at), end = text.find('}', at);
+    text.replace(at, end + 1 - at, case_default(text.substr(at + 1, bar - at - 1), text.substr(bar + 1, end - bar - 1)));
+  }
+  return kept.emplace_back(std::move(text)).c_str();
 }
 
 py::dict targets(const CohesiveMaterial& m) {
@@ -274,9 +304,13 @@ void bind_dem(py::module_& m) {
   static const RoughShearSpec rough_defaults{};
   static const SlidingCellSpec cell_defaults{};
   static const TrappedParticlesSpec trapped_defaults{};
+  const double s_default = CohesiveMaterial{}.scaling_exponent;  // [dem] scaling_exponent's default
+  m.def("_case_keys", &case_keys, py::arg("study"),
+        "The keys of a DEM study's case (`dem/rough_shear`, ...) as its key tables declare them.");
   m.def("material", [](const std::string& name, std::optional<double> poisson, double s) {
           return targets(material_of(name, poisson, s));
-        }, py::arg("name") = "table-6.4", py::arg("poisson") = py::none(), py::arg("scaling_exponent") = 0.5,
+        }, py::arg("name") = case_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
+        py::arg("scaling_exponent") = s_default,
         R"(The targets of the cohesive DEM for a material: "table-6.4" (no units: E = 1, nu = 0.15,
 sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), with d_c = 4 gamma E/sigma_mN^2
 (6.35), d_min = 4 gamma/sigma_mN (6.62), d* = 32 gamma G/sigma_mT^2 (6.65). nu <= 1/4 (6.52).)");
@@ -289,7 +323,7 @@ sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), wi
           if (lattice != "hcp" && lattice != "amorphous")
             throw InputError("dem.patch_test: lattice = '" + lattice + "'; allowed: hcp | amorphous");
           spec.amorphous = lattice == "amorphous";
-          spec.d0 = d0.value_or(0.6 * critical_diameter(spec.material));
+          spec.d0 = d0.value_or(patch_test_d0(spec.material));
           spec.load_along_c_axis = load_along_c_axis;
           spec.length = length;
           spec.width = width;
@@ -323,17 +357,18 @@ sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), wi
           d["strength_steps"] = r.strength_steps;
           return d;
         },
-        py::arg("material") = "table-6.4", py::arg("poisson") = py::none(), py::arg("d0") = py::none(),
+        py::arg("material") = case_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
+        py::arg("d0") = py::none(),
         py::arg("lattice") = patch_defaults.amorphous ? "amorphous" : "hcp",
         py::arg("load_along_c_axis") = patch_defaults.load_along_c_axis, py::arg("length") = patch_defaults.length,
         py::arg("width") = patch_defaults.width, py::arg("load") = patch_defaults.load,
         py::arg("time_step") = patch_defaults.time_step, py::arg("strengths") = patch_defaults.strengths,
         py::arg("max_elastic_steps") = patch_defaults.max_elastic_steps, py::arg("seed") = patch_defaults.seed,
-        py::arg("scaling_exponent") = 0.5,
-        R"(The DEM patch test of §6.2.1: a sample between two walls in confined compression gives
+        py::arg("scaling_exponent") = s_default,
+        docstring(R"(The DEM patch test of §6.2.1: a sample between two walls in confined compression gives
 C11, C12 and so E and nu; with strengths=True the walls are also pulled apart and sheared
-(sigma_mN, sigma_mT; minutes; strengths=False for E and nu alone). d0: particle size (default 0.6 d_c, in the material's units);
-length, width in d0; load in units of E; time_step in the critical step. Releases the GIL.)");
+(sigma_mN, sigma_mT; minutes; strengths=False for E and nu alone). d0: particle size (default {dem/patch_test|dem.patch_test.d0}, in the material's units);
+length, width in d0; load in units of E; time_step in the critical step. Releases the GIL.)"));
   const Vec3& junction_box = junction_defaults.box;
   m.def("sheared_junction", &sheared_junction, py::arg("material") = "SiO2", py::arg("diameter") = 20e-9,
         py::arg("d0") = 3e-9, py::arg("largest") = junction_defaults.largest,
@@ -341,15 +376,15 @@ length, width in d0; load in units of E; time_step in the critical step. Release
         py::arg("velocity") = junction_defaults.velocity, py::arg("pressure") = junction_defaults.pressure,
         py::arg("sliding_distance") = junction_defaults.sliding_distance, py::arg("time_step") = junction_defaults.time_step,
         py::arg("record_every") = junction_defaults.record_every, py::arg("seed") = junction_defaults.seed,
-        py::arg("scaling_exponent") = 0.5,
-        R"(The sheared junction of §6.3 (Figs. 6.18-6.20): two amorphous surfaces linked by a cylindrical
+        py::arg("scaling_exponent") = s_default,
+        docstring(R"(The sheared junction of §6.3 (Figs. 6.18-6.20): two amorphous surfaces linked by a cylindrical
 junction of diameter D [m] (height D/2), the top wall slid at `velocity` [m/s] under `pressure` [Pa]
-over sliding_distance [m] (0: 1.5 D). d0, largest: mode and largest particle diameter [m]
-(largest 0: 1.25 d0; the thesis fixes 7.5 nm); box [m].
+over sliding_distance [m] (0: {dem/junction|dem.junction.sliding_distance}). d0, largest: mode and largest particle diameter [m]
+(largest 0: {dem/junction|dem.junction.largest}; the thesis fixes 7.5 nm); box [m].
 Returns the verdict (detached into a rolling particle when D >= d* = 32 gamma G/sigma_mT^2 (6.65),
 else plastic), the force history arrays (time_s, sliding_m, tangential_force_N, normal_force_N,
 kinetic_energy_J) and the final particles (position, velocity (n, 3), radius, wall). Minutes for
-the thesis' D = 20 nm.)");
+the thesis' D = 20 nm.)"));
   auto cell_args = [](const std::string& material, double d0, double largest, std::vector<double> box,
                       double velocity, double pressure, double sliding_distance, double settle_distance,
                       double time_step, long record_every, unsigned seed, double scaling_exponent,
@@ -370,21 +405,21 @@ the thesis' D = 20 nm.)");
         py::arg("shortest_wavelength") = rough_defaults.shortest_wavelength,
         py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
         py::arg("box") = std::vector<double>{150e-9, 10.5e-9, 60e-9}, py::arg("velocity") = cell_defaults.velocity,
-        py::arg("pressure") = case_default("dem/rough_shear", "dem.rough_shear.pressure"),
+        py::arg("pressure") = cell_defaults.pressure,
         py::arg("sliding_distance") = 150e-9, py::arg("settle_distance") = 3e-9,
         py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
-        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
+        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = s_default,
         py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
-        R"(The sheared rough surfaces of §7.2 (Figs. 7.4-7.7): two amorphous surfaces of self-affine
+        docstring(R"(The sheared rough surfaces of §7.2 (Figs. 7.4-7.7): two amorphous surfaces of self-affine
 roughness Sa = roughness * L (Hurst exponent hurst, shortest wavelength in d0) carved from one
 relaxed box, the bottom wall fixed, the top wall pressed at `pressure` [Pa] and slid at `velocity`
 [m/s] over sliding_distance [m] after settle_distance [m] at rest. box = [L, W, H] [m] (L sliding and
-W periodic); d0 and largest (0: 1.25 d0) [m]; time_step in the critical step; law "cohesive" (the
+W periodic); d0 and largest (0: {dem/rough_shear|dem.rough_shear.largest}) [m]; time_step in the critical step; law "cohesive" (the
 thesis) or "hooke" with Coulomb `friction`. Returns the friction (mean F_T / F_N over the second
 half), worn particles, the regime ("rolling wear particles", "shear band", "no wear particle"), the
 history arrays (time_s, sliding_m, tangential_force_N, normal_force_N, kinetic_energy_J, worn,
 roughness_bottom_m, roughness_top_m) and the final particles. Releases the GIL; minutes at the
-defaults (the thesis' 50 d0 cell).)");
+defaults (the thesis' 50 d0 cell).)"));
   m.def("trapped_particles",
         [cell_args](int count, double diameter, double clearance, double fit_from, const std::string& material,
                     double d0, double largest, std::vector<double> box, double velocity, double pressure,
@@ -399,17 +434,17 @@ defaults (the thesis' 50 d0 cell).)");
         py::arg("clearance") = trapped_defaults.clearance, py::arg("fit_from") = trapped_defaults.fit_from,
         py::arg("material") = "SiO2", py::arg("d0") = 3e-9, py::arg("largest") = cell_defaults.largest,
         py::arg("box") = std::vector<double>{300e-9, 10.5e-9, 54e-9}, py::arg("velocity") = cell_defaults.velocity,
-        py::arg("pressure") = case_default("dem/trapped_particles", "dem.trapped_particles.pressure"),
+        py::arg("pressure") = cell_defaults.pressure,
         py::arg("sliding_distance") = 300e-9, py::arg("settle_distance") = 3e-9,
         py::arg("time_step") = cell_defaults.time_step, py::arg("record_every") = cell_defaults.record_every,
-        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = 0.5,
+        py::arg("seed") = cell_defaults.seed, py::arg("scaling_exponent") = s_default,
         py::arg("law") = cell_defaults.law, py::arg("friction") = cell_defaults.friction,
-        R"(Loose particles trapped between flat surfaces, §7.3 (Figs. 7.8-7.9): `count` discs of
+        docstring(R"(Loose particles trapped between flat surfaces, §7.3 (Figs. 7.8-7.9): `count` discs of
 diameter D [m] in a gap of height D (clearance in d0 from the surfaces), the top wall pressed at
 `pressure` [Pa] and slid at `velocity` [m/s]. The regime from the loose particles' rigid-body misfit
 over the slide from fit_from on: "rolling" (misfit < 1/3) or "shear band". Cell keys as
-rough_shear (largest 0: 1.25 d0). Returns the friction, the worn first body and its band thickness [m], the misfits,
-the history arrays and the final particles. Releases the GIL; minutes at the defaults.)");
+rough_shear (largest 0: {dem/trapped_particles|dem.trapped_particles.largest}). Returns the friction, the worn first body and its band thickness [m], the misfits,
+the history arrays and the final particles. Releases the GIL; minutes at the defaults.)"));
 }
 
 }  // namespace wearscale::python

@@ -1,14 +1,14 @@
 """The keyword defaults of wearscale.dem are the case's: every binding that runs a DEM study defaults
-each argument named as a key of that study (or of its [dem] table) to the key's default in the
-study's schema. The schemas are read from docs/keys.md, which the KeysDoc test keeps equal to what
-the studies declare."""
+each argument named as a key of that study (or of its [dem] table) to the key's default as the
+study's key tables declare it (read from the compiled module, so that every key and every binding is
+checked whenever one of them changes)."""
 import inspect
 import math
-import re
 
 import pytest
 
 import wearscale as ws
+from wearscale import _wearscale
 
 # Each binding and the study whose case it runs.
 STUDY_OF = {
@@ -28,18 +28,9 @@ DIFFERS = {
 }
 
 
-def schemas(source_dir):
-    """{study: {key: (type, default text)}} of docs/keys.md (a `|` escaped as `\\|` is inside a cell)."""
-    found, study = {}, None
-    for line in (source_dir / "docs" / "keys.md").read_text().splitlines():
-        heading = re.fullmatch(r"## `(.+)`", line)
-        if heading:
-            study = found.setdefault(heading.group(1), {})
-            continue
-        cells = [c.strip() for c in re.split(r"(?<!\\)\|", line)]
-        if study is not None and len(cells) > 7 and cells[1].startswith("`"):
-            study[cells[1].strip("`")] = (cells[2], cells[5].strip("`"))
-    return found
+def schema(study):
+    """{key: (type, default text)} of a study's case, from its key tables."""
+    return {row["key"]: (row["type"], row["default"]) for row in _wearscale.dem._case_keys(study)}
 
 
 def derived(text, defaults):
@@ -85,8 +76,8 @@ def test_every_dem_binding_that_runs_a_study_is_checked():
 
 
 @pytest.mark.parametrize("function,study,argument", list(cases()), ids=[f"{f}.{a}" for f, _, a in cases()])
-def test_a_dem_keyword_defaults_to_its_case_key(source_dir, function, study, argument):
-    keys = schemas(source_dir)[study]
+def test_a_dem_keyword_defaults_to_its_case_key(function, study, argument):
+    keys = schema(study)
     table = study.replace("/", ".")
     key = next((k for k in (f"{table}.{argument}", f"dem.{argument}") if k in keys), None)
     if key is None:

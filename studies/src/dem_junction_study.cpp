@@ -23,28 +23,50 @@ namespace {
 
 using namespace dem;
 
-nlohmann::json run_junction_study(const Config& root, RunContext& context) {
+// What [dem.junction] fills: the study's spec and its snapshots.
+struct JunctionKeys {
+  ShearedJunctionSpec spec;
+  long dump_every = 2000;
+};
+
+const KeyTable<JunctionKeys>& junction_keys() {
+  using K = JunctionKeys;
+  using S = ShearedJunctionSpec;
+  const auto at = [](auto member) { return [member](K& k) -> auto& { return k.spec.*member; }; };
+  static const auto table = [&] {
+    KeyTable<K> t;
+    t.number("diameter", at(&S::diameter), Range::positive(), units::length,
+             "junction diameter D, e.g. 20e-9 or \"20 nm\"")
+        .required()
+        .flag("--D");
+    add_d0(t, at(&S::d0));
+    add_largest(t, at(&S::largest), [](const K& k) { return k.spec.d0; });
+    add_box(t, at(&S::box), S{}.box, "cell size [x, y, z]");
+    // Any velocity > 0: the junction's is not bounded as the sliding cell's (add_sliding_velocity).
+    t.number("velocity", at(&S::velocity), Range::positive(), units::velocity, "sliding velocity of the top wall")
+        .flag("--velocity");
+    // As the sliding cell's: beyond the material's normal strength σ_m,N the cohesive model no longer holds a
+    // solid (a pressure of 1e15 Pa crushed the sample and reported no resistance to sliding).
+    add_pressure(t, at(&S::pressure), [](const K& k) -> const CohesiveMaterial& { return k.spec.material; });
+    add_time_step(t, at(&S::time_step));
+    add_sliding_distance(t, at(&S::sliding_distance), [](const K& k) { return 1.5 * k.spec.diameter; }, "1.5 D");
+    add_seed(t, at(&S::seed));
+    add_dump_every(t, &K::dump_every);
+    return t;
+  }();
+  return table;
+}
+
+nlohmann::json run_junction_study(const Config& root, const DemInputs& dem, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
   Checkpointer* checkpoints = &context.checkpoints();
-  ShearedJunctionSpec spec;
-  spec.material = dem_material(root);
-  require_cohesive_law(root, "junction study");
-  spec.engine = read_engine(root);
-  const Config c = root.section("dem.junction");
-  spec.diameter = c.number("diameter", Range::positive(), units::length);
-  spec.d0 = read_d0(c);
-  spec.largest = read_largest(c, spec.d0);
-  if (const auto box = read_box(c)) spec.box = *box;
-  // Any velocity > 0: the junction's is not bounded as the sliding cell's (read_sliding_velocity).
-  spec.velocity = c.number_or("velocity", 10.0, Range::positive(), units::velocity);
-  // As the sliding cell's: beyond the material's normal strength σ_m,N the cohesive model no longer holds a
-  // solid (a pressure of 1e15 Pa crushed the sample and reported no resistance to sliding).
-  spec.pressure = read_pressure(c, 100e6, spec.material);
-  spec.time_step = read_time_step(c);
-  spec.sliding_distance = read_sliding_distance(c, 1.5 * spec.diameter);
-  spec.seed = static_cast<unsigned>(read_seed(c));
-  const long dump_every = read_dump_every(c, 2000);
+  JunctionKeys k;
+  k.spec.material = dem.material;
+  k.spec.engine = dem.keys.engine;
+  junction_keys().read(root.section("dem.junction"), k);
   root.reject_unknown_keys();
+  const ShearedJunctionSpec& spec = k.spec;
+  const long dump_every = k.dump_every;
 
   log::info("DEM sheared junction: {} D = {:.3g} m, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa", spec.material.name,
             spec.diameter, spec.d0, spec.velocity, spec.pressure);
@@ -109,26 +131,15 @@ class JunctionStudy final : public DemStudy {
   std::string summary() const override {
     return "a cylindrical junction sheared between two surfaces (§6.3): plastic deformation or a rolling wear particle";
   }
-  Schema schema() const override {
-    const std::string t = "dem.junction";
-    Schema s = material_keys({.materials = "Si, SiO2 or a [materials.define] name"});
-    // The junction reads its own keys (not the sliding cell's): these.
-    s.insert(s.end(),
-             {{t + ".diameter", "number", "> 0", "m", "", "junction diameter D, e.g. 20e-9 or \"20 nm\"", "--D"},
-              d0_key(t),
-              {t + ".velocity", "number", "> 0", "m/s", "10", "sliding velocity of the top wall", "--velocity"},
-              pressure_key(t, "1e8"),
-              sliding_distance_key(t, "1.5 D"),
-              seed_key(t),
-              largest_key(t),
-              box_key(t, "[60e-9, 40e-9, 40e-9]", "cell size [x, y, z]"),
-              time_step_key(t),
-              dump_every_key(t, 2000)});
-    return s;
+  const KeyTable<DemKeys>& dem_keys() const override {
+    static const auto table =
+        dem_table({.materials = "Si, SiO2 or a [materials.define] name", .cohesive_study = "junction study"});
+    return table;
   }
+  Schema study_keys() const override { return junction_keys().schema("dem.junction"); }
   void run(const Config& inputs, RunContext& context) override {
     const EngineRanks ranks(engine_);
-    finish(run_junction_study(inputs, context), context, "junction");
+    finish(run_junction_study(inputs, read_dem(inputs), context), context, "junction");
   }
 };
 

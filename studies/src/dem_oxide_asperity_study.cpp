@@ -7,6 +7,7 @@
 #include <ctime>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -35,66 +36,117 @@ using namespace dem;
 // [dem] material's default: the oxide of the layer, the cylinder and the plate.
 constexpr const char* oxide_default = "SiO2";
 
+// What [dem.oxide_asperity] fills: the study's spec, the substrate and the
+// SiO2–Si pairs as named and overridden, and the snapshots.
+struct OxideAsperityKeys {
+  OxideAsperitySpec spec;
+  std::string substrate = "Si";
+  std::optional<double> substrate_poisson, substrate_restitution;
+  std::optional<double> interface_surface_energy, interface_tensile_strength, interface_shear_strength;
+  long dump_every = 5000;
+};
+
+const KeyTable<OxideAsperityKeys>& oxide_asperity_keys() {
+  using K = OxideAsperityKeys;
+  using S = OxideAsperitySpec;
+  const auto at = [](auto member) { return [member](K& k) -> auto& { return k.spec.*member; }; };
+  const auto d0 = [](const K& k) { return k.spec.d0; };
+  static const auto table = [&] {
+    KeyTable<K> t;
+    t.string("substrate", &K::substrate, "the HCP substrate's material (library or [materials.define] name)")
+        .optional_number("substrate_poisson", &K::substrate_poisson, Range::open_closed(-1.0, 0.25),
+                         units::dimensionless, "the substrate's modelled ν (Si's 0.27 exceeds the pair force's 1/4 (6.52))")
+        .fallback("min(ν, 0.2)")
+        .optional_number("substrate_restitution", &K::substrate_restitution, Range::open_closed(0.0, 1.0),
+                         units::dimensionless, "the substrate's η")
+        .fallback("record or 0.9")
+        .optional_number("interface_surface_energy", &K::interface_surface_energy, Range::positive(),
+                         units::surface_energy, "adhesion energy γ of the oxide–substrate pairs (the Si/SiO2 interface)")
+        .unit("J/m^2")
+        .fallback("√(γ_oxide γ_substrate)")
+        .optional_number("interface_tensile_strength", &K::interface_tensile_strength, Range::positive(),
+                         units::pressure, "σ_m,N of the oxide–substrate pairs")
+        .fallback("the weaker σ_m,N")
+        .optional_number("interface_shear_strength", &K::interface_shear_strength, Range::positive(), units::pressure,
+                         "σ_m,T of the oxide–substrate pairs")
+        .fallback("the weaker σ_m,T");
+    add_d0(t, at(&S::d0), "Si lattice spacing and mode of the SiO2 diameters", false);
+    add_largest(t, at(&S::largest), d0, "largest SiO2 diameter");
+    add_box(t, at(&S::box), S{}.box, "cell [x, y, z]; x, y rounded to whole HCP cells");
+    t.number("layer_thickness", at(&S::layer_thickness), Range::positive(), units::length, "SiO2 layer on the Si")
+        .range_from([](const K& k) { return Range::at_least(0.5 * k.spec.d0); }, "≥ d0/2")
+        .number("body_diameter", at(&S::body_diameter), Range::positive(), units::length,
+                "loose SiO2 cylinder (axis along y)")
+        .range_from([](const K& k) { return Range::at_least(3.0 * k.spec.d0); }, "≥ 3 d0")
+        .flag("--D");
+    add_clearance(t, at(&S::clearance), "gaps layer–cylinder–plate, in d0");
+    t.number("plate_thickness", at(&S::plate_thickness), Range::closed(1.0, 10.0), "rigid plate, in d0");
+    add_wall_thickness(t, at(&S::wall_thickness), "fixed Si wall at the bottom, in d0");
+    add_sliding_velocity(t, at(&S::velocity), "sliding velocity of the plate");
+    add_pressure(t, at(&S::pressure), [](const K& k) -> const CohesiveMaterial& { return k.spec.oxide; },
+                 "normal pressure on the plate");
+    add_time_step(t, at(&S::time_step));
+    add_sliding_distance(t, at(&S::sliding_distance), [](const K& k) { return k.spec.box.x; }, "box x");
+    t.number("settle_distance", at(&S::settle_distance), Range::positive(), units::length,
+             "loading at rest (damped) before sliding, for the time the plate takes to slide this far")
+        .computed_default([](const K& k) { return 2.0 * k.spec.d0; }, "2 d0")
+        .number("settle_damping", at(&S::settle_damping), Range::closed(0.0, 1.0),
+                "global damping while settling, in c_c (6.64)")
+        .number("track_distance", at(&S::track_distance), Range::positive(), units::length,
+                "slide between updates of the rolling body")
+        .range_from([](const K& k) { return Range::at_least(k.spec.d0); }, "≥ d0")
+        .computed_default([](const K& k) { return 2.0 * k.spec.d0; }, "2 d0");
+    add_record_every(t, at(&S::record_every));
+    add_seed(t, at(&S::seed), "seed of the amorphous SiO2");
+    add_relaxation(t, at(&S::relax_tolerance), at(&S::max_relax_steps));
+    add_dump_every(t, &K::dump_every);
+    return t;
+  }();
+  return table;
+}
+
 // The substrate of the oxide-asperity study: a material of the library (or
 // [materials.define]) by name, its ν at most the pair force's (6.52) and its η
 // from the record or the key.
-CohesiveMaterial substrate_material(const Config& root, const Config& c, double scaling_exponent) {
-  const std::string name = c.string_or("substrate", "Si");
+CohesiveMaterial substrate_material(const Config& root, const Config& c, const OxideAsperityKeys& k,
+                                    double scaling_exponent) {
   materials::MaterialLibrary library;
   define_materials_from(library, root);
-  if (!library.contains(name)) {
+  if (!library.contains(k.substrate)) {
     std::string known;
     for (const auto& n : library.names()) known += (known.empty() ? "" : ", ") + n;
-    throw c.error("substrate", fmt::format("unknown material '{}'", name), known);
+    throw c.error("substrate", fmt::format("unknown material '{}'", k.substrate), known);
   }
-  const auto& record = library.get(name);
-  const double eta = c.number_or("substrate_restitution", record.restitution ? *record.restitution : 0.9,
-                                 Range{0.0, 1.0, true, false});
+  const auto& record = library.get(k.substrate);
+  const double eta = k.substrate_restitution.value_or(record.restitution ? *record.restitution : 0.9);
   CohesiveMaterial m = cohesive_material(record, scaling_exponent, eta);
-  m.poisson = c.number_or("substrate_poisson", std::min(m.poisson, 0.2), Range::open_closed(-1.0, 0.25));
+  m.poisson = k.substrate_poisson.value_or(std::min(m.poisson, 0.2));
   require_modelled(m);
   return m;
 }
 
 // The SiO2–Si pairs: mix() of the two, with its adhesion energy and
 // strengths replaced by the keys given.
-CohesiveMaterial interface_material(const Config& c, const CohesiveMaterial& oxide, const CohesiveMaterial& substrate) {
+CohesiveMaterial interface_material(const OxideAsperityKeys& k, const CohesiveMaterial& oxide,
+                                    const CohesiveMaterial& substrate) {
   CohesiveMaterial m = mix(oxide, substrate);
-  m.surface_energy = c.number_or("interface_surface_energy", m.surface_energy, Range::positive(), units::surface_energy);
-  m.tensile_strength = c.number_or("interface_tensile_strength", m.tensile_strength, Range::positive(), units::pressure);
-  m.shear_strength = c.number_or("interface_shear_strength", m.shear_strength, Range::positive(), units::pressure);
+  m.surface_energy = k.interface_surface_energy.value_or(m.surface_energy);
+  m.tensile_strength = k.interface_tensile_strength.value_or(m.tensile_strength);
+  m.shear_strength = k.interface_shear_strength.value_or(m.shear_strength);
   return m;
 }
 
-nlohmann::json run_oxide_asperity_study(const Config& root, RunContext& context) {
+nlohmann::json run_oxide_asperity_study(const Config& root, const DemInputs& dem, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
-  require_cohesive_law(root, "oxide-asperity study");
-  OxideAsperitySpec spec;
-  spec.oxide = dem_material(root, oxide_default);
-  spec.engine = read_engine(root);
+  OxideAsperityKeys keys;
+  keys.spec.oxide = dem.material;
+  keys.spec.engine = dem.keys.engine;
   const Config c = root.section("dem.oxide_asperity");
-  spec.substrate = substrate_material(root, c, spec.oxide.scaling_exponent);
-  spec.interface = interface_material(c, spec.oxide, spec.substrate);
-  spec.d0 = c.number_or("d0", 1.5e-9, Range::positive(), units::length);
-  spec.largest = read_largest(c, spec.d0);
-  if (const auto box = read_box(c)) spec.box = *box;
-  spec.layer_thickness = c.number_or("layer_thickness", 5e-9, Range::at_least(0.5 * spec.d0), units::length);
-  spec.body_diameter = c.number_or("body_diameter", 50e-9, Range::at_least(3.0 * spec.d0), units::length);
-  spec.clearance = read_clearance(c);
-  spec.plate_thickness = c.number_or("plate_thickness", 1.5, Range::closed(1.0, 10.0));
-  spec.wall_thickness = read_wall_thickness(c);
-  spec.velocity = read_sliding_velocity(c);
-  spec.pressure = read_pressure(c, 100e6, spec.oxide);
-  spec.time_step = read_time_step(c);
-  spec.sliding_distance = read_sliding_distance(c, spec.box.x);
-  spec.settle_distance = c.number_or("settle_distance", 2.0 * spec.d0, Range::positive(), units::length);
-  spec.settle_damping = c.number_or("settle_damping", 0.1, Range::closed(0.0, 1.0));
-  spec.track_distance = c.number_or("track_distance", 2.0 * spec.d0, Range::at_least(spec.d0), units::length);
-  spec.record_every = read_record_every(c);
-  spec.seed = read_seed(c);
-  spec.relax_tolerance = read_relax_tolerance(c);
-  spec.max_relax_steps = read_max_relax_steps(c);
-  const long dump_every = read_dump_every(c, 5000);
+  oxide_asperity_keys().read(c, keys);
+  OxideAsperitySpec& spec = keys.spec;
+  spec.substrate = substrate_material(root, c, keys, spec.oxide.scaling_exponent);
+  spec.interface = interface_material(keys, spec.oxide, spec.substrate);
+  const long dump_every = keys.dump_every;
   root.reject_unknown_keys();
   try {
     check(spec);
@@ -220,47 +272,17 @@ class OxideAsperityStudy final : public DemStudy {
   std::string summary() const override {
     return "a loose SiO2 cylinder rolled by a plate on an oxidized Si surface (§9.3.3, Fig. 9.26): growth, trench";
   }
-  Schema schema() const override {
-    const std::string t = "dem.oxide_asperity";
-    Schema s = material_keys({.materials = "the oxide (layer, cylinder, plate): SiO2 or a [materials.define] name",
-                              .fallback = oxide_default});
-    s.insert(s.end(),
-             {{t + ".substrate", "string", "", "", "Si", "the HCP substrate's material (library or [materials.define] name)", ""},
-              {t + ".substrate_poisson", "number", "(-1, 0.25]", "1", "min(ν, 0.2)",
-               "the substrate's modelled ν (Si's 0.27 exceeds the pair force's 1/4 (6.52))", ""},
-              {t + ".substrate_restitution", "number", "(0, 1]", "1", "record or 0.9", "the substrate's η", ""},
-              {t + ".interface_surface_energy", "number", "> 0", "J/m^2", "√(γ_oxide γ_substrate)",
-               "adhesion energy γ of the oxide–substrate pairs (the Si/SiO2 interface)", ""},
-              {t + ".interface_tensile_strength", "number", "> 0", "Pa", "the weaker σ_m,N",
-               "σ_m,N of the oxide–substrate pairs", ""},
-              {t + ".interface_shear_strength", "number", "> 0", "Pa", "the weaker σ_m,T",
-               "σ_m,T of the oxide–substrate pairs", ""},
-              {t + ".d0", "number", "> 0", "m", "1.5e-9", "Si lattice spacing and mode of the SiO2 diameters", "--d0"},
-              largest_key(t, "largest SiO2 diameter"),
-              box_key(t, "[150e-9, 150e-9, 75e-9]", "cell [x, y, z]; x, y rounded to whole HCP cells"),
-              {t + ".layer_thickness", "number", "≥ d0/2", "m", "5e-9", "SiO2 layer on the Si", ""},
-              {t + ".body_diameter", "number", "≥ 3 d0", "m", "50e-9", "loose SiO2 cylinder (axis along y)", "--D"},
-              clearance_key(t, "gaps layer–cylinder–plate, in d0"),
-              {t + ".plate_thickness", "number", "[1, 10]", "1", "1.5", "rigid plate, in d0", ""},
-              wall_thickness_key(t, "fixed Si wall at the bottom, in d0"),
-              sliding_velocity_key(t, "sliding velocity of the plate"),
-              pressure_key(t, "1e8", "normal pressure on the plate"),
-              sliding_distance_key(t, "box x"),
-              {t + ".settle_distance", "number", "> 0", "m", "2 d0",
-               "loading at rest (damped) before sliding, for the time the plate takes to slide this far", ""},
-              {t + ".settle_damping", "number", "[0, 1]", "1", "0.1", "global damping while settling, in c_c (6.64)", ""},
-              {t + ".track_distance", "number", "≥ d0", "m", "2 d0", "slide between updates of the rolling body", ""},
-              time_step_key(t),
-              record_every_key(t),
-              seed_key(t, "seed of the amorphous SiO2"),
-              relax_tolerance_key(t),
-              max_relax_steps_key(t),
-              dump_every_key(t, 5000)});
-    return s;
+  const KeyTable<DemKeys>& dem_keys() const override {
+    static const auto table =
+        dem_table({.materials = "the oxide (layer, cylinder, plate): SiO2 or a [materials.define] name",
+                   .default_material = oxide_default,
+                   .cohesive_study = "oxide-asperity study"});
+    return table;
   }
+  Schema study_keys() const override { return oxide_asperity_keys().schema("dem.oxide_asperity"); }
   void run(const Config& inputs, RunContext& context) override {
     const EngineRanks ranks(engine_);
-    finish(run_oxide_asperity_study(inputs, context), context, "oxide_asperity");
+    finish(run_oxide_asperity_study(inputs, read_dem(inputs), context), context, "oxide_asperity");
   }
 };
 

@@ -21,31 +21,55 @@ namespace {
 
 using namespace dem;
 
-nlohmann::json run_patch_test_study(const Config& root, RunContext& context) {
+// The unitless material of Table 6.4: its lengths (d0) carry no unit.
+bool is_unitless(const CohesiveMaterial& m) { return m.name == "table-6.4"; }
+
+const KeyTable<PatchTestSpec>& patch_test_keys() {
+  using S = PatchTestSpec;
+  static const auto table = [] {
+    KeyTable<S> t;
+    t.choice("lattice", &S::amorphous, std::vector<std::pair<std::string, bool>>{{"hcp", false}, {"amorphous", true}},
+             "sample lattice")
+        .flag("--lattice")
+        .custom("d0", "number", "> 0", "m", "particle diameter (HCP) or mode of diameters, e.g. 90 or \"6 nm\"",
+                [](const Config& c, const std::string& key, S& s) {
+                  s.d0 = c.has(key) ? c.number(key, Range::positive(),
+                                               is_unitless(s.material) ? units::dimensionless : units::length)
+                                    : patch_test_d0(s.material);
+                })
+        .fallback("0.6 d_c")
+        .flag("--d0")
+        .boolean("load_along_c_axis", &S::load_along_c_axis, "HCP: the c axis (stacking direction) along the load")
+        .number("length", &S::length, Range::closed(S::min_length, S::max_length), "sample length L in d0")
+        .flag("--length")
+        // At least the largest particle (1.25 d0, amorphous); an HCP sample takes
+        // whole cells of √(8/3) d0: 1.6 is one cell, the 2.4 nm depth of §7.1.1.
+        .number("width", &S::width, Range::closed(S::min_width, S::max_width), "sample width in d0")
+        .number("load", &S::load, Range::positive(), "compressive stress of the elastic test, in E")
+        .range_from([](const S& s) { return Range::open(0.0, s.material.tensile_strength / s.material.young); },
+                    "(0, σ_m,N/E)");
+    add_time_step(t, &S::time_step);
+    t.number("strain_rate", &S::strain_rate, Range::open(0.0, S::max_strain_rate), "strength tests: ε̇ Δt")
+        .boolean("strengths", &S::strengths, "also pull and shear the walls")
+        .flag("--no-strengths", "false")
+        .integer("max_elastic_steps", &S::max_elastic_steps, Range::at_least(static_cast<double>(S::min_elastic_steps)),
+                 "step limit of the elastic compression");
+    add_seed(t, &S::seed);
+    return t;
+  }();
+  return table;
+}
+
+nlohmann::json run_patch_test_study(const Config& root, const DemInputs& dem, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
   Checkpointer* checkpoints = &context.checkpoints();
   PatchTestSpec spec;
-  spec.material = dem_material(root);
-  require_cohesive_law(root, "patch test");
-  spec.engine = read_engine(root);
-  const Config c = root.section("dem.patch_test");
-  const bool unitless = spec.material.name == "table-6.4";
-  spec.amorphous = c.choice_or("lattice", "hcp", {"hcp", "amorphous"}) == "amorphous";
-  const double d_c = critical_diameter(spec.material);  // d_c = 4γE/σ_m,N² (6.35)
-  spec.d0 = c.has("d0") ? c.number("d0", Range::positive(), unitless ? units::dimensionless : units::length) : 0.6 * d_c;
-  spec.load_along_c_axis = c.boolean_or("load_along_c_axis", false);
-  spec.length = c.number_or("length", 25.0, Range::closed(PatchTestSpec::min_length, PatchTestSpec::max_length));
-  // At least the largest particle (1.25 d0, amorphous); an HCP sample takes
-  // whole cells of √(8/3) d0: 1.6 is one cell, the 2.4 nm depth of §7.1.1.
-  spec.width = c.number_or("width", 3.0, Range::closed(PatchTestSpec::min_width, PatchTestSpec::max_width));
-  spec.load = c.number_or("load", 0.01, Range::open(0.0, spec.material.tensile_strength / spec.material.young));
-  spec.time_step = read_time_step(c);
-  spec.strain_rate = c.number_or("strain_rate", 1e-5, Range::open(0.0, PatchTestSpec::max_strain_rate));
-  spec.strengths = c.boolean_or("strengths", true);
-  spec.max_elastic_steps = c.integer_or("max_elastic_steps", 40000,
-                                        Range::at_least(static_cast<double>(PatchTestSpec::min_elastic_steps)));
-  spec.seed = static_cast<unsigned>(read_seed(c));
+  spec.material = dem.material;
+  spec.engine = dem.keys.engine;
+  patch_test_keys().read(root.section("dem.patch_test"), spec);
   root.reject_unknown_keys();
+  const bool unitless = is_unitless(spec.material);
+  const double d_c = critical_diameter(spec.material);  // d_c = 4γE/σ_m,N² (6.35)
 
   log::info("DEM patch test: {} {}, d0 = {:g} (d_min = {:g}, d_c = {:g}), ν target {:g}", spec.amorphous ? "amorphous" : "HCP",
             spec.material.name, spec.d0, minimum_diameter(spec.material), d_c, spec.material.poisson);
@@ -119,32 +143,18 @@ class PatchTestStudy final : public DemStudy {
   std::string summary() const override {
     return "E, ν (confined compression) and σ_m,N, σ_m,T (walls pulled, sheared) of a DEM sample (§6.2)";
   }
-  Schema schema() const override {
-    const std::string t = "dem.patch_test";
-    Schema s = material_keys({.materials = "table-6.4 (Table 6.4, unitless), Si, SiO2 or a [materials.define] name",
-                              .poisson_flag = "--nu",
-                              .scaling_exponent_flag = "--s"});
-    s.insert(s.end(),
-             {{t + ".lattice", "choice", "hcp | amorphous", "", "hcp", "sample lattice", "--lattice"},
-              {t + ".d0", "number", "> 0", "m", "0.6 d_c",
-               "particle diameter (HCP) or mode of diameters, e.g. 90 or \"6 nm\"", "--d0"},
-              {t + ".length", "number", "[6, 400]", "1", "25", "sample length L in d0", "--length"},
-              {t + ".width", "number", "[1.25, 100]", "1", "3", "sample width in d0", ""},
-              seed_key(t),
-              {t + ".strengths", "boolean", "", "", "true", "also pull and shear the walls", "--no-strengths",
-               "false"},
-              {t + ".load_along_c_axis", "boolean", "", "", "false",
-               "HCP: the c axis (stacking direction) along the load", ""},
-              {t + ".load", "number", "(0, σ_m,N/E)", "1", "0.01", "compressive stress of the elastic test, in E", ""},
-              time_step_key(t),
-              {t + ".strain_rate", "number", "(0, 0.01)", "1", "1e-5", "strength tests: ε̇ Δt", ""},
-              {t + ".max_elastic_steps", "integer", "≥ 1000", "1", "40000",
-               "step limit of the elastic compression", ""}});
-    return s;
+  const KeyTable<DemKeys>& dem_keys() const override {
+    static const auto table =
+        dem_table({.materials = "table-6.4 (Table 6.4, unitless), Si, SiO2 or a [materials.define] name",
+                   .poisson_flag = "--nu",
+                   .scaling_exponent_flag = "--s",
+                   .cohesive_study = "patch test"});
+    return table;
   }
+  Schema study_keys() const override { return patch_test_keys().schema("dem.patch_test"); }
   void run(const Config& inputs, RunContext& context) override {
     const EngineRanks ranks(engine_);
-    const auto outputs = run_patch_test_study(inputs, context);
+    const auto outputs = run_patch_test_study(inputs, read_dem(inputs), context);
     require_elastic_bounds(context.results());
     finish(outputs, context, "");
   }

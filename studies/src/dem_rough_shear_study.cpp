@@ -20,20 +20,55 @@ namespace {
 
 using namespace dem;
 
-nlohmann::json run_rough_shear_study(const Config& root, RunContext& context) {
+// What [dem.rough_shear] fills: the study's spec and its snapshots.
+struct RoughShearKeys {
+  RoughShearSpec spec;
+  long dump_every = 2000;
+};
+
+const KeyTable<RoughShearKeys>& rough_shear_keys() {
+  using K = RoughShearKeys;
+  const auto cell = [](auto& k) -> auto& { return k.spec.cell; };
+  static const auto table = [&] {
+    KeyTable<K> t;
+    add_sliding_cell(t, cell);
+    t.number("length", [](K& k) -> double& { return k.spec.cell.box.x; }, Range::positive(), units::length,
+             "cell length L (thesis: 25, 50, 100 d0)")
+        .range_from([](const K& k) { return Range::at_least(10.0 * k.spec.cell.d0); }, "≥ 10 d0")
+        .computed_default([](const K& k) { return 25.0 * k.spec.cell.d0; }, "25 d0")
+        .flag("--length");
+    add_cell_depth(t, cell);
+    t.number("height", [](K& k) -> double& { return k.spec.cell.box.z; }, Range::positive(), units::length,
+             "cell height H")
+        .range_from([](const K& k) { return Range::at_least(2.0 * (k.spec.cell.wall_thickness + 2.0) * k.spec.cell.d0); },
+                    "≥ 2 (wall_thickness + 2) d0")
+        .computed_default([](const K& k) { return 14.0 * k.spec.cell.d0; }, "14 d0")
+        .number("roughness", [](K& k) -> double& { return k.spec.roughness; }, Range::closed(0.0, 0.1),
+                "initial Sa / L (thesis: 0.01, 0.02, 0.04)")
+        .flag("--roughness")
+        .number("hurst", [](K& k) -> double& { return k.spec.hurst; }, Range::open_closed(0.0, 1.0),
+                "Hurst exponent of the initial surfaces")
+        .number("shortest_wavelength", [](K& k) -> double& { return k.spec.shortest_wavelength; }, Range::at_least(2.0),
+                "shortest wavelength of the initial surfaces in d0");
+    add_sliding_distance(t, [](K& k) -> double& { return k.spec.cell.sliding_distance; },
+                         [](const K& k) { return k.spec.cell.box.x; }, "L");
+    add_dump_every(t, &K::dump_every);
+    return t;
+  }();
+  return table;
+}
+
+nlohmann::json run_rough_shear_study(const Config& root, const DemInputs& dem, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
   Checkpointer* checkpoints = &context.checkpoints();
-  RoughShearSpec spec;
+  RoughShearKeys k;
+  with_dem(dem, k.spec.cell);  // the pressure's range is the material's
   const Config c = root.section("dem.rough_shear");
-  read_sliding_cell(root, c, spec.cell);
-  const double d0 = spec.cell.d0;
-  spec.cell.box = read_cell_box(c, spec.cell, 25.0 * d0, 10.0 * d0, 14.0 * d0, 2.0 * (spec.cell.wall_thickness + 2.0) * d0);
-  spec.roughness = c.number_or("roughness", 0.02, Range::closed(0.0, 0.1));
-  spec.hurst = c.number_or("hurst", 0.8, Range::open_closed(0.0, 1.0));
-  spec.shortest_wavelength = c.number_or("shortest_wavelength", 4.0, Range::at_least(2.0));
-  spec.cell.sliding_distance = read_sliding_distance(c, spec.cell.box.x);
-  const long dump_every = read_dump_every(c, 2000);
+  rough_shear_keys().read(c, k);
   root.reject_unknown_keys();
+  RoughShearSpec& spec = k.spec;
+  const double d0 = spec.cell.d0;
+  const long dump_every = k.dump_every;
 
   log::info("DEM sheared rough surfaces (§7.2): {} L = {:.3g} m, Sa = {:g} L, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa",
             spec.cell.material.name, spec.cell.box.x, spec.roughness, d0, spec.cell.velocity, spec.cell.pressure);
@@ -102,24 +137,15 @@ class RoughShearStudy final : public DemStudy {
   std::string summary() const override {
     return "two rough surfaces sheared under a normal pressure (§7.2): worn particles, F_T history, Sa evolution";
   }
-  Schema schema() const override {
-    const std::string t = "dem.rough_shear";
-    Schema s = material_keys({.materials = "Si, SiO2 or a [materials.define] name"});
-    s.insert(s.end(),
-             {{t + ".length", "number", "≥ 10 d0", "m", "25 d0", "cell length L (thesis: 25, 50, 100 d0)", "--length"},
-              {t + ".roughness", "number", "[0, 0.1]", "1", "0.02", "initial Sa / L (thesis: 0.01, 0.02, 0.04)",
-               "--roughness"},
-              {t + ".height", "number", "≥ 2 (wall_thickness + 2) d0", "m", "14 d0", "cell height H", ""},
-              {t + ".hurst", "number", "(0, 1]", "1", "0.8", "Hurst exponent of the initial surfaces", ""},
-              {t + ".shortest_wavelength", "number", "≥ 2", "1", "4", "shortest wavelength of the initial surfaces in d0",
-               ""}});
-    const Schema sliding = sliding_keys(t, "L");
-    s.insert(s.end(), sliding.begin(), sliding.end());
-    return s;
+  const KeyTable<DemKeys>& dem_keys() const override {
+    static const auto table =
+        dem_table({.materials = "Si, SiO2 or a [materials.define] name", .history = true});
+    return table;
   }
+  Schema study_keys() const override { return rough_shear_keys().schema("dem.rough_shear"); }
   void run(const Config& inputs, RunContext& context) override {
     const EngineRanks ranks(engine_);
-    finish(run_rough_shear_study(inputs, context), context, "rough_shear");
+    finish(run_rough_shear_study(inputs, read_dem(inputs), context), context, "rough_shear");
   }
 };
 

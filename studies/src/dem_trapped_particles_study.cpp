@@ -18,24 +18,67 @@ namespace {
 
 using namespace dem;
 
-nlohmann::json run_trapped_particles_study(const Config& root, RunContext& context) {
+// What [dem.trapped_particles] fills: the study's spec and its snapshots.
+struct TrappedParticlesKeys {
+  TrappedParticlesSpec spec;
+  long dump_every = 2000;
+};
+
+const KeyTable<TrappedParticlesKeys>& trapped_particles_keys() {
+  using K = TrappedParticlesKeys;
+  const auto cell = [](auto& k) -> auto& { return k.spec.cell; };
+  // The cell's height fits the gap D and both surfaces: walls and two more d0 each.
+  const auto min_height = [](const K& k) {
+    return k.spec.diameter + 2.0 * (k.spec.cell.wall_thickness + 2.0) * k.spec.cell.d0;
+  };
+  static const auto table = [&] {
+    KeyTable<K> t;
+    add_sliding_cell(t, cell);
+    t.integer("count", [](K& k) -> int& { return k.spec.count; }, Range::closed(1, 16),
+              "number of loose particles (thesis: 2 to 4)")
+        .allowed("1 … 16")
+        .flag("--n")
+        .number("diameter", [](K& k) -> double& { return k.spec.diameter; }, Range::positive(), units::length,
+                "diameter of the loose particles (= the gap)")
+        .range_from([](const K& k) { return Range::at_least(3.0 * k.spec.cell.d0); }, "≥ 3 d0")
+        .required()
+        .flag("--D");
+    add_clearance(t, [](K& k) -> double& { return k.spec.clearance; },
+                  "clearance between the loose particles and the surfaces, in d0");
+    t.number("fit_from", [](K& k) -> double& { return k.spec.fit_from; }, Range::closed_open(0.0, 1.0),
+             "the rigid-body fit of the loose particles runs from this fraction of the slide")
+        .number("length", [](K& k) -> double& { return k.spec.cell.box.x; }, Range::positive(), units::length,
+                "cell length L")
+        .range_from([](const K& k) { return Range::at_least(k.spec.count * (k.spec.diameter + k.spec.cell.d0)); },
+                    "≥ n (D + d0)")
+        .computed_default([](const K& k) { return 3.0 * k.spec.count * k.spec.diameter; }, "3 n D")
+        .flag("--length");
+    add_cell_depth(t, cell);
+    t.number("height", [](K& k) -> double& { return k.spec.cell.box.z; }, Range::positive(), units::length,
+             "cell height H")
+        .range_from([min_height](const K& k) { return Range::at_least(min_height(k)); },
+                    "≥ D + 2 (wall_thickness + 2) d0")
+        .computed_default([min_height](const K& k) { return min_height(k) + 2.0 * k.spec.cell.d0; },
+                          "D + 2 (wall_thickness + 3) d0");
+    add_sliding_distance(t, [](K& k) -> double& { return k.spec.cell.sliding_distance; },
+                         [](const K& k) { return k.spec.cell.box.x; }, "L");
+    add_dump_every(t, &K::dump_every);
+    return t;
+  }();
+  return table;
+}
+
+nlohmann::json run_trapped_particles_study(const Config& root, const DemInputs& dem, RunContext& context) {
   const std::filesystem::path& out = context.output_dir();
   Checkpointer* checkpoints = &context.checkpoints();
-  TrappedParticlesSpec spec;
+  TrappedParticlesKeys k;
+  with_dem(dem, k.spec.cell);  // the pressure's range is the material's
   const Config c = root.section("dem.trapped_particles");
-  read_sliding_cell(root, c, spec.cell);
-  const double d0 = spec.cell.d0;
-  spec.count = static_cast<int>(c.integer_or("count", 3, Range::closed(1, 16)));
-  spec.diameter = c.number("diameter", Range::at_least(3.0 * d0), units::length);
-  spec.clearance = read_clearance(c);
-  spec.fit_from = c.number_or("fit_from", 0.0, Range::closed_open(0.0, 1.0));
-  const double min_height = spec.diameter + 2.0 * (spec.cell.wall_thickness + 2.0) * d0;
-  const double min_length = spec.count * (spec.diameter + d0);
-  spec.cell.box = read_cell_box(c, spec.cell, 3.0 * spec.count * spec.diameter, min_length, min_height + 2.0 * d0,
-                                min_height);
-  spec.cell.sliding_distance = read_sliding_distance(c, spec.cell.box.x);
-  const long dump_every = read_dump_every(c, 2000);
+  trapped_particles_keys().read(c, k);
   root.reject_unknown_keys();
+  TrappedParticlesSpec& spec = k.spec;
+  const double d0 = spec.cell.d0;
+  const long dump_every = k.dump_every;
 
   log::info("DEM trapped particles (§7.3): {} n = {}, D = {:.3g} m, L = {:.3g} m, d0 = {:.3g} m, v = {:g} m/s, p = {:.3g} Pa",
             spec.cell.material.name, spec.count, spec.diameter, spec.cell.box.x, d0, spec.cell.velocity, spec.cell.pressure);
@@ -92,25 +135,15 @@ class TrappedParticlesStudy final : public DemStudy {
   std::string summary() const override {
     return "n loose particles sheared between flat surfaces (§7.3): rolling particles or a shear band";
   }
-  Schema schema() const override {
-    const std::string t = "dem.trapped_particles";
-    Schema s = material_keys({.materials = "Si, SiO2 or a [materials.define] name"});
-    s.insert(s.end(),
-             {{t + ".count", "integer", "1 … 16", "1", "3", "number of loose particles (thesis: 2 to 4)", "--n"},
-              {t + ".diameter", "number", "≥ 3 d0", "m", "", "diameter of the loose particles (= the gap)", "--D"},
-              {t + ".length", "number", "≥ n (D + d0)", "m", "3 n D", "cell length L", "--length"},
-              {t + ".height", "number", "≥ D + 2 (wall_thickness + 2) d0", "m", "D + 2 (wall_thickness + 3) d0",
-               "cell height H", ""},
-              clearance_key(t, "clearance between the loose particles and the surfaces, in d0"),
-              {t + ".fit_from", "number", "[0, 1)", "1", "0",
-               "the rigid-body fit of the loose particles runs from this fraction of the slide", ""}});
-    const Schema sliding = sliding_keys(t, "L");
-    s.insert(s.end(), sliding.begin(), sliding.end());
-    return s;
+  const KeyTable<DemKeys>& dem_keys() const override {
+    static const auto table =
+        dem_table({.materials = "Si, SiO2 or a [materials.define] name", .history = true});
+    return table;
   }
+  Schema study_keys() const override { return trapped_particles_keys().schema("dem.trapped_particles"); }
   void run(const Config& inputs, RunContext& context) override {
     const EngineRanks ranks(engine_);
-    finish(run_trapped_particles_study(inputs, context), context, "trapped_particles");
+    finish(run_trapped_particles_study(inputs, read_dem(inputs), context), context, "trapped_particles");
   }
 };
 

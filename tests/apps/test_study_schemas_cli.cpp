@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -130,6 +131,59 @@ TEST(StudySchemas, TheRunnersAndTheBackendsKeysAreTheirTables) {
       // define, layer: tables whose keys are listed under them
       if (k != "define" && k != "layer")
         EXPECT_THAT(keys_md, HasSubstr("`" + p.table + "." + k + "`")) << "not in its table";
+  }
+  EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";
+}
+
+namespace {
+// The keys docs/keys.md lists for `study` in `table` ("dem/rough_shear", "dem.rough_shear"):
+// the rows of the study's key tables, as the KeysDoc test keeps the page.
+std::vector<std::string> keys_listed(const std::string& keys_md, const std::string& study, const std::string& table) {
+  const std::string heading = "## `" + study + "`\n";
+  const auto start = keys_md.find(heading);
+  if (start == std::string::npos) return {};
+  const auto end = keys_md.find("\n## ", start + heading.size());
+  std::stringstream section(keys_md.substr(start, end - start));
+  std::vector<std::string> out;
+  const std::string head = "| `" + table + ".";
+  for (std::string line; std::getline(section, line);) {
+    if (!line.starts_with(head)) continue;
+    const std::string key = line.substr(head.size(), line.find('`', head.size()) - head.size());
+    if (key.find('.') == std::string::npos) out.push_back(key);
+  }
+  return out;
+}
+}  // namespace
+
+// Each DEM study reads every key its key tables declare, and no other: the
+// keys read in [dem] and in its own table are those docs/keys.md lists for it.
+TEST(StudySchemas, TheDemStudiesReadEveryKeyTheirTablesDeclare) {
+  const std::string keys_md = slurp(fs::path(WEARSCALE_SOURCE_DIR) / "docs" / "keys.md");
+  struct DemProbe {
+    std::string study, table, args;
+  };
+  // dem.friction is read for the hooke law only: the sliding cells' probes of [dem] take that law
+  // (the studies of the cohesive law's strengths declare no friction).
+  const DemProbe probes[] = {
+      {"dem/patch_test", "dem.patch_test", "dem patch-test"},
+      {"dem/junction", "dem", "dem junction --material SiO2 --D 20e-9 --d0 6e-9"},
+      {"dem/junction", "dem.junction", "dem junction --material SiO2 --D 20e-9 --d0 6e-9"},
+      {"dem/rough_shear", "dem", "dem rough-shear --material SiO2 --d0 3e-9 --set 'dem.law=\"hooke\"'"},
+      {"dem/rough_shear", "dem.rough_shear", "dem rough-shear --material SiO2 --d0 3e-9"},
+      {"dem/trapped_particles", "dem",
+       "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 6e-9 --set 'dem.law=\"hooke\"'"},
+      {"dem/trapped_particles", "dem.trapped_particles", "dem trapped-particles --material SiO2 --n 2 --D 20e-9 --d0 6e-9"},
+      {"dem/oxide_asperity", "dem.oxide_asperity", "dem oxide-asperity --d0 6e-9"},
+  };
+  for (const auto& p : probes) {
+    const auto r = run_cli(p.args + " --set " + p.table + ".zz_not_a_key=1 --out out", work);
+    EXPECT_EQ(r.status, 2) << p.table << ": " << r.err;
+    auto read = keys_read(r.err, p.table);
+    auto listed = keys_listed(keys_md, p.study, p.table);
+    std::sort(read.begin(), read.end());
+    std::sort(listed.begin(), listed.end());
+    EXPECT_FALSE(listed.empty()) << p.study << " lists no key of [" << p.table << "]";
+    EXPECT_EQ(read, listed) << p.study << ": the keys read in [" << p.table << "] are not those its tables declare";
   }
   EXPECT_FALSE(fs::exists(work / "out")) << "nothing may be written";
 }

@@ -319,6 +319,8 @@ IsotropicConstants isotropic_constants(double c11, double c12, long step) {
   return out;
 }
 
+double patch_test_d0(const CohesiveMaterial& m) { return 0.6 * critical_diameter(m); }
+
 PatchTestResult run_patch_test(const PatchTestSpec& spec, const PatchTestProgress& progress,
                                const RunCheckpoints& checkpoints) {
   require_modelled(spec.material);

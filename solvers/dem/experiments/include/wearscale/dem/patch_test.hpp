@@ -69,6 +69,10 @@ struct IsotropicConstants {
 };
 IsotropicConstants isotropic_constants(double c11, double c12, long step);
 
+/// The particle size of a patch test that gives none: 0.6 d_c (6.35), the
+/// smallest size of the thesis' lattices (§6.2.1).
+double patch_test_d0(const CohesiveMaterial& m);
+
 /// Observer of long runs: (phase, step, steps planned).
 using PatchTestProgress = std::function<void(const std::string&, long, long)>;
 

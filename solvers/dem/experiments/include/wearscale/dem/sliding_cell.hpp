@@ -42,7 +42,7 @@ struct SlidingCellSpec {
   Vec3 box{};                     ///< L (sliding, periodic) × W (periodic depth) × H (normal)
   double wall_thickness = 1.5;    ///< in d0 (§6.3)
   double velocity = 10.0;         ///< sliding velocity of the top wall [m/s]
-  double pressure = 0.0;          ///< p_N on the top wall [Pa]
+  double pressure = 0.5e9;        ///< p_N on the top wall [Pa] (§7.2, §7.3: 0.1 to 1 GPa)
   double time_step = 0.1;         ///< in Δt_c
   /// Viscous damping of the pressed wall's normal motion, as a fraction of
   /// the critical damping on the cell stiffness E A0 / H. Damping carries
