@@ -34,6 +34,9 @@ namespace {
 // <name>_labels.tsv as strings (hexadecimal → bytes, a byte at a time through
 // sprintf("%c"): no text is ever parsed as a command), and the CSV settings
 // of wearscale's tables (one header line, names read by column("...")).
+// `reset session` keeps the `set datafile` settings: the texts are read
+// without a header line even when the script before it in the same gnuplot
+// (a folder's figures are drawn by one) set columnheaders, as every one does.
 constexpr std::string_view kPrologue = R"(# Draws NAME.png and NAME.pdf, NAME being this file's name without .gp:
 #   gnuplot NAME.gp      (in this folder)
 # The figure's texts (title, legend entries, the names of its data files,
@@ -50,6 +53,7 @@ hex_half(h) = 2*int(strlen(h)/4)
 from_hex(h) = strlen(h) < 2 ? "" : strlen(h) == 2 ? hex_byte(h) : from_hex(h[1:hex_half(h)]).from_hex(h[hex_half(h)+1:])
 set datafile separator "\t"
 set datafile commentschars ""
+set datafile nocolumnheaders
 stats name."_labels.tsv" using (0) nooutput
 array TEXT[STATS_records]
 k = 0
