@@ -161,12 +161,12 @@ TEST(Figure, TheSameFigureDrawnTwiceIsTheSameBytes) {
   EXPECT_NE(slurp_file(first.file("echo.pdf")).find("/CreationDate (D:19700101000000Z)"), std::string::npos);
 }
 
-// A folder's figures are drawn by one gnuplot, their scripts one after the
+// A gnuplot draws several of a folder's figures, their scripts one after the
 // other: each script reads its own texts, whatever the script before it set
 // (every one sets `columnheaders` for wearscale's tables, which `reset
 // session` keeps). The kept scripts run together, as draw_figures runs them,
-// exit 0 and print each its own texts; before, the second read its texts one
-// line off, failed, and was drawn again on its own (a second gnuplot).
+// exit 0 and print each its own texts (before, the second read its texts one
+// line off, failed, and was drawn again on its own by another gnuplot).
 TEST(Figure, FiguresDrawnByOneGnuplotEachReadTheirOwnTexts) {
   if (!wearscale::coupling::plotting_available()) GTEST_SKIP() << "gnuplot is not installed";
   const ScratchDir scratch("wearscale_figure_together_");
