@@ -1,9 +1,11 @@
-# wearscale_layer(NAME <name> DIR <folder> [DEPENDS <layer>...] [LIBS <target>...])
+# wearscale_layer(NAME <name> DIR <folder> [NOT_KERNEL] [DEPENDS <layer>...] [LIBS <target>...])
 #
 # Adds the library of one architectural layer as `wearscale_<name>` with the
 # alias `wearscale::<name>`. Its public headers live in <folder>/include and
 # are visible only to the layer itself and to layers that declare it in
 # DEPENDS: a solver that includes a coupling header fails to compile.
+# NOT_KERNEL: a library without numerical kernels, compiled at -O2 in Release
+# (cmake/WearscaleFlags.cmake).
 # Installed (cmake/WearscaleInstall.cmake) as wearscale::<name> of find_package(wearscale).
 include(GNUInstallDirs)
 
@@ -19,7 +21,7 @@ function(wearscale_unity target)
 endfunction()
 
 function(wearscale_layer)
-  cmake_parse_arguments(L "" "NAME;DIR" "DEPENDS;LIBS" ${ARGN})
+  cmake_parse_arguments(L "NOT_KERNEL" "NAME;DIR" "DEPENDS;LIBS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${L_DIR}/src/*.cpp)
   add_library(wearscale_${L_NAME} STATIC ${sources})
   add_library(wearscale::${L_NAME} ALIAS wearscale_${L_NAME})
@@ -32,6 +34,9 @@ function(wearscale_layer)
   target_link_libraries(wearscale_${L_NAME} PUBLIC ${deps} ${L_LIBS} PRIVATE wearscale_flags)
   set_target_properties(wearscale_${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${L_NAME})
   wearscale_unity(wearscale_${L_NAME})
+  if(L_NOT_KERNEL)
+    set_target_properties(wearscale_${L_NAME} PROPERTIES WEARSCALE_NOT_KERNEL ON)
+  endif()
   # Installed by cmake/WearscaleInstall.cmake: the library and its include/ folder as a whole.
   set_property(GLOBAL PROPERTY WEARSCALE_LAYER_${L_NAME}_DIR ${L_DIR})
   set_property(GLOBAL APPEND PROPERTY WEARSCALE_LAYERS ${L_NAME})

@@ -34,6 +34,10 @@ namespace {
 // <name>_labels.tsv as strings (hexadecimal → bytes, a byte at a time through
 // sprintf("%c"): no text is ever parsed as a command), and the CSV settings
 // of wearscale's tables (one header line, names read by column("...")).
+// `reset session` keeps the `set datafile` settings: the texts are read
+// without a header line even when the script before it in the same gnuplot
+// (a gnuplot draws a folder's figures several in turn) set columnheaders, as
+// every one does.
 constexpr std::string_view kPrologue = R"(# Draws NAME.png and NAME.pdf, NAME being this file's name without .gp:
 #   gnuplot NAME.gp      (in this folder)
 # The figure's texts (title, legend entries, the names of its data files,
@@ -50,6 +54,7 @@ hex_half(h) = 2*int(strlen(h)/4)
 from_hex(h) = strlen(h) < 2 ? "" : strlen(h) == 2 ? hex_byte(h) : from_hex(h[1:hex_half(h)]).from_hex(h[hex_half(h)+1:])
 set datafile separator "\t"
 set datafile commentschars ""
+set datafile nocolumnheaders
 stats name."_labels.tsv" using (0) nooutput
 array TEXT[STATS_records]
 k = 0
@@ -73,12 +78,12 @@ const fs::path& gnuplot_program() {
   return program;
 }
 
-// gnuplot running `scripts` in turn, in `folder`, its messages to
-// folder/gnuplot.log; the wait status, or -1 if it could not be started.
-// Started directly from an argument vector (no shell; not std::system, which
-// ignores SIGINT in the caller while it waits): a Ctrl-C, which gnuplot
-// answers by exiting with status 1, reaches this run as well.
-int run_gnuplot(const fs::path& folder, const std::vector<std::string>& scripts) {
+// gnuplot started on `scripts` (run in turn) in `folder`, its messages
+// appended to folder/gnuplot.log; its process id, or -1 if it could not be
+// started. Started directly from an argument vector (no shell; not
+// std::system, which ignores SIGINT in the caller while it waits): a Ctrl-C,
+// which gnuplot answers by exiting with status 1, reaches this run as well.
+pid_t start_gnuplot(const fs::path& folder, const std::vector<std::string>& scripts) {
   posix_spawn_file_actions_t files;
   if (posix_spawn_file_actions_init(&files) != 0) return -1;
   const std::string dir = folder.string();
@@ -94,11 +99,20 @@ int run_gnuplot(const fs::path& folder, const std::vector<std::string>& scripts)
   pid_t pid = -1;
   ok = ok && posix_spawn(&pid, program.c_str(), &files, nullptr, argv.data(), environ) == 0;
   posix_spawn_file_actions_destroy(&files);
-  if (!ok) return -1;
+  return ok ? pid : -1;
+}
+
+// The wait status of a gnuplot start_gnuplot started, or -1 (not started, or not waited for).
+int wait_gnuplot(pid_t pid) {
+  if (pid < 0) return -1;
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return -1;
   return status;
+}
+
+int run_gnuplot(const fs::path& folder, const std::vector<std::string>& scripts) {
+  return wait_gnuplot(start_gnuplot(folder, scripts));
 }
 
 std::string tail_of(const fs::path& file, std::size_t bytes) {
@@ -313,8 +327,22 @@ std::vector<fs::path> draw_figures(const fs::path& folder, const std::vector<Fig
   std::vector<bool> ok(figures.size(), false);
   if (plotting_available()) {
     auto interrupted = [](int status) { return (status != -1 && WIFSIGNALED(status)) || interrupt_requested(); };
-    int status = run_gnuplot(scratch.dir(), scripts);
-    if (interrupted(status))  // the run stops too, so that it is not taken as complete without its figures
+    // Several figures (the end of a sweep, when nothing else runs): two
+    // gnuplots side by side, each drawing every other figure in turn.
+    std::vector<std::string> group[2];
+    for (std::size_t k = 0; k < scripts.size(); ++k) group[k % 2].push_back(scripts[k]);
+    pid_t pid[2] = {-1, -1};
+    for (int g = 0; g < 2; ++g)
+      if (!group[g].empty()) pid[g] = start_gnuplot(scratch.dir(), group[g]);
+    int status = 0;
+    bool stopped = false;
+    for (int g = 0; g < 2; ++g) {
+      if (group[g].empty()) continue;
+      const int s = wait_gnuplot(pid[g]);
+      stopped = stopped || interrupted(s);
+      if (s != 0 && (status == 0 || status == -1)) status = s;  // a failure's exit status before "not started"
+    }
+    if (stopped)  // the run stops too, so that it is not taken as complete without its figures
       throw Interrupted(fmt::format("gnuplot was stopped by a signal while drawing the figures of {}", folder.string()));
     std::string failure;
     if (status != 0) {

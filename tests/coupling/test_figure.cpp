@@ -161,6 +161,46 @@ TEST(Figure, TheSameFigureDrawnTwiceIsTheSameBytes) {
   EXPECT_NE(slurp_file(first.file("echo.pdf")).find("/CreationDate (D:19700101000000Z)"), std::string::npos);
 }
 
+// A gnuplot draws several of a folder's figures, their scripts one after the
+// other: each script reads its own texts, whatever the script before it set
+// (every one sets `columnheaders` for wearscale's tables, which `reset
+// session` keeps). The kept scripts run together, as draw_figures runs them,
+// exit 0 and print each its own texts (before, the second read its texts one
+// line off, failed, and was drawn again on its own by another gnuplot).
+TEST(Figure, FiguresDrawnByOneGnuplotEachReadTheirOwnTexts) {
+  if (!wearscale::coupling::plotting_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const ScratchDir scratch("wearscale_figure_together_");
+  const std::string echo = R"gp(set print name.".txt"
+do for [k=1:|TEXT|] { print given_text(k) }
+set print
+slope = given_number(2)
+do for [FORMAT in "png pdf"] {
+if (FORMAT eq "png") { set terminal pngcairo size 400,300 } else { set terminal pdfcairo size 4in,3in }
+set output name.".".FORMAT
+plot slope*x title given_text(1) noenhanced
+unset output
+}
+)gp";
+  Figure first{"first", echo, {}, {}}, second{"second", echo, {}, {}};
+  first.add("title", "first figure");
+  first.add("slope", 1.0);
+  second.add("title", "second figure");
+  second.add("slope", 2.0);
+  const auto files = draw_figures(scratch.path(), {first, second});
+  EXPECT_EQ(files.size(), 8u) << "both scripts, texts, PNGs and PDFs";
+  const pid_t child = ::fork();
+  if (child == 0) {
+    if (::chdir(scratch.path().c_str()) != 0) ::_exit(2);
+    ::execlp("gnuplot", "gnuplot", "first.gp", "second.gp", static_cast<char*>(nullptr));
+    ::_exit(3);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "gnuplot first.gp second.gp in the folder";
+  EXPECT_EQ(slurp_file(scratch.file("first.txt")), "first figure\n1.0000000000000000e+00\n");
+  EXPECT_EQ(slurp_file(scratch.file("second.txt")), "second figure\n2.0000000000000000e+00\n");
+}
+
 // One figure gnuplot cannot draw (its data missing) costs that figure only,
 // with a warning: the others of the folder are drawn, and its script kept.
 TEST(Figure, AFigureThatFailsLeavesTheOthersDrawn) {

@@ -45,8 +45,9 @@ struct Figure {
 /// Whether `gnuplot` is on the PATH (looked up once).
 bool plotting_available();
 
-/// Draws `figures` in `folder` with one gnuplot process (one more per figure
-/// only if one of them fails): writes each figure's script and texts, and its
+/// Draws `figures` in `folder` with two gnuplot processes side by side, each
+/// drawing every other figure in turn (one process for one figure; one more
+/// per figure only if one of them fails): writes each figure's script and texts, and its
 /// PNG and PDF, every file atomically and staged with the folder's output set
 /// when one is open. A figure gnuplot could not draw is a warning, not an
 /// error; a figure left incomplete (a full disk) is an OutputError; a signal
