@@ -10,7 +10,7 @@
 namespace wearscale::wear {
 
 namespace {
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 void require(bool ok, const char* what, const char* name, double value, const char* allowed) {
   if (!ok || std::isnan(value))
