@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -287,18 +288,21 @@ void bind_contact(py::module_& m) {
   // The defaults of the solves' keyword arguments: the options structs' own.
   const ContactOptions contact_defaults{};
   const FrictionalOptions frictional_defaults{};
-  py::class_<PyNormalContact>(m, "NormalContact", R"(Frictionless normal contact (§2.3.2, (2.43)) of a rigid surface on an elastic half-space.
+  // The window's boundary defaults as the contact study's does (its key table: one place).
+  const std::string boundary = study_default("contact", "contact.boundary");
+  static const std::string normal_doc = R"(Frictionless normal contact (§2.3.2, (2.43)) of a rigid surface on an elastic half-space.
 
-NormalContact(heights, lx, ly=-1, e_star, boundary="periodic")
+NormalContact(heights, lx, ly=-1, e_star, boundary=")" + boundary + R"(")
 heights [m]: (nx, ny) array, positive towards the elastic body (copied once); lx, ly [m]: the
 window (ly < 0: square cells); e_star [Pa] > 0: the contact modulus E/(1-nu^2) (1.12).
 boundary: "periodic" (one cell of a periodic surface) or "free" (a window on an isolated body;
 a contact that reaches the window's border is refused).
 The solver is Polonsky-Keer's constrained conjugate gradient, FFT-preconditioned by default.
 Each solve starts from the last pressure (a warm start for load ramps); reset() forgets it.
-pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [Pa], [m], [m].)")
+pressure, gap, displacement: read-only (nx, ny) views on the solver's storage [Pa], [m], [m].)";
+  py::class_<PyNormalContact>(m, "NormalContact", normal_doc.c_str())
       .def(py::init<const InArray&, double, double, double, const std::string&>(), py::arg("heights"),
-           py::arg("lx"), py::arg("ly") = -1.0, py::arg("e_star"), py::arg("boundary") = "periodic")
+           py::arg("lx"), py::arg("ly") = -1.0, py::arg("e_star"), py::arg("boundary") = boundary)
       .def("solve",
            [](PyNormalContact& self, std::optional<double> mean_pressure, std::optional<double> interference,
               double tolerance, int max_iterations, const std::string& method, bool predict_load,

@@ -38,39 +38,13 @@ CohesiveMaterial material_of(const std::string& name, std::optional<double> pois
   return m;
 }
 
-// The keys of a DEM study's case as its key tables declare them (the rows of
-// its schema: key, type, allowed values, unit, default in words), for the
-// test that the keyword defaults are the case's.
-py::list case_keys(const std::string& study) {
-  py::list out;
-  for (const auto& row : studies::study_registry().create(study)->schema()) {
-    py::dict d;
-    d["key"] = row.key;
-    d["type"] = row.type;
-    d["allowed"] = row.range;
-    d["unit"] = row.unit;
-    d["default"] = row.fallback;
-    out.append(d);
-  }
-  return out;
-}
-
-// The default of a study's case key as its key table gives it, for a keyword
-// whose spec struct has no member for it (the [dem] material's name).
-std::string case_default(const std::string& study, const std::string& key) {
-  const auto schema = studies::study_registry().create(study)->schema();
-  const auto* spec = studies::find_key(schema, key);
-  if (spec == nullptr || spec->fallback.empty()) throw std::logic_error(study + " declares no default for " + key);
-  return spec->fallback;
-}
-
 // A docstring with each `{study|key}` replaced by that key's default as the
 // study's key table words it ("1.5 D"), kept for the module's lifetime.
 const char* docstring(std::string text) {
   static std::deque<std::string> kept;
   for (std::size_t at; (at = text.find("{dem/")) != std::string::npos;) {
     const auto bar = text.find('|', at), end = text.find('}', at);
-    text.replace(at, end + 1 - at, case_default(text.substr(at + 1, bar - at - 1), text.substr(bar + 1, end - bar - 1)));
+    text.replace(at, end + 1 - at, study_default(text.substr(at + 1, bar - at - 1), text.substr(bar + 1, end - bar - 1)));
   }
   return kept.emplace_back(std::move(text)).c_str();
 }
@@ -305,11 +279,9 @@ void bind_dem(py::module_& m) {
   static const SlidingCellSpec cell_defaults{};
   static const TrappedParticlesSpec trapped_defaults{};
   const double s_default = CohesiveMaterial{}.scaling_exponent;  // [dem] scaling_exponent's default
-  m.def("_case_keys", &case_keys, py::arg("study"),
-        "The keys of a DEM study's case (`dem/rough_shear`, ...) as its key tables declare them.");
   m.def("material", [](const std::string& name, std::optional<double> poisson, double s) {
           return targets(material_of(name, poisson, s));
-        }, py::arg("name") = case_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
+        }, py::arg("name") = study_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
         py::arg("scaling_exponent") = s_default,
         R"(The targets of the cohesive DEM for a material: "table-6.4" (no units: E = 1, nu = 0.15,
 sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), with d_c = 4 gamma E/sigma_mN^2
@@ -357,7 +329,7 @@ sigma_mN = 0.2, sigma_mT = 0.1, gamma = 1.5) or a built-in record (SI units), wi
           d["strength_steps"] = r.strength_steps;
           return d;
         },
-        py::arg("material") = case_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
+        py::arg("material") = study_default("dem/patch_test", "dem.material"), py::arg("poisson") = py::none(),
         py::arg("d0") = py::none(),
         py::arg("lattice") = patch_defaults.amorphous ? "amorphous" : "hcp",
         py::arg("load_along_c_axis") = patch_defaults.load_along_c_axis, py::arg("length") = patch_defaults.length,

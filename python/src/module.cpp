@@ -39,6 +39,7 @@ PYBIND11_MODULE(_wearscale, m) {
   m.attr("__version__") = WEARSCALE_VERSION;
   // What the package's __init__.py sets GOMP_SPINCOUNT to (the CLI's value).
   m.attr("_waiting_spin_count") = wearscale::waiting_spin_count;
+  wearscale::python::bind_study_keys(m);
 
   auto surface = m.def_submodule("surface", "Rough surfaces: generation, roughness measures, PSD, topography files.");
   wearscale::python::bind_surface(surface);

@@ -30,7 +30,7 @@ DIFFERS = {
 
 def schema(study):
     """{key: (type, default text)} of a study's case, from its key tables."""
-    return {row["key"]: (row["type"], row["default"]) for row in _wearscale.dem._case_keys(study)}
+    return {row["key"]: (row["type"], row["default"]) for row in _wearscale._study_keys(study)}
 
 
 def derived(text, defaults):

@@ -1,8 +1,9 @@
 """The keyword defaults of the bindings that compute what a study computes (wearscale.wear's maps,
-wearscale.surface's generator and reader) are the study's: each argument that stands for a key of
-the study defaults to that key's default in the study's schema, or is listed in DIFFERS with why.
-The schemas are read from docs/keys.md, which the KeysDoc test keeps equal to what the studies'
-key tables declare; the arguments' keys are listed in KEY_OF, one row per argument."""
+wearscale.surface's generator and reader, wearscale.contact's normal contact) are the study's: each
+argument that stands for a key of the study defaults to that key's default in the study's schema,
+or is listed in DIFFERS with why. The schemas are read from the compiled module
+(wearscale._study_keys, the studies' key tables); the arguments' keys are listed in KEY_OF, one row
+per argument."""
 import inspect
 import math
 import re
@@ -10,6 +11,7 @@ import re
 import pytest
 
 import wearscale as ws
+from wearscale import _wearscale
 
 # (module, function) -> {argument: (key, what of the key's default)}: "value" the default itself,
 # "max" the upper end of a [MIN, MAX] range.
@@ -46,6 +48,9 @@ KEY_OF = {
         "dataset": ("surface.analyze.dataset", "value"),
         "missing": ("surface.analyze.missing", "value"),
     },
+    ("contact", "NormalContact"): {
+        "boundary": ("contact.boundary", "value"),
+    },
 }
 # Where a call's default differs from the case's on purpose, and why.
 DIFFERS = {
@@ -54,13 +59,18 @@ DIFFERS = {
 }
 
 
-def schemas(source_dir):
-    """{key: (type, default text)} of every study in docs/keys.md (`|` escaped as `\\|` is inside a cell)."""
+def study_of(key):
+    """The registered study whose case holds `key`: "wearmap.rough.n" -> "wearmap/rough", "contact.grid" -> "contact"."""
+    parts = key.split(".")
+    return "/".join(parts[:2]) if parts[0] in ("wearmap", "surface", "dem") else parts[0]
+
+
+def schemas():
+    """{key: (type, default text)} of every study a KEY_OF row names, from its key tables."""
     found = {}
-    for line in (source_dir / "docs" / "keys.md").read_text().splitlines():
-        cells = [c.strip() for c in re.split(r"(?<!\\)\|", line)]
-        if len(cells) > 7 and cells[1].startswith("`"):
-            found.setdefault(cells[1].strip("`"), (cells[2], cells[5].strip("`")))
+    for study in sorted({study_of(key) for arguments in KEY_OF.values() for key, _ in arguments.values()}):
+        for row in _wearscale._study_keys(study):
+            found.setdefault(row["key"], (row["type"], row["default"]))
     return found
 
 
@@ -79,10 +89,10 @@ def test_every_argument_named_is_a_keyword_with_a_default():
 
 
 @pytest.mark.parametrize("module,function,argument", list(cases()), ids=[f"{m}.{f}.{a}" for m, f, a in cases()])
-def test_a_keyword_defaults_to_its_case_key(source_dir, module, function, argument):
-    keys = schemas(source_dir)
+def test_a_keyword_defaults_to_its_case_key(module, function, argument):
+    keys = schemas()
     key, part = KEY_OF[(module, function)][argument]
-    assert key in keys, f"{key} is not in docs/keys.md"
+    assert key in keys, f"{key} is not declared by {study_of(key)}"
     kind, text = keys[key]
     call = getattr(getattr(ws, module), function)
     parameters = inspect.signature(call).parameters
@@ -121,9 +131,9 @@ def derived(text, parameters):
     return parameters[m.group(1)].default / float(m.group(2))
 
 
-def test_the_analytic_3d_map_defaults_to_the_case_interaction_constant(source_dir):
+def test_the_analytic_3d_map_defaults_to_the_case_interaction_constant():
     # C_inter (4.49) of the case's default nu and theta.
-    keys = schemas(source_dir)
+    keys = schemas()
     nu, theta = float(keys["wearmap.analytic3d.nu"][1]), float(keys["wearmap.analytic3d.theta"][1])
     default = inspect.signature(ws.wear.analytic_map_3d).parameters["c_inter"].default
     assert math.isclose(default, (1 - nu * math.sin(theta) ** 2) / (2 - nu), rel_tol=1e-15)

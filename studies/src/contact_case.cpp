@@ -62,29 +62,9 @@ double contact_memory(const ContactCase& c, int ranks, bool root) {
 
 ContactCase read_contact_case(const Config& config, int ranks) {
   const Config c = config.section("contact");
-  const std::string friction = c.choice_or("friction", "none", {"none", "coulomb", "tresca"});
   ContactCase s;
-  if (c.has("surface")) {  // under mpirun every rank reads the file alike (a refusal is every rank's)
-    s.measured = read_surface_file(c);
-    s.grid = s.measured.grid();
-    if (s.grid.nx < static_cast<std::size_t>(ranks))
-      throw c.error("surface",
-                    fmt::format("'{}' has {} rows, fewer than the {} ranks that would each hold a slab of them",
-                                c.path("surface").string(), s.grid.nx, ranks),
-                    fmt::format("a surface of at least {} rows, or fewer ranks", ranks));
-  } else {
-    const long n = c.integer("grid", Range::closed(8, 16384));
-    s.grid = Grid2D::square(static_cast<std::size_t>(n), c.number("size", Range::positive(), units::length));
-  }
-  if (c.has("rough")) s.rough = read_rough_case(c.section("rough"), s.grid);
-  if (c.has("sphere")) s.sphere_radius = c.number("sphere.radius", Range::positive(), units::length);
-  if (!c.has("surface") && !c.has("rough") && !c.has("sphere"))
-    throw c.error("surface", "no surface: give surface = FILE, a [contact.rough] or a [contact.sphere] table",
-                  "a file, rough and/or sphere");
-  if (friction == "none")
-    s.normal = read_normal_case(c, s.grid);
-  else
-    s.friction = read_frictional_case(c, s.grid, friction);  // refuses a free boundary
+  s.ranks = ranks;
+  contact_keys().read(c, s);
   RunKeys how;  // [run], as the runner reads it
   run_keys().read(config.section("run"), how);
   s.measured_plans = how.fft_planning == PlanRigor::Measure &&
@@ -92,7 +72,7 @@ ContactCase read_contact_case(const Config& config, int ranks) {
   s.gather_limit = how.gather_limit;
   const bool file = s.measured.size() > 0;
   const char* size_key = file ? "surface" : "grid";  // what sets the grid
-  const std::string size_value = file ? c.path("surface").string() : std::to_string(s.grid.nx);
+  const std::string size_value = file ? s.given.surface.string() : std::to_string(s.grid.nx);
   // Under mpirun each rank checks its own share (rank 0 adds the gathered
   // fields) against the memory of its machine: the point of the slabs is a
   // grid larger than one machine. Ranks sharing a machine each see all of its
@@ -107,79 +87,6 @@ ContactCase read_contact_case(const Config& config, int ranks) {
                  ranks == 1 ? "give a smaller grid" : "give a smaller grid or more ranks");
   config.reject_unknown_keys();  // every check before any work
   return s;
-}
-
-RealField read_surface_file(const Config& c) {
-  TopographyOptions read;
-  read.dataset = c.string_or("dataset", default_surface_dataset);
-  if (c.has("size")) read.size.lx = read.size.ly = c.number("size", Range::positive(), units::length);
-  read.missing = missing_points_from(
-      c.choice_or(MissingPointsChoice::key, MissingPointsChoice::fallback, {"refuse", "fill"}),
-      c.full_key(MissingPointsChoice::key));
-  return read_measured_topography(c.path("surface"), read).heights;
-}
-
-RoughCase read_rough_case(const Config& r, const Grid2D& g) {
-  RoughCase rough;
-  RoughSurfaceSpec& spec = rough.spec;
-  spec.grid = g;
-  // Ranges checked here so messages name the case key; the generator checks them again.
-  const double nyquist = static_cast<double>(std::min(g.nx, g.ny) / 2);
-  spec.hurst = r.number("hurst", Range::open_closed(0.0, 1.0));
-  spec.k_l = r.number("k_l", Range::open_closed(0.0, nyquist));
-  spec.k_r = r.number_or("k_r", spec.k_l, Range::closed(spec.k_l, nyquist));
-  spec.k_s = r.number("k_s", Range::closed(spec.k_r, nyquist));
-  spec.seed = static_cast<std::uint64_t>(r.integer_or("seed", 0, Range::non_negative()));
-  const int targets = int(r.has("hprime_rms")) + int(r.has("h_rms")) + int(r.has("sa"));
-  if (targets != 1) throw r.error("hprime_rms", "give exactly one of hprime_rms, h_rms, sa", "one roughness target");
-  const char* key = r.has("hprime_rms") ? "hprime_rms" : r.has("h_rms") ? "h_rms" : "sa";
-  if (r.has("hprime_rms")) {
-    rough.measure = RoughnessMeasure::HPrimeRms;
-    rough.target = r.number("hprime_rms", Range::positive());
-  } else if (r.has("h_rms")) {
-    rough.measure = RoughnessMeasure::HRms;
-    rough.target = r.number("h_rms", Range::positive(), units::length);
-  } else {
-    rough.measure = RoughnessMeasure::Sa;
-    rough.target = r.number("sa", Range::positive(), units::length);
-  }
-  // The bounds every generated surface is held to (as `surface generate`'s and files'), named by the key.
-  if (const auto p = roughness_target_problem(spec, rough.measure, rough.target); !p.problem.empty())
-    throw r.error(key, p.problem, p.allowed);
-  return rough;
-}
-
-Boundary contact_boundary(const Config& c) {
-  return c.choice_or("boundary", "periodic", {"periodic", "free"}) == "free" ? Boundary::Free : Boundary::Periodic;
-}
-
-double contact_modulus(const Config& c) {
-  if (c.has("e_star")) return c.number("e_star", Range::positive(), units::pressure);
-  const double e = c.number("young", Range::positive(), units::pressure);
-  const double nu = c.number("poisson", Range::open_closed(-1.0, 0.5));
-  return e / (1.0 - nu * nu);  // rigid surface on an elastic flat (1.12)
-}
-
-NormalCase read_normal_case(const Config& c, const Grid2D& g) {
-  NormalCase n;
-  n.e_star = contact_modulus(c);
-  const int loads = int(c.has("mean_pressure")) + int(c.has("normal_load")) + int(c.has("interference"));
-  if (loads != 1)
-    throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load, interference", "one load");
-  n.options.tolerance = c.number_or("tolerance", 1e-12, Range::open_closed(0.0, ContactOptions::max_tolerance));
-  n.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 10000, Range::at_least(1)));
-  n.options.stop = [] { return interrupt_requested(); };  // SIGINT/SIGTERM end a long solve within an iteration
-  n.options.method = c.choice_or("preconditioner", "two-level", {"two-level", "full"}) == "full"
-                         ? ContactMethod::PreconditionedCG
-                         : ContactMethod::TwoLevelCG;
-  n.connectivity =
-      c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
-  n.boundary = contact_boundary(c);
-  if (c.has("mean_pressure")) n.p0 = c.number("mean_pressure", Range::non_negative(), units::pressure);
-  if (c.has("normal_load")) n.p0 = c.number("normal_load", Range::non_negative(), units::force) / g.area();
-  n.imposes_interference = c.has("interference");
-  if (n.imposes_interference) n.delta = c.number("interference", Range::any(), units::length);
-  return n;
 }
 
 ContactResult NormalCase::solve(NormalContact& contact) const {
@@ -297,47 +204,6 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
   sidecar.write(out / "contact.xdmf", h5_path);
   const auto csv = table.write_csv(out);
   for (const auto& f : {h5_path, out / "contact.xdmf", csv}) context.add_file(f);
-}
-
-FrictionalCase read_frictional_case(const Config& c, const Grid2D& g, const std::string& law_name) {
-  FrictionalCase f;
-  if (!c.has("poisson"))
-    throw c.error("poisson", "frictional contact needs Poisson's ratio: normal and tangential couple through it (4.22)",
-                  "−1 < ν ≤ 0.5 (0.5: decoupled)");
-  const double nu = c.number("poisson", Range::open_closed(-1.0, 0.5));
-  if (contact_boundary(c) == Boundary::Free)
-    throw c.error("boundary", "a free boundary is implemented for frictionless contact only (friction = \"none\")",
-                  "\"periodic\" with friction");
-  if (int(c.has("young")) + int(c.has("e_star")) != 1)
-    throw c.error("young", "give exactly one of young, e_star", "one elastic modulus");
-  f.poisson = nu;
-  f.young = c.has("young") ? c.number("young", Range::positive(), units::pressure)
-                           : c.number("e_star", Range::positive(), units::pressure) * (1.0 - nu * nu);
-  f.law = law_name == "coulomb"
-              ? FrictionLaw::coulomb(c.number("friction_coefficient", Range::non_negative()))
-              : FrictionLaw::tresca(c.number("shear_strength", Range::non_negative(), units::pressure));
-  if (c.has("interference"))
-    throw c.error("interference", "frictional contact imposes the mean tractions", "mean_pressure or normal_load");
-  if (int(c.has("mean_pressure")) + int(c.has("normal_load")) != 1)
-    throw c.error("mean_pressure", "give exactly one of mean_pressure, normal_load", "one normal load");
-  if (c.has("tangential_pressure") && c.has("tangential_load"))
-    throw c.error("tangential_pressure", "give at most one of tangential_pressure, tangential_load",
-                  "one tangential load");
-  f.load.normal = c.has("mean_pressure") ? c.number("mean_pressure", Range::non_negative(), units::pressure)
-                                         : c.number("normal_load", Range::non_negative(), units::force) / g.area();
-  f.tangential_key = c.has("tangential_load") ? "tangential_load" : "tangential_pressure";
-  f.load.x = c.has("tangential_load") ? c.number("tangential_load", Range::any(), units::force) / g.area()
-                                      : c.number_or("tangential_pressure", 0.0, Range::any(), units::pressure);
-  f.options.tolerance = c.number_or("tolerance", 1e-10, Range::open_closed(0.0, FrictionalOptions::max_tolerance));
-  f.options.max_iterations = static_cast<int>(c.integer_or("max_iterations", 20000, Range::at_least(1)));
-  f.options.stop = [] { return interrupt_requested(); };
-  f.connectivity =
-      c.choice_or("connectivity", "four", {"four", "eight"}) == "eight" ? Connectivity::Eight : Connectivity::Four;
-  f.crack = c.has("tensile_strength");
-  f.sigma_m = f.crack ? c.number("tensile_strength", Range::positive(), units::pressure) : 0.0;
-  f.depths =
-      c.has("stress_depths") ? c.numbers("stress_depths", Range::non_negative(), units::length) : std::vector<double>{};
-  return f;
 }
 
 FrictionalResult FrictionalCase::solve(FrictionalContact& contact, const Config& c) const {

@@ -4,6 +4,7 @@
 // slabs over MPI ranks (contact_slab.cpp); the one memory model of both; and
 // the files written from the solved whole fields. Private to the studies.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -17,28 +18,20 @@
 #include "wearscale/coupling/run_context.hpp"
 #include "wearscale/io/config.hpp"
 #include "wearscale/io/hdf5_file.hpp"
+#include "wearscale/io/key_table.hpp"
+#include "wearscale/io/topography_io.hpp"
 #include "wearscale/studies/runner_keys.hpp"
 
 namespace wearscale::studies {
 
-/// [contact.rough] on grid `g`: the spectrum and the roughness it is scaled to.
+/// [contact.rough] on the contact's grid: the spectrum and the roughness it is scaled to.
 struct RoughCase {
   bem::RoughSurfaceSpec spec;
   bem::RoughnessMeasure measure = bem::RoughnessMeasure::HPrimeRms;
   double target = 1.0;
 };
-RoughCase read_rough_case(const Config& rough, const Grid2D& g);
 
-/// The heights of contact.surface (a measured file: any format the io layer
-/// reads; contact.dataset, contact.size and the missing-points choice apply).
-RealField read_surface_file(const Config& contact);
-
-/// [contact] boundary: "periodic" (a cell of a periodic surface) or "free" (a window on an isolated body).
-bem::Boundary contact_boundary(const Config& contact);
-/// E* from e_star, or from young and poisson (rigid surface on an elastic flat, 1.12).
-double contact_modulus(const Config& contact);
-
-/// The frictionless keys of [contact] on grid `g`: modulus, boundary, load, tolerance, micro-contacts.
+/// A frictionless contact: modulus, boundary, load, tolerance, micro-contacts.
 struct NormalCase {
   double e_star = 1.0;
   bem::Boundary boundary = bem::Boundary::Periodic;
@@ -49,7 +42,6 @@ struct NormalCase {
   /// The solve the case asks for (imposed mean pressure or interference).
   bem::ContactResult solve(bem::NormalContact& contact) const;
 };
-NormalCase read_normal_case(const Config& contact, const Grid2D& g);
 
 /// One headline figure: name, value, unit, what it is.
 using FigureReport = std::function<void(const std::string& name, double value, const std::string& unit,
@@ -96,8 +88,8 @@ void write_normal_study(const Config& config, const NormalCase& n, const RealFie
                         const RealField& gap, const RealField& u, const bem::ContactResult& r,
                         coupling::RunContext& context);
 
-/// The frictional keys of [contact] on grid `g` (friction = `law_name`, "coulomb" or "tresca"):
-/// E, ν, the law, the mean tractions, tolerance, micro-contacts, σ_m, stress depths.
+/// A frictional contact (friction = "coulomb" or "tresca"): E, ν, the law,
+/// the mean tractions, tolerance, micro-contacts, σ_m, stress depths.
 struct FrictionalCase {
   double young = 1.0, poisson = 0.0;
   bem::FrictionLaw law = bem::FrictionLaw::coulomb(0.0);
@@ -113,7 +105,6 @@ struct FrictionalCase {
   /// The solve the case asks for; gross sliding refused naming the tangential key.
   bem::FrictionalResult solve(bem::FrictionalContact& contact, const Config& contact_section) const;
 };
-FrictionalCase read_frictional_case(const Config& contact, const Grid2D& g, const std::string& law_name);
 
 /// The figures of a frictional contact besides the solver's: the micro-contacts and the stresses' maxima.
 struct FrictionalFigures {
@@ -142,10 +133,31 @@ struct FrictionalFields {
 void write_frictional_study(const Config& config, const FrictionalCase& f, const FrictionalFields& fields,
                             const bem::FrictionalResult& r, coupling::RunContext& context);
 
+/// The keys of [contact] as given, where a value is not yet what the case
+/// holds: which surface, a modulus before ν converts it, a load before the
+/// grid's area divides it, the one roughness target given.
+struct ContactInputs {
+  std::string friction = "none";  ///< "none" | "coulomb" | "tresca"
+  std::filesystem::path surface;  ///< a height file (empty: none)
+  bem::TopographyOptions read;    ///< how it is read (dataset, missing; size when given)
+  long grid = 0;                  ///< points per side of a generated surface
+  std::optional<double> size;     ///< side of the cell (a file's: overrides its own)
+  std::optional<double> hprime_rms, h_rms, sa;  ///< [contact.rough]: exactly one
+  std::optional<double> e_star;  ///< E* (1.12); with friction exactly one of e_star, young
+  double young = 0.0;            ///< read when e_star is not given
+  double poisson = 0.0;
+  double friction_coefficient = 0.0, shear_strength = 0.0;
+  std::optional<double> mean_pressure, normal_load, interference, tangential_load;
+  double tangential_pressure = 0.0;
+  std::optional<double> tensile_strength;
+};
+
 /// A [contact] case, every key read and checked, before any work.
 struct ContactCase {
+  int ranks = 1;  ///< the ranks it is read for (the slabs refuse a file of fewer rows)
+  ContactInputs given;
   Grid2D grid;
-  NormalCase normal;                       ///< frictionless (friction = "none")
+  NormalCase normal;                       ///< frictionless (friction = "none"); its boundary either way
   std::optional<FrictionalCase> friction;  ///< friction = "coulomb" | "tresca"
   RealField measured;  ///< contact.surface's heights, whole (empty: none)
   std::optional<RoughCase> rough;
@@ -153,6 +165,12 @@ struct ContactCase {
   bool measured_plans = true;  ///< slabs: FFTW MEASURE plans ([run] fft_planning, and from 512²)
   std::size_t gather_limit = RunKeys{}.gather_limit;  ///< slabs: [run] gather_limit, larger grids written in place
 };
+
+/// Every key of [contact], declared once (io/key_table.hpp): read() fills a
+/// ContactCase whose `ranks` is set, in the order the refusals come; its
+/// schema() is the study's. The frictionless and frictional keys are read
+/// by the friction key's value, the others' defaults by it too.
+const KeyTable<ContactCase>& contact_keys();
 
 /// Reads and checks [contact] for a run on `ranks` ranks (the slabs refuse a
 /// file of fewer rows than ranks), and the memory the run needs on this rank

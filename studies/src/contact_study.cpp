@@ -114,51 +114,7 @@ class ContactStudy final : public Study {
   std::optional<ContactCase> case_;  // read by prepare() under mpirun
 };
 
-Schema ContactStudy::schema() const {
-  return {
-      {"contact.surface", "path", "", "", "", "height file of the rigid surface: " + bem::supported_topography_formats(),
-       "--surface"},
-      {"contact.dataset", "string", "", "", std::string(default_surface_dataset), "dataset of an HDF5 height file", ""},
-      {"contact.missing", "choice", "refuse | fill", "", MissingPointsChoice::fallback, MissingPointsChoice::doc,
-       "--missing"},
-      {"contact.grid", "integer", "8 … 16384", "1", "", "points per side of a generated surface", ""},
-      {"contact.size", "number", "> 0", "m", "", "side of the periodic cell", ""},
-      {"contact.rough.hurst", "number", "(0, 1]", "1", "", "Hurst exponent H of a generated rough surface", ""},
-      {"contact.rough.k_l", "number", "(0, n/2]", "1", "", "roll-off wavenumber (in 1/L)", ""},
-      {"contact.rough.k_r", "number", "[k_l, n/2]", "1", "k_l", "start of the self-affine range", ""},
-      {"contact.rough.k_s", "number", "[k_r, n/2]", "1", "", "cut-off wavenumber", ""},
-      {"contact.rough.seed", "integer", "≥ 0", "1", "0", "random seed", ""},
-      {"contact.rough.hprime_rms", "number", "> 0", "1", "", "RMS slope h' (one of hprime_rms, h_rms, sa)", ""},
-      {"contact.rough.h_rms", "number", "> 0", "m", "", "RMS height", ""},
-      {"contact.rough.sa", "number", "> 0", "m", "", "arithmetic mean height Sa", ""},
-      {"contact.sphere.radius", "number", "> 0", "m", "", "radius of a sphere added at the cell's centre", ""},
-      {"contact.boundary", "choice", "periodic | free", "", "periodic",
-       "periodic cell, or a window on an isolated body (frictionless only)", ""},
-      {"contact.e_star", "number", "> 0", "Pa", "", "contact modulus E* (1.12)", "--e-star"},
-      {"contact.young", "number", "> 0", "Pa", "", "Young's modulus of the elastic flat", ""},
-      {"contact.poisson", "number", "(-1, 0.5]", "1", "", "Poisson's ratio ν of the elastic flat", "--poisson"},
-      {"contact.mean_pressure", "number", "≥ 0", "Pa", "", "imposed mean pressure", "--pressure"},
-      {"contact.normal_load", "number", "≥ 0", "N", "", "imposed normal force on the cell", "--load"},
-      {"contact.interference", "number", "any", "m", "", "imposed interference (frictionless)", "--interference"},
-      {"contact.friction", "choice", "none | coulomb | tresca", "", "none", "friction law (Appendix A)",
-       "--friction"},
-      {"contact.friction_coefficient", "number", "≥ 0", "1", "", "Coulomb friction coefficient μ (A.2)", "--mu"},
-      {"contact.shear_strength", "number", "≥ 0", "Pa", "", "Tresca shear strength σ_m,T (A.3)", "--shear-strength"},
-      {"contact.tangential_pressure", "number", "any", "Pa", "0", "imposed mean tangential traction along x",
-       "--tangential-pressure"},
-      {"contact.tangential_load", "number", "any", "N", "", "imposed tangential force on the cell along x", ""},
-      {"contact.tensile_strength", "number", "> 0", "Pa", "",
-       "tensile strength σ_m: crack initiation (4.25) per micro-contact", "--tensile-strength"},
-      {"contact.stress_depths", "list", "≥ 0", "m", "", "depths of the subsurface stress fields", ""},
-      {"contact.tolerance", "number", "(0, 1e-3]", "1", "1e-12 (frictional 1e-10)", "relative convergence tolerance", ""},
-      {"contact.max_iterations", "integer", "≥ 1", "1", "10000 (frictional 20000)", "iteration limit", ""},
-      {"contact.connectivity", "choice", "four | eight", "", "four", "neighbours joining a micro-contact", ""},
-      {"contact.preconditioner", "choice", "two-level | full", "", "two-level",
-       "normal solve's preconditioner: two-level (S on a 2× coarser grid: the same iterations at a quarter of "
-       "the transforms; a free window or an odd grid uses full), or full (the stiffness S by an FFT pair)",
-       ""},
-  };
-}
+Schema ContactStudy::schema() const { return contact_keys().schema("contact"); }
 
 }  // namespace
 }  // namespace wearscale::studies

@@ -75,6 +75,21 @@ std::vector<std::string> write_sliding_history(const std::vector<dem::SlidingSam
                                                const std::filesystem::path& csv, H5Writer& h5,
                                                const std::string& title);
 
+/// The start of every DEM study's run: its own table [dem.<study>]
+/// (`section`) read with `table` into `keys`, which hold what [dem] gives
+/// them (with_dem for a sliding cell: the pressure's range is the material's),
+/// then every key of the case checked unless the study reads more first
+/// (`check_every_key` false). Returns the view of [dem.<study>], whose keys
+/// the driver's later refusals name.
+template <class K>
+Config read_study_keys(const Config& root, const std::string& section, const KeyTable<K>& table, K& keys,
+                       bool check_every_key = true) {
+  const Config c = root.section(section);
+  table.read(c, keys);
+  if (check_every_key) root.reject_unknown_keys();
+  return c;
+}
+
 /// What the DEM studies share: case name "dem", folder out/dem-<study>, the
 /// schema of their key tables, [dem] read with theirs, the engine's ranks
 /// under mpirun, and the outputs their driver lists. A study gives its [dem]

@@ -63,8 +63,7 @@ nlohmann::json run_junction_study(const Config& root, const DemInputs& dem, RunC
   JunctionKeys k;
   k.spec.material = dem.material;
   k.spec.engine = dem.keys.engine;
-  junction_keys().read(root.section("dem.junction"), k);
-  root.reject_unknown_keys();
+  read_study_keys(root, "dem.junction", junction_keys(), k);
   const ShearedJunctionSpec& spec = k.spec;
   const long dump_every = k.dump_every;
 

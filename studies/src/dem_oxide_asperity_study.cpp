@@ -141,8 +141,8 @@ nlohmann::json run_oxide_asperity_study(const Config& root, const DemInputs& dem
   OxideAsperityKeys keys;
   keys.spec.oxide = dem.material;
   keys.spec.engine = dem.keys.engine;
-  const Config c = root.section("dem.oxide_asperity");
-  oxide_asperity_keys().read(c, keys);
+  // The substrate's material is read from [materials] too before every key is checked.
+  const Config c = read_study_keys(root, "dem.oxide_asperity", oxide_asperity_keys(), keys, false);
   OxideAsperitySpec& spec = keys.spec;
   spec.substrate = substrate_material(root, c, keys, spec.oxide.scaling_exponent);
   spec.interface = interface_material(keys, spec.oxide, spec.substrate);

@@ -66,8 +66,7 @@ nlohmann::json run_patch_test_study(const Config& root, const DemInputs& dem, Ru
   PatchTestSpec spec;
   spec.material = dem.material;
   spec.engine = dem.keys.engine;
-  patch_test_keys().read(root.section("dem.patch_test"), spec);
-  root.reject_unknown_keys();
+  read_study_keys(root, "dem.patch_test", patch_test_keys(), spec);
   const bool unitless = is_unitless(spec.material);
   const double d_c = critical_diameter(spec.material);  // d_c = 4γE/σ_m,N² (6.35)
 

@@ -63,9 +63,7 @@ nlohmann::json run_rough_shear_study(const Config& root, const DemInputs& dem, R
   Checkpointer* checkpoints = &context.checkpoints();
   RoughShearKeys k;
   with_dem(dem, k.spec.cell);  // the pressure's range is the material's
-  const Config c = root.section("dem.rough_shear");
-  rough_shear_keys().read(c, k);
-  root.reject_unknown_keys();
+  const Config c = read_study_keys(root, "dem.rough_shear", rough_shear_keys(), k);
   RoughShearSpec& spec = k.spec;
   const double d0 = spec.cell.d0;
   const long dump_every = k.dump_every;

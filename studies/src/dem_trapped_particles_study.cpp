@@ -73,9 +73,7 @@ nlohmann::json run_trapped_particles_study(const Config& root, const DemInputs& 
   Checkpointer* checkpoints = &context.checkpoints();
   TrappedParticlesKeys k;
   with_dem(dem, k.spec.cell);  // the pressure's range is the material's
-  const Config c = root.section("dem.trapped_particles");
-  trapped_particles_keys().read(c, k);
-  root.reject_unknown_keys();
+  const Config c = read_study_keys(root, "dem.trapped_particles", trapped_particles_keys(), k);
   TrappedParticlesSpec& spec = k.spec;
   const double d0 = spec.cell.d0;
   const long dump_every = k.dump_every;
