@@ -1,7 +1,6 @@
 // wearscale._study_keys: the keys of any registered study's case as its key
 // tables declare them (the rows of its schema), and the defaults the
 // bindings take from there, so that no binding writes a case default twice.
-#include <deque>
 #include <stdexcept>
 
 #include "bindings.hpp"
@@ -16,11 +15,6 @@ std::string study_default(const std::string& study, const std::string& key) {
   const auto* spec = studies::find_key(schema, key);
   if (spec == nullptr || spec->fallback.empty()) throw std::logic_error(study + " declares no default for " + key);
   return spec->fallback;
-}
-
-const char* study_default_text(const std::string& study, const std::string& key) {
-  static std::deque<std::string> kept;  // for the module's lifetime (a keyword's default, a docstring)
-  return kept.emplace_back(study_default(study, key)).c_str();
 }
 
 void bind_study_keys(py::module_& m) {

@@ -17,10 +17,8 @@ void bind_run(pybind11::module_& m);
 /// `_study_keys(study)`: a registered study's keys as its key tables declare them (bind_study_keys.cpp).
 void bind_study_keys(pybind11::module_& m);
 /// The default of `key` ("contact.boundary") as `study`'s key tables word it;
-/// std::logic_error if it declares none. As text kept for the module's
-/// lifetime: a keyword's default or a docstring's.
+/// std::logic_error if it declares none.
 std::string study_default(const std::string& study, const std::string& key);
-const char* study_default_text(const std::string& study, const std::string& key);
 /// MPI when the interpreter runs under mpirun/srun (mpi_session.cpp); `m` gets rank() and size().
 void start_mpi(pybind11::module_& m);
 

@@ -4,6 +4,7 @@ argument that stands for a key of the study defaults to that key's default in th
 or is listed in DIFFERS with why. The schemas are read from the compiled module
 (wearscale._study_keys, the studies' key tables); the arguments' keys are listed in KEY_OF, one row
 per argument."""
+import functools
 import inspect
 import math
 import re
@@ -65,6 +66,7 @@ def study_of(key):
     return "/".join(parts[:2]) if parts[0] in ("wearmap", "surface", "dem") else parts[0]
 
 
+@functools.cache
 def schemas():
     """{key: (type, default text)} of every study a KEY_OF row names, from its key tables."""
     found = {}
